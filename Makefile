@@ -1,0 +1,31 @@
+# choc top-level entry points. Each target does the whole set-up on a fresh Debian 12
+# machine: install the missing packages, configure, build, then act.
+BUILD ?= build
+JOBS  ?= $(shell nproc)
+CTEST_ARGS ?=
+
+.PHONY: all deps configure build run test clean
+
+all: build
+
+deps:
+	@tools/install-deps.sh --with-viz
+
+$(BUILD)/Makefile: CMakeLists.txt | deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=mpicxx -DCMAKE_C_COMPILER=mpicc
+
+configure: deps $(BUILD)/Makefile
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+# The SDNL111 suite: every benchmark input, then the report.
+run: build
+	tools/run-suite.sh $(BUILD)
+
+# The whole test suite (unit tests, regression cases, error messages).
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
+clean:
+	rm -rf $(BUILD) results

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Regenerates the committed benchmark meshes with choc's own generator.
+# Usage: meshes/make-meshes.sh [path/to/choc]   (default build/choc)
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+choc="${1:-$here/../build/choc}"
+# SDNL111 A: 2 x 50 two-node beams along x, gap J0 = 1e-5 between A and C.
+"$choc" mesh --dim 1 --axis x --along1 50 --along2 50 --gap 1e-5 -o "$here/sdnl111_1d.exo"
+# SDNL111 B: the same, with node A moved 1.1e-5 towards C (A lies 1e-6 beyond C).
+"$choc" mesh --dim 1 --axis x --along1 50 --along2 50 --gap 1e-5 --shift-a -1.1e-5 \
+  -o "$here/sdnl111b_1d.exo"
+# SDNL111 C, D, E: 2 x 50 HEX8 along z, 1 x 1 across, section 0.02 x 0.02.
+"$choc" mesh --dim 3 --axis z --along1 50 --along2 50 --across1 1 --across2 1 \
+  --width 0.02 --height 0.02 --gap 1e-5 -o "$here/sdnl111_3d.exo"

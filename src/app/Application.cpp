@@ -1,0 +1,70 @@
+#include "app/Application.hpp"
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <Tpetra_Core.hpp>
+
+#include "app/Commands.hpp"
+#include "app/MeshCommand.hpp"
+#include "input/Errors.hpp"
+#include "output/Log.hpp"
+
+namespace choc {
+
+namespace {
+
+const char* kUsage =
+    "usage: choc <command> [arguments]\n"
+    "  run INPUT.xml [-o DIR]   run every analysis of the input (results in DIR, default\n"
+    "                           results/<input name>/)\n"
+    "  check INPUT.xml          validate the input and print the resolved parameter list\n"
+    "  parameters               print every valid parameter with its documentation\n"
+    "  mesh [options] -o F.exo  generate a bar-impact mesh (choc mesh --help)\n"
+    "  --help                   this text\n"
+    "exit codes: 0 success, 1 input error, 2 numerical failure, 3 a declared check failed,\n"
+    "            4 internal error\n";
+
+void reportError(const std::string& kind, const std::string& message) {
+  if (isRootRank()) std::cerr << "choc: " << kind << ": " << message << std::endl;
+}
+
+}  // namespace
+
+int runApplication(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  // Kokkos would answer --help itself: it sees the program name only.
+  int scopeArgc = 1;
+  Tpetra::ScopeGuard scope(&scopeArgc, &argv);
+  if (args.empty()) {
+    if (isRootRank()) std::cerr << kUsage;
+    return kExitInputError;
+  }
+  const std::string cmd = args[0];
+  std::vector<std::string> rest(args.begin() + 1, args.end());
+  try {
+    if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+      log() << kUsage;
+      return kExitOk;
+    }
+    if (cmd == "run") return runRunCommand(rest);
+    if (cmd == "check") return runCheckCommand(rest);
+    if (cmd == "parameters") return runParametersCommand(rest);
+    if (cmd == "mesh") return runMeshCommand(rest);
+    throw InputError("choc: unknown command '" + cmd + "'; valid: run, check, parameters, mesh, --help");
+  } catch (const InputError& e) {
+    reportError("input error", e.what());
+    return kExitInputError;
+  } catch (const NumericalError& e) {
+    reportError("numerical failure", e.what());
+    return kExitNumericalFailure;
+  } catch (const std::exception& e) {
+    std::string m = e.what();
+    m = m.substr(0, m.find('\n'));
+    reportError("internal error", m);
+    return 4;
+  }
+}
+
+}  // namespace choc

@@ -1,0 +1,17 @@
+#include "app/InputDeck.hpp"
+
+#include "analysis/AnalysisRegistry.hpp"
+#include "analysis/ModelInput.hpp"
+#include "input/Validation.hpp"
+#include "input/XmlInput.hpp"
+
+namespace choc {
+
+Teuchos::RCP<Teuchos::ParameterList> readAndValidateInput(const std::string& path) {
+  auto pl = readXmlParameters(path);
+  validate(*pl, topLevelParameters(), InputLocation{path, ""});
+  validateAnalyses(pl->sublist("Analyses"), path);
+  return pl;
+}
+
+}  // namespace choc

@@ -1,0 +1,103 @@
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include <Tpetra_Core.hpp>
+
+#include "analysis/AnalysisRegistry.hpp"
+#include "app/Commands.hpp"
+#include "app/InputDeck.hpp"
+#include "input/Errors.hpp"
+#include "output/Checks.hpp"
+#include "output/Log.hpp"
+
+namespace choc {
+
+namespace {
+
+struct RunArgs {
+  std::string input, outputDir;
+};
+
+RunArgs parseRunArgs(const std::vector<std::string>& args, const std::string& cmd) {
+  RunArgs r;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "-o" || args[i] == "--output") {
+      if (i + 1 >= args.size()) throw InputError("choc " + cmd + ": option -o needs a directory");
+      r.outputDir = args[++i];
+    } else if (!args[i].empty() && args[i][0] == '-') {
+      throw InputError("choc " + cmd + ": unknown option '" + args[i] + "'; valid: -o DIR");
+    } else if (r.input.empty()) {
+      r.input = args[i];
+    } else {
+      throw InputError("choc " + cmd + ": one input file expected, got '" + r.input + "' and '" +
+                       args[i] + "'");
+    }
+  }
+  if (r.input.empty()) throw InputError("choc " + cmd + ": missing INPUT.xml (usage: choc " + cmd + " INPUT.xml)");
+  return r;
+}
+
+}  // namespace
+
+int runRunCommand(const std::vector<std::string>& args) {
+  const auto start = std::chrono::steady_clock::now();
+  RunArgs a = parseRunArgs(args, "run");
+  auto input = readAndValidateInput(a.input);
+  if (a.outputDir.empty())
+    a.outputDir = "results/" + std::filesystem::path(a.input).stem().string();
+  auto comm = Tpetra::getDefaultComm();
+  log() << "choc run " << a.input << ": " << input->get<std::string>("Title") << "\n";
+  Model model(*input, a.input, comm);
+  log() << "model: " << model.mesh().numNodes() << " nodes, " << model.mesh().numElements()
+        << " elements, " << model.dofs().numGlobal() << " unknowns on " << comm->getSize()
+        << " rank(s)\n";
+  auto analyses = createAnalyses(input->sublist("Analyses"), a.input);
+  if (isRootRank()) {
+    std::error_code ec;
+    std::filesystem::create_directories(a.outputDir, ec);
+    if (ec) throw InputError("choc run: cannot create output directory '" + a.outputDir + "': " + ec.message());
+  }
+  comm->barrier();
+  RunContext ctx{model, a.outputDir, {}, {}};
+  const std::string checksPath = a.outputDir + "/checks.csv";
+  std::filesystem::remove(checksPath);
+  for (auto& an : analyses) {
+    const std::string type = input->sublist("Analyses").sublist(an->name()).get<std::string>("Type");
+    log() << "\nanalysis '" << an->name() << "' (" << type << ")\n";
+    const auto t0 = std::chrono::steady_clock::now();
+    an->run(ctx);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    log() << "  done in " << s << " s\n";
+  }
+  if (!ctx.checks.empty()) {
+    if (isRootRank()) {
+      ChecksCsv csv(checksPath);
+      csv.appendResults(ctx.checks);
+      csv.finish();
+    }
+    log() << "\nchecks (" << checksPath << "):\n" << formatCheckTable(ctx.checks);
+  }
+  const double total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  log() << "\nresults in " << a.outputDir << "/ (" << total << " s)\n";
+  if (ctx.failedChecks()) {
+    log() << "some checks are NOOK\n";
+    return kExitCheckFailed;
+  }
+  return kExitOk;
+}
+
+int runCheckCommand(const std::vector<std::string>& args) {
+  RunArgs a = parseRunArgs(args, "check");
+  auto input = readAndValidateInput(a.input);
+  auto comm = Tpetra::getDefaultComm();
+  Model model(*input, a.input, comm);
+  createAnalyses(input->sublist("Analyses"), a.input);  // checks the analyses' references
+  log() << "# " << a.input << " is valid: " << model.mesh().numNodes() << " nodes, "
+        << model.dofs().numGlobal() << " unknowns\n";
+  input->print(log(), Teuchos::ParameterList::PrintOptions().indent(2).showTypes(true).showDoc(false));
+  return kExitOk;
+}
+
+}  // namespace choc

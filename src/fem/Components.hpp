@@ -1,0 +1,17 @@
+// Nodal degrees of freedom by name. DX..DZ translations, DRX..DRZ rotations.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace choc {
+
+enum Component : int { DX = 0, DY = 1, DZ = 2, DRX = 3, DRY = 4, DRZ = 5 };
+constexpr int kNumComponents = 6;
+
+const char* componentName(int c);                 // "DX" ...
+int componentFromName(const std::string& name);   // -1 when unknown (case-insensitive)
+// Parses "DX DY" / "DX,DY" / "all" / "translations" into components; throws
+// std::invalid_argument naming the bad token.
+std::vector<int> parseComponents(const std::string& text);
+
+}  // namespace choc

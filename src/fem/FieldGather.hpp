@@ -1,0 +1,17 @@
+// Distributed vectors to whole-model arrays on every rank (for output, links and checks).
+#pragma once
+#include <array>
+#include <vector>
+
+#include "fem/DofMap.hpp"
+#include "fem/TpetraTypes.hpp"
+
+namespace choc {
+
+// Column `col` of a vector on the DofMap's distribution, as a global-DOF-ordered array on
+// every rank.
+std::vector<double> gatherAll(const MultiVector& v, size_t col, const DofMap& dofs);
+// One value per node for component `comp` of a global DOF array (0 where not an unknown).
+std::vector<double> nodalComponent(const std::vector<double>& global, const DofMap& dofs, int comp);
+
+}  // namespace choc

@@ -1,0 +1,36 @@
+// Error kinds and the exit codes they map to (BRIEF §3).
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace choc {
+
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitInputError = 1,       // bad input: file, parameter, value
+  kExitNumericalFailure = 2, // a solver, Newton or the active set failed
+  kExitCheckFailed = 3,      // a declared check is NOOK
+};
+
+// Bad input. The message is one line naming the file, the parameter, the value and the fix.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A solver did not converge, a matrix is singular, a result is not finite.
+class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// "<file>: parameter '<path>' = '<value>': <problem>; <fix>" (parts left out when empty).
+std::string inputMessage(const std::string& file, const std::string& parameter,
+                         const std::string& value, const std::string& problem,
+                         const std::string& fix = "");
+
+[[noreturn]] void throwInput(const std::string& file, const std::string& parameter,
+                             const std::string& value, const std::string& problem,
+                             const std::string& fix = "");
+
+}  // namespace choc

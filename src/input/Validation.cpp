@@ -1,0 +1,231 @@
+#include "input/Validation.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <ostream>
+#include <sstream>
+
+#include "input/Errors.hpp"
+#include "input/ParameterSpec.hpp"
+
+namespace choc {
+
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j)
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+std::vector<std::string> visibleNames(const ParameterList& valid) {
+  std::vector<std::string> names;
+  for (auto it = valid.begin(); it != valid.end(); ++it) {
+    const std::string& n = valid.name(it);
+    if (!n.empty() && n[0] == '*') continue;
+    names.push_back(n);
+  }
+  return names;
+}
+
+const SpecValidator* specOf(const Teuchos::ParameterEntry& e) {
+  return dynamic_cast<const SpecValidator*>(e.validator().get());
+}
+
+std::string userTypeName(const Teuchos::ParameterEntry& e) {
+  if (e.isList()) return "sublist";
+  if (e.isType<double>()) return "double";
+  if (e.isType<int>()) return "int";
+  if (e.isType<bool>()) return "bool";
+  if (e.isType<std::string>()) return "string";
+  return e.getAny(false).typeName();
+}
+
+void checkValue(ParameterList& user, const std::string& name, const SpecValidator& spec,
+                const InputLocation& where) {
+  Teuchos::ParameterEntry& e = user.getEntry(name);
+  const std::string param = where.parameter(name);
+  const std::string value = entryToString(e);
+  using Kind = SpecValidator::Kind;
+  switch (spec.kind()) {
+    case Kind::Double: {
+      double v;
+      if (e.isType<double>()) v = Teuchos::getValue<double>(e);
+      else if (e.isType<int>()) {
+        v = Teuchos::getValue<int>(e);
+        user.set(name, v);  // an integer written where a double is expected is fine
+      } else {
+        throwInput(where.file, param, value, "has type " + userTypeName(e) + ", expected double",
+                   "write type=\"double\"");
+      }
+      if (!std::isfinite(v) || !spec.range().contains(v))
+        throwInput(where.file, param, value, "out of range", "valid: " + spec.describe());
+      break;
+    }
+    case Kind::Int: {
+      if (!e.isType<int>())
+        throwInput(where.file, param, value, "has type " + userTypeName(e) + ", expected int",
+                   "write type=\"int\"");
+      if (!spec.range().contains(Teuchos::getValue<int>(e)))
+        throwInput(where.file, param, value, "out of range", "valid: " + spec.describe());
+      break;
+    }
+    case Kind::Bool:
+      if (!e.isType<bool>())
+        throwInput(where.file, param, value, "has type " + userTypeName(e) + ", expected bool",
+                   "write type=\"bool\" value=\"true\" or \"false\"");
+      break;
+    case Kind::String:
+      if (!e.isType<std::string>())
+        throwInput(where.file, param, value, "has type " + userTypeName(e) + ", expected string",
+                   "write type=\"string\"");
+      if (spec.required() && Teuchos::getValue<std::string>(e).empty())
+        throwInput(where.file, param, value, "must not be empty");
+      break;
+    case Kind::Choice: {
+      if (!e.isType<std::string>())
+        throwInput(where.file, param, value, "has type " + userTypeName(e) + ", expected string",
+                   "valid: " + spec.describe());
+      const std::string v = Teuchos::getValue<std::string>(e);
+      const auto& c = spec.choices();
+      if (std::find(c.begin(), c.end(), v) == c.end()) {
+        const std::string near = closestName(v, c);
+        throwInput(where.file, param, v, "is not a valid choice",
+                   (near.empty() ? std::string() : "did you mean '" + near + "'? ") +
+                       "valid: " + spec.describe());
+      }
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+std::string closestName(const std::string& key, const std::vector<std::string>& candidates) {
+  std::string best;
+  size_t bestDist = std::string::npos;
+  const std::string k = lower(key);
+  for (const auto& c : candidates) {
+    size_t d = editDistance(k, lower(c));
+    if (d < bestDist) {
+      bestDist = d;
+      best = c;
+    }
+  }
+  // Only suggest a name that is reasonably close.
+  if (best.empty() || bestDist > std::max<size_t>(3, best.size() / 2)) return "";
+  return best;
+}
+
+std::string entryToString(const Teuchos::ParameterEntry& e) {
+  if (e.isList()) return "<sublist>";
+  std::ostringstream s;
+  if (e.isType<double>()) s << Teuchos::getValue<double>(e);
+  else if (e.isType<int>()) s << Teuchos::getValue<int>(e);
+  else if (e.isType<bool>()) s << (Teuchos::getValue<bool>(e) ? "true" : "false");
+  else if (e.isType<std::string>()) s << Teuchos::getValue<std::string>(e);
+  else s << e.getAny(false);
+  return s.str();
+}
+
+void validate(ParameterList& user, const ParameterList& valid, const InputLocation& where) {
+  const bool named = isNamedSublists(valid);
+  const bool open = isOpenSublist(valid);
+  // 1. Every user key must be known and well formed.
+  std::vector<std::string> userNames;
+  for (auto it = user.begin(); it != user.end(); ++it) userNames.push_back(user.name(it));
+  for (const std::string& name : userNames) {
+    const Teuchos::ParameterEntry& ue = user.getEntry(name);
+    if (named || open) {
+      if (!ue.isList())
+        throwInput(where.file, where.parameter(name), entryToString(ue),
+                   "is a parameter where a sublist is expected",
+                   "each entry of '" + where.path + "' is a <ParameterList name=...>");
+      if (named) validate(user.sublist(name), namedSublistTemplate(valid), where.child(name));
+      continue;
+    }
+    const Teuchos::ParameterEntry* ve = valid.getEntryPtr(name);
+    if (!ve || (!name.empty() && name[0] == '*')) {
+      const std::string near = closestName(name, visibleNames(valid));
+      throwInput(where.file, where.parameter(name), "", "unknown parameter",
+                 near.empty() ? "valid keys here: see 'choc parameters'"
+                              : "did you mean '" + near + "'?");
+    }
+    if (ve->isList()) {
+      if (!ue.isList())
+        throwInput(where.file, where.parameter(name), entryToString(ue),
+                   "must be a sublist (<ParameterList name=\"" + name + "\">)");
+      validate(user.sublist(name), valid.sublist(name), where.child(name));
+      continue;
+    }
+    if (ue.isList())
+      throwInput(where.file, where.parameter(name), "", "is a sublist where a parameter is expected");
+    if (const SpecValidator* spec = specOf(*ve)) checkValue(user, name, *spec, where);
+  }
+  if (named || open) return;
+  // 2. Missing keys: required ones are errors, the others take their defaults.
+  for (auto it = valid.begin(); it != valid.end(); ++it) {
+    const std::string& name = valid.name(it);
+    if (name.empty() || name[0] == '*' || user.isParameter(name)) continue;
+    const Teuchos::ParameterEntry& ve = valid.entry(it);
+    if (ve.isList()) {
+      ParameterList& created = user.sublist(name);
+      validate(created, valid.sublist(name), where.child(name));
+      continue;
+    }
+    const SpecValidator* spec = specOf(ve);
+    if (spec && spec->required())
+      throwInput(where.file, where.parameter(name), "", "is required but missing",
+                 "add it (" + spec->describe() + ")");
+    user.setEntry(name, Teuchos::ParameterEntry(ve.getAny(false), false, false));
+    user.getEntry(name).setDocString(ve.docString());
+  }
+}
+
+void printValidParameters(std::ostream& out, const ParameterList& valid,
+                          const std::string& indent) {
+  for (auto it = valid.begin(); it != valid.end(); ++it) {
+    const std::string& name = valid.name(it);
+    const Teuchos::ParameterEntry& e = valid.entry(it);
+    if (name == "*open*") continue;
+    if (e.isList()) {
+      const ParameterList& sub = valid.sublist(name);
+      if (name == "*") {
+        out << indent << "<any name>/  " << e.docString() << "\n";
+        printValidParameters(out, sub, indent + "  ");
+        continue;
+      }
+      out << indent << name << "/  " << e.docString() << "\n";
+      if (isOpenSublist(sub))
+        out << indent << "  <any name>/  (keys depend on the entry; see below)\n";
+      printValidParameters(out, sub, indent + "  ");
+      continue;
+    }
+    const SpecValidator* spec = specOf(e);
+    out << indent << name;
+    if (spec) {
+      out << " (" << spec->typeName();
+      if (spec->required()) out << ", required";
+      else out << ", default " << (spec->kind() == SpecValidator::Kind::String ||
+                                           spec->kind() == SpecValidator::Kind::Choice
+                                       ? "'" + entryToString(e) + "'"
+                                       : entryToString(e));
+      out << "; " << spec->describe() << ")";
+    }
+    out << "\n" << indent << "    " << e.docString() << "\n";
+  }
+}
+
+}  // namespace choc

@@ -1,0 +1,38 @@
+// Checking a user's parameter list against the valid list its owner declared.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+namespace choc {
+
+// Where a sublist came from, for error messages: the input file and the path of the sublist.
+struct InputLocation {
+  std::string file;
+  std::string path;  // "" for the top level, else "Analyses/modes"
+  InputLocation child(const std::string& name) const {
+    return {file, path.empty() ? name : path + "/" + name};
+  }
+  std::string parameter(const std::string& name) const {
+    return path.empty() ? name : path + "/" + name;
+  }
+};
+
+// Validates `user` against `valid` and fills in defaults. Throws InputError (one line) on an
+// unknown key (naming the closest valid key), a wrong type, a value out of range, a choice
+// not offered, or a missing required key. Integers are accepted where a double is expected.
+void validate(Teuchos::ParameterList& user, const Teuchos::ParameterList& valid,
+              const InputLocation& where);
+
+// The candidate closest to `key` by edit distance (case-insensitive); "" when none is close.
+std::string closestName(const std::string& key, const std::vector<std::string>& candidates);
+
+// Prints every parameter of `valid` with type, default and documentation, indented.
+void printValidParameters(std::ostream& out, const Teuchos::ParameterList& valid,
+                          const std::string& indent = "");
+
+// Value of a parameter as text for messages.
+std::string entryToString(const Teuchos::ParameterEntry& entry);
+
+}  // namespace choc

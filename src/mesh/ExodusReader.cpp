@@ -1,0 +1,246 @@
+// Exodus II mesh reader. Every ex_* return code is checked: a bad file gives an InputError.
+#include "mesh/ExodusReader.hpp"
+
+#include <exodusII.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "input/Errors.hpp"
+
+namespace choc {
+
+namespace {
+
+const char* const kSupported =
+    "supported: BEAM2 (also read from BAR2, BAR, BEAM, TRUSS, TRUSS2; 2 nodes), "
+    "HEX8 (also read from HEX; 8 nodes)";
+
+[[noreturn]] void badFile(const std::string& path, const std::string& problem) {
+  throwInput(path, "", "", problem, "check that the file is a complete Exodus II mesh");
+}
+
+void check(int rc, const std::string& path, const std::string& what) {
+  if (rc < 0) badFile(path, "cannot read " + what + " (file truncated or corrupt)");
+}
+
+// Closes the file on every exit path.
+struct OpenFile {
+  int id = -1;
+  ~OpenFile() {
+    if (id >= 0) ex_close(id);
+  }
+};
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const auto notSpace = [](unsigned char c) { return !std::isspace(c); };
+  s.erase(s.begin(), std::find_if(s.begin(), s.end(), notSpace));
+  s.erase(std::find_if(s.rbegin(), s.rend(), notSpace).base(), s.end());
+  return s;
+}
+
+class Reader {
+ public:
+  explicit Reader(const std::string& path) : path_(path) {}
+
+  Mesh read() {
+    open();
+    ex_init_params p{};
+    check(ex_get_init_ext(file_.id, &p), path_, "the file header");
+    if (p.num_dim < 1 || p.num_dim > 3 || p.num_nodes < 0 || p.num_elem < 0 ||
+        p.num_elem_blk < 0 || p.num_node_sets < 0 || p.num_side_sets < 0 ||
+        p.num_nodes > fileBytes_ || p.num_elem > fileBytes_)
+      badFile(path_, "invalid sizes in the file header");
+    Mesh mesh;
+    mesh.title = p.title;
+    mesh.dimension = 3;
+    readCoordinates(mesh, static_cast<int>(p.num_dim), static_cast<int>(p.num_nodes));
+    readBlocks(mesh, static_cast<int>(p.num_elem_blk));
+    if (mesh.numElements() != p.num_elem)
+      badFile(path_, "the element blocks hold " + std::to_string(mesh.numElements()) +
+                         " elements but the header declares " + std::to_string(p.num_elem));
+    readNodeSets(mesh, static_cast<int>(p.num_node_sets));
+    readSideSets(mesh, static_cast<int>(p.num_side_sets));
+    return mesh;
+  }
+
+ private:
+  void open() {
+    std::error_code ec;
+    if (!std::filesystem::exists(path_, ec))
+      throwInput(path_, "", "", "mesh file not found", "check the file name and directory");
+    if (std::filesystem::is_directory(path_, ec))
+      throwInput(path_, "", "", "is a directory, not a mesh file", "give an Exodus II file");
+    fileBytes_ = static_cast<int64_t>(std::filesystem::file_size(path_, ec));
+    if (ec) fileBytes_ = 0;
+    ex_opts(EX_DEFAULT);  // no library messages on stderr: our error is the one line
+    int cpuWordSize = 8, ioWordSize = 0;
+    float version = 0.0f;
+    file_.id = ex_open(path_.c_str(), EX_READ, &cpuWordSize, &ioWordSize, &version);
+    if (file_.id < 0)
+      throwInput(path_, "", "", "not a readable Exodus II file (empty, truncated or another format)",
+                 "give a mesh written by an Exodus II tool (e.g. 'choc mesh')");
+    const int64_t used = ex_inquire_int(file_.id, EX_INQ_DB_MAX_USED_NAME_LENGTH);
+    nameLength_ = static_cast<int>(std::clamp<int64_t>(used, 32, 256));
+    check(ex_set_max_name_length(file_.id, nameLength_), path_, "the name length");
+  }
+
+  std::vector<std::string> names(ex_entity_type type, int count, const std::string& what) {
+    std::vector<std::vector<char>> buffers(count, std::vector<char>(nameLength_ + 1, '\0'));
+    std::vector<char*> pointers(count);
+    for (int i = 0; i < count; ++i) pointers[i] = buffers[i].data();
+    if (count > 0) check(ex_get_names(file_.id, type, pointers.data()), path_, what + " names");
+    std::vector<std::string> result;
+    for (auto& b : buffers) {
+      b.back() = '\0';
+      result.push_back(trimRight(b.data()));
+    }
+    return result;
+  }
+
+  static std::string trimRight(const char* s) {
+    std::string r(s);
+    while (!r.empty() && std::isspace(static_cast<unsigned char>(r.back()))) r.pop_back();
+    return r;
+  }
+
+  std::vector<int> ids(ex_entity_type type, int count, const std::string& what) {
+    std::vector<int> result(count);
+    if (count > 0) check(ex_get_ids(file_.id, type, result.data()), path_, what + " ids");
+    return result;
+  }
+
+  void readCoordinates(Mesh& mesh, int dim, int numNodes) {
+    std::vector<double> c[3];
+    for (int d = 0; d < 3; ++d) c[d].assign(numNodes, 0.0);
+    if (numNodes > 0)
+      check(ex_get_coord(file_.id, c[0].data(), dim > 1 ? c[1].data() : nullptr,
+                         dim > 2 ? c[2].data() : nullptr),
+            path_, "the node coordinates");
+    mesh.coords.resize(numNodes);
+    for (int n = 0; n < numNodes; ++n) mesh.coords[n] = {c[0][n], c[1][n], c[2][n]};
+  }
+
+  void toZeroBased(std::vector<int>& list, int limit, const std::string& what) {
+    for (int& v : list) {
+      if (v < 1 || v > limit)
+        badFile(path_, what + " refers to index " + std::to_string(v) + " outside 1.." +
+                           std::to_string(limit) + " (file truncated or corrupt)");
+      --v;
+    }
+  }
+
+  void readBlocks(Mesh& mesh, int count) {
+    const std::vector<int> blockIds = ids(EX_ELEM_BLOCK, count, "element block");
+    const std::vector<std::string> blockNames = names(EX_ELEM_BLOCK, count, "element block");
+    for (int b = 0; b < count; ++b) {
+      ex_block info{};
+      info.id = blockIds[b];
+      info.type = EX_ELEM_BLOCK;
+      check(ex_get_block_param(file_.id, &info), path_, "element block " + std::to_string(info.id));
+      ElementBlock block;
+      block.id = blockIds[b];
+      block.name = blockNames[b].empty() ? "block_" + std::to_string(block.id) : blockNames[b];
+      info.topology[MAX_STR_LENGTH] = '\0';
+      const std::string type = upper(info.topology);
+      const int nodes = static_cast<int>(info.num_nodes_per_entry);
+      block.topology = canonicalTopology(type, nodes);
+      // Exodus stores an empty block as type "NULL" with 0 nodes: keep it, without topology.
+      if (block.topology.empty() && info.num_entry == 0) {
+        mesh.blocks.push_back(std::move(block));
+        continue;
+      }
+      if (block.topology.empty())
+        throwInput(path_, "element block '" + block.name + "' topology",
+                   type + " with " + std::to_string(nodes) + " nodes",
+                   "unsupported element topology", kSupported);
+      // Each connectivity entry takes at least 4 bytes: more than the file holds is corrupt.
+      if (info.num_entry < 0 || info.num_entry * nodes > fileBytes_ / 4)
+        badFile(path_, "element block '" + block.name + "' has an invalid element count");
+      block.nodesPerElement = nodes;
+      block.connectivity.resize(static_cast<std::size_t>(info.num_entry) * nodes);
+      if (info.num_entry > 0)
+        check(ex_get_conn(file_.id, EX_ELEM_BLOCK, block.id, block.connectivity.data(), nullptr,
+                          nullptr),
+              path_, "the connectivity of element block '" + block.name + "'");
+      toZeroBased(block.connectivity, mesh.numNodes(),
+                  "the connectivity of element block '" + block.name + "'");
+      mesh.blocks.push_back(std::move(block));
+    }
+  }
+
+  // Reads the parameters of one set; returns its entry count.
+  int setSize(ex_entity_type type, int id, const std::string& what) {
+    int entries = 0, distFactors = 0;
+    check(ex_get_set_param(file_.id, type, id, &entries, &distFactors), path_, what);
+    if (entries < 0 || entries > fileBytes_ / 4) badFile(path_, what + " has an invalid size");
+    return entries;
+  }
+
+  void readNodeSets(Mesh& mesh, int count) {
+    const std::vector<int> setIds = ids(EX_NODE_SET, count, "node set");
+    const std::vector<std::string> setNames = names(EX_NODE_SET, count, "node set");
+    for (int s = 0; s < count; ++s) {
+      NodeSet set;
+      set.id = setIds[s];
+      set.name = setNames[s].empty() ? "nodeset_" + std::to_string(set.id) : setNames[s];
+      const std::string what = "node set '" + set.name + "'";
+      set.nodes.resize(setSize(EX_NODE_SET, set.id, what));
+      if (!set.nodes.empty())
+        check(ex_get_set(file_.id, EX_NODE_SET, set.id, set.nodes.data(), nullptr), path_, what);
+      toZeroBased(set.nodes, mesh.numNodes(), what);
+      mesh.nodeSets.push_back(std::move(set));
+    }
+  }
+
+  void readSideSets(Mesh& mesh, int count) {
+    const std::vector<int> setIds = ids(EX_SIDE_SET, count, "side set");
+    const std::vector<std::string> setNames = names(EX_SIDE_SET, count, "side set");
+    for (int s = 0; s < count; ++s) {
+      SideSet set;
+      set.id = setIds[s];
+      set.name = setNames[s].empty() ? "sideset_" + std::to_string(set.id) : setNames[s];
+      const std::string what = "side set '" + set.name + "'";
+      const int n = setSize(EX_SIDE_SET, set.id, what);
+      set.elements.resize(n);
+      set.sides.resize(n);
+      if (n > 0)
+        check(ex_get_set(file_.id, EX_SIDE_SET, set.id, set.elements.data(), set.sides.data()),
+              path_, what);
+      toZeroBased(set.elements, mesh.numElements(), what);
+      for (int i = 0; i < n; ++i) {
+        const ElementBlock& block = mesh.blocks[mesh.locateElement(set.elements[i]).first];
+        const int maxSide = block.topology == "HEX8" ? 6 : 2;
+        if (set.sides[i] < 1 || set.sides[i] > maxSide)
+          badFile(path_, what + " has side " + std::to_string(set.sides[i]) + " on a " +
+                             block.topology + " element (valid: 1.." + std::to_string(maxSide) +
+                             ")");
+      }
+      mesh.sideSets.push_back(std::move(set));
+    }
+  }
+
+  std::string path_;
+  OpenFile file_;
+  int nameLength_ = 32;
+  int64_t fileBytes_ = 0;  // size of the file: bounds every count read from the header
+};
+
+}  // namespace
+
+std::string canonicalTopology(const std::string& exodusType, int nodesPerElement) {
+  const std::string t = upper(exodusType);
+  if (nodesPerElement == 2 && (t == "BAR2" || t == "BAR" || t == "BEAM" || t == "BEAM2" ||
+                               t == "TRUSS" || t == "TRUSS2"))
+    return "BEAM2";
+  if (nodesPerElement == 8 && (t == "HEX" || t == "HEX8")) return "HEX8";
+  return "";
+}
+
+Mesh readExodusMesh(const std::string& path) { return Reader(path).read(); }
+
+}  // namespace choc

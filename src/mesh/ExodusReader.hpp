@@ -1,0 +1,21 @@
+// Reading an Exodus II mesh file into a choc::Mesh.
+#pragma once
+#include <string>
+
+#include "mesh/Mesh.hpp"
+
+namespace choc {
+
+// Reads coordinates (padded to 3 components), element blocks (BEAM2 and HEX8 topologies,
+// canonicalised), node sets and side sets with their names. Unnamed entities are called
+// "block_<id>", "nodeset_<id>", "sideset_<id>". A block with 0 elements is accepted
+// whatever its type (Exodus stores it as "NULL"): it then has topology "" and 0 nodes. Any problem with the file (missing,
+// not Exodus, truncated, unsupported topology, indices out of range) throws
+// choc::InputError with a one-line message naming the path.
+Mesh readExodusMesh(const std::string& path);
+
+// The canonical topology ("BEAM2", "HEX8") of an Exodus element type name with the given
+// number of nodes, or "" when choc does not support it.
+std::string canonicalTopology(const std::string& exodusType, int nodesPerElement);
+
+}  // namespace choc

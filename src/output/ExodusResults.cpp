@@ -1,0 +1,162 @@
+// Exodus II results writer (ExodusResults.hpp).
+#include "output/ExodusResults.hpp"
+
+#include <exodusII.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "input/Errors.hpp"
+#include "mesh/ExodusMeshWriter.hpp"
+
+namespace choc {
+
+namespace {
+
+void validateNames(const std::vector<std::string>& names, const char* kind,
+                   const std::string& path) {
+  std::set<std::string> seen;
+  for (const std::string& n : names) {
+    std::string problem;
+    if (n.empty()) problem = "is empty";
+    else if (static_cast<int>(n.size()) > kExodusMaxNameLength)
+      problem = "is longer than " + std::to_string(kExodusMaxNameLength) + " characters";
+    else if (!seen.insert(n).second) problem = "is given twice";
+    if (!problem.empty())
+      throw std::invalid_argument("results file " + path + ": " + kind + " variable name '" + n +
+                                  "' " + problem);
+  }
+}
+
+std::string str(double v) {
+  std::ostringstream s;
+  s.precision(12);
+  s << v;
+  return s.str();
+}
+
+void renameFile(const std::string& from, const std::string& to) {
+  std::error_code ec;
+  std::filesystem::rename(from, to, ec);
+  if (ec)
+    throw std::runtime_error("cannot rename " + from + " to " + to + ": " + ec.message());
+}
+
+}  // namespace
+
+ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& mesh,
+                                         std::vector<std::string> nodalVariables,
+                                         std::vector<std::string> globalVariables)
+    : path_(path),
+      numNodes_(mesh.numNodes()),
+      nodalNames_(std::move(nodalVariables)),
+      globalNames_(std::move(globalVariables)) {
+  validateNames(nodalNames_, "nodal", path_);
+  validateNames(globalNames_, "global", path_);
+  exoid_ = createExodusMeshFile(mesh, partPath());
+  try {
+    auto define = [&](ex_entity_type type, std::vector<std::string>& names, const char* kind) {
+      if (names.empty()) return;
+      check(ex_put_variable_param(exoid_, type, static_cast<int>(names.size())),
+            std::string("defining the ") + kind + " variables");
+      std::vector<char*> pointers;
+      for (auto& n : names) pointers.push_back(n.data());
+      check(ex_put_variable_names(exoid_, type, static_cast<int>(names.size()), pointers.data()),
+            std::string("writing the ") + kind + " variable names");
+    };
+    define(EX_GLOBAL, globalNames_, "global");
+    define(EX_NODAL, nodalNames_, "nodal");
+    check(ex_update(exoid_), "flushing the mesh");
+  } catch (...) {
+    ex_close(exoid_);
+    exoid_ = -1;
+    std::error_code ignored;
+    std::filesystem::remove(partPath(), ignored);  // nothing worth keeping
+    throw;
+  }
+}
+
+ExodusResultsWriter::~ExodusResultsWriter() {
+  try {
+    abandon();
+  } catch (...) {
+    // A destructor must not throw; the .part file stays for inspection.
+  }
+}
+
+void ExodusResultsWriter::check(int rc, const std::string& what) const {
+  if (rc < 0) throw std::runtime_error(exodusFailure(what, partPath()));
+}
+
+void ExodusResultsWriter::writeStep(double time, const std::vector<std::vector<double>>& nodal,
+                                    const std::vector<double>& globals) {
+  if (exoid_ < 0)
+    throw std::logic_error("results file " + path_ + ": writeStep after the file was closed");
+  if (nodal.size() != nodalNames_.size() || globals.size() != globalNames_.size())
+    throw std::invalid_argument("results file " + path_ + ": " + std::to_string(nodal.size()) +
+                                " nodal and " + std::to_string(globals.size()) +
+                                " global fields given, " + std::to_string(nodalNames_.size()) +
+                                " and " + std::to_string(globalNames_.size()) + " declared");
+  if (!std::isfinite(time))
+    throw NumericalError("results file " + path_ + ": non-finite time value " + str(time));
+  for (std::size_t v = 0; v < nodal.size(); ++v) {
+    if (static_cast<int>(nodal[v].size()) != numNodes_)
+      throw std::invalid_argument("results file " + path_ + ": nodal variable " + nodalNames_[v] +
+                                  " has " + std::to_string(nodal[v].size()) + " values for " +
+                                  std::to_string(numNodes_) + " nodes");
+    for (int n = 0; n < numNodes_; ++n)
+      if (!std::isfinite(nodal[v][n]))
+        throw NumericalError("non-finite value " + str(nodal[v][n]) + " of " + nodalNames_[v] +
+                             " at node " + std::to_string(n + 1) + " at time " + str(time) +
+                             " (not written to " + path_ + ")");
+  }
+  for (std::size_t g = 0; g < globals.size(); ++g)
+    if (!std::isfinite(globals[g]))
+      throw NumericalError("non-finite value " + str(globals[g]) + " of " + globalNames_[g] +
+                           " at time " + str(time) + " (not written to " + path_ + ")");
+  const int step = steps_ + 1;
+  check(ex_put_time(exoid_, step, &time), "writing time step " + std::to_string(step));
+  for (std::size_t v = 0; v < nodal.size(); ++v)
+    if (numNodes_ > 0)
+      check(ex_put_var(exoid_, step, EX_NODAL, static_cast<int>(v) + 1, 1, numNodes_,
+                       nodal[v].data()),
+            "writing " + nodalNames_[v] + " at step " + std::to_string(step));
+  if (!globals.empty())
+    check(ex_put_var(exoid_, step, EX_GLOBAL, 1, 1, static_cast<int64_t>(globals.size()),
+                     globals.data()),
+          "writing the global variables at step " + std::to_string(step));
+  check(ex_update(exoid_), "flushing step " + std::to_string(step));
+  steps_ = step;
+}
+
+void ExodusResultsWriter::close() {
+  const int id = exoid_;
+  exoid_ = -1;
+  if (ex_close(id) < 0) throw std::runtime_error(exodusFailure("closing", partPath()));
+}
+
+void ExodusResultsWriter::finish() {
+  if (exoid_ < 0)
+    throw std::logic_error("results file " + path_ + ": finish after the file was closed");
+  close();
+  renameFile(partPath(), path_);
+}
+
+void ExodusResultsWriter::abandon() {
+  if (exoid_ < 0) return;
+  const int id = exoid_;
+  exoid_ = -1;
+  ex_close(id);  // best effort: the steps written so far are already flushed
+  renameFile(partPath(), incompletePath());
+}
+
+std::string ExodusResultsWriter::incompletePath() const {
+  const std::filesystem::path p(path_);
+  const std::string ext = p.has_extension() ? p.extension().string() : std::string(".exo");
+  return (p.parent_path() / (p.stem().string() + ".incomplete" + ext)).string();
+}
+
+}  // namespace choc

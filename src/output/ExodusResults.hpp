@@ -1,0 +1,53 @@
+// Exodus II results file: the mesh, then one time step per writeStep() call.
+// The file is written as "<path>.part" and renamed by finish() (→ path) or abandon()
+// (→ "<stem>.incomplete<ext>", e.g. "x/run.exo" → "x/run.incomplete.exo"), so a final
+// name always means a complete run. Each step is flushed, so an interrupted run is still
+// readable. Call it on one MPI rank only (the caller gathers the fields).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "mesh/Mesh.hpp"
+
+namespace choc {
+
+class ExodusResultsWriter {
+ public:
+  // Creates "<path>.part" containing the mesh and the variable definitions (names as
+  // given, e.g. DISP_X, DISP_Y, DISP_Z so that ParaView groups them into vectors).
+  // Throws std::runtime_error naming the path on an I/O failure, std::invalid_argument
+  // for empty, duplicate or too long variable names.
+  ExodusResultsWriter(const std::string& path, const Mesh& mesh,
+                      std::vector<std::string> nodalVariables,
+                      std::vector<std::string> globalVariables);
+  ~ExodusResultsWriter();  // abandon() unless finish() or abandon() was called
+  ExodusResultsWriter(const ExodusResultsWriter&) = delete;
+  ExodusResultsWriter& operator=(const ExodusResultsWriter&) = delete;
+
+  // nodal[v][node] for every nodal variable and node, globals[g] for every global
+  // variable. Appends one time step and flushes. Throws choc::NumericalError (naming the
+  // variable, the node and the time) for a non-finite value or time, writing nothing;
+  // std::invalid_argument for wrong sizes; std::runtime_error on I/O failure;
+  // std::logic_error after finish()/abandon().
+  void writeStep(double time, const std::vector<std::vector<double>>& nodal,
+                 const std::vector<double>& globals);
+  void finish();   // closes and renames <path>.part → <path>
+  void abandon();  // closes and renames <path>.part → <stem>.incomplete<ext>; quiet if closed
+  int stepsWritten() const { return steps_; }
+
+  const std::string& path() const { return path_; }
+  std::string partPath() const { return path_ + ".part"; }
+  std::string incompletePath() const;
+
+ private:
+  void close();
+  void check(int rc, const std::string& what) const;
+
+  std::string path_;
+  int numNodes_ = 0;
+  std::vector<std::string> nodalNames_, globalNames_;
+  int exoid_ = -1;
+  int steps_ = 0;
+};
+
+}  // namespace choc

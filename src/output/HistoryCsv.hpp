@@ -1,0 +1,59 @@
+// <analysis>.history.csv (BRIEF §3): first column "time", then one column per quantity.
+// Rows go to "<path>.part"; finish() renames it to <path>, abandon() to the ".incomplete"
+// name, so a file with the final name is always a complete history of this run.
+#pragma once
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace choc {
+
+// Shared CSV helpers (also used by checks.csv).
+std::string csvNumber(double v);                // "%.17g": reads back to the same double
+std::string csvField(const std::string& text);  // RFC 4180 quoting when needed
+std::vector<std::string> splitCsvLine(const std::string& line);  // inverse of csvField
+// "run.history.csv" -> "run.history.incomplete.csv"; "name" -> "name.incomplete".
+std::string incompletePath(const std::string& path);
+
+class HistoryCsv {
+ public:
+  // columns: the quantities after "time" (non-empty, distinct, not "time").
+  // Removes stale <path> and its ".incomplete" file from an earlier run.
+  // Throws std::invalid_argument for bad names, choc::InputError if the file cannot be opened.
+  HistoryCsv(const std::string& path, const std::vector<std::string>& columns);
+  ~HistoryCsv();  // abandon() unless finished
+  HistoryCsv(const HistoryCsv&) = delete;
+  HistoryCsv& operator=(const HistoryCsv&) = delete;
+
+  // values: one per column. Throws choc::NumericalError naming the column and the time if
+  // a value (or the time) is not finite, std::invalid_argument on a size mismatch.
+  void appendRow(double time, const std::vector<double>& values);
+  void finish();   // flush, close, rename <path>.part -> <path>
+  void abandon();  // close, rename <path>.part -> incompletePath(path)
+
+  const std::string& path() const { return path_; }
+  std::string partPath() const { return path_ + ".part"; }
+  std::size_t rows() const { return rows_; }
+  bool open() const { return file_ != nullptr; }
+
+ private:
+  void closeAndRename(bool complete);
+  std::string path_;
+  std::vector<std::string> columns_;
+  std::FILE* file_ = nullptr;
+  std::size_t rows_ = 0;
+};
+
+// A history file read back: names[0] == "time"; rows[i][j] is column j of row i.
+struct HistoryTable {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> rows;
+  std::size_t index(const std::string& name) const;             // std::out_of_range if absent
+  std::vector<double> column(const std::string& name) const;    // all rows of one column
+  bool has(const std::string& name) const;
+};
+
+// Throws std::runtime_error naming the file and line on a missing file or a malformed row.
+HistoryTable readHistoryCsv(const std::string& path);
+
+}  // namespace choc

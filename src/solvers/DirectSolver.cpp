@@ -1,0 +1,155 @@
+#include "solvers/DirectSolver.hpp"
+
+#include <cmath>
+
+#include <Amesos2.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include "input/Errors.hpp"
+
+namespace choc {
+
+namespace {
+
+std::string firstLine(const std::string& s) {
+  auto p = s.find('\n');
+  return p == std::string::npos ? s : s.substr(0, p);
+}
+
+// Amesos2 on a matrix whose communicator is MPI_COMM_SELF. (Debian's Trilinos 13.2 KLU2
+// returns wrong solutions whenever the communicator has more than one rank, even with every
+// row on rank 0 — see tests/unit/test_solvers_mpi_direct.cpp — so choc gathers the system to
+// rank 0 itself and factors it there, which is what Amesos2 does internally for KLU2.)
+class SerialFactorization {
+ public:
+  explicit SerialFactorization(std::string package) : package_(std::move(package)) {}
+  void factor(RCP<const CrsMatrix> A) {
+    if (solver_.is_null() || A.get() != A_.get()) {
+      solver_ = Amesos2::create<CrsMatrix, MultiVector>(package_, A);
+      solver_->symbolicFactorization();
+    }
+    A_ = A;
+    solver_->numericFactorization();
+  }
+  void solve(const MultiVector& b, MultiVector& x) {
+    solver_->solve(Teuchos::ptr(&x), Teuchos::ptr(&b));
+  }
+  RCP<const CrsMatrix> matrix() const { return A_; }
+
+ private:
+  std::string package_;
+  RCP<const CrsMatrix> A_;
+  RCP<Amesos2::Solver<CrsMatrix, MultiVector>> solver_;
+};
+
+class Amesos2Solver : public LinearSolver {
+ public:
+  Amesos2Solver(std::string package, double tol) : package_(package), tol_(tol), serial_(package) {}
+
+  void setMatrix(RCP<const CrsMatrix> A) override {
+    try {
+      A_ = A;
+      if (A->getComm()->getSize() == 1) {
+        serial_.factor(A);
+      } else {
+        gatherToRoot(*A);
+        if (A->getComm()->getRank() == 0) serial_.factor(rootSerial_);
+      }
+    } catch (const std::exception& e) {
+      throw NumericalError("direct solver " + package_ + ": factorisation failed (singular or " +
+                           "unconstrained system?): " + firstLine(e.what()));
+    }
+    ++factorizations_;
+  }
+
+  LinearSolveStatus solve(const MultiVector& b, MultiVector& x) override {
+    LinearSolveStatus st;
+    try {
+      if (A_->getComm()->getSize() == 1) {
+        serial_.solve(b, x);
+      } else {
+        MultiVector bRoot(rootMap_, b.getNumVectors()), xRoot(rootMap_, b.getNumVectors());
+        bRoot.doImport(b, *importer_, Tpetra::INSERT);
+        if (A_->getComm()->getRank() == 0) {
+          MultiVector bs(serialMap_, b.getNumVectors()), xs(serialMap_, b.getNumVectors());
+          copyLocal(bRoot, bs);
+          serial_.solve(bs, xs);
+          copyLocal(xs, xRoot);
+        }
+        x.doExport(xRoot, *importer_, Tpetra::INSERT);
+      }
+    } catch (const std::exception& e) {
+      st.message = "direct solve failed: " + firstLine(e.what());
+      return st;
+    }
+    st.relativeResidual = relativeResidual(*A_, b, x);
+    st.converged = std::isfinite(st.relativeResidual) && st.relativeResidual <= tol_;
+    if (!st.converged)
+      st.message = "direct solve residual " + std::to_string(st.relativeResidual) + " above " +
+                   std::to_string(tol_) + " (singular or ill-conditioned matrix)";
+    return st;
+  }
+
+  std::string description() const override { return "Amesos2 " + package_; }
+
+ private:
+  static void copyLocal(const MultiVector& from, MultiVector& to) {
+    for (size_t j = 0; j < from.getNumVectors(); ++j) {
+      auto src = from.getData(j);
+      auto dst = to.getDataNonConst(j);
+      for (size_t i = 0; i < from.getLocalLength(); ++i) dst[i] = src[i];
+    }
+  }
+
+  // Copies A to rank 0, then into a matrix on MPI_COMM_SELF there.
+  void gatherToRoot(const CrsMatrix& A) {
+    auto comm = A.getComm();
+    const Tpetra::global_size_t n = A.getGlobalNumRows();
+    if (rootMap_.is_null() || rootMap_->getGlobalNumElements() != n) {
+      rootMap_ = rcp(new Map(n, comm->getRank() == 0 ? size_t(n) : 0, 0, comm));
+      importer_ = rcp(new Tpetra::Import<LO, GO>(A.getRowMap(), rootMap_));
+      RCP<const Comm> self = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+      if (comm->getRank() == 0) serialMap_ = rcp(new Map(n, size_t(n), 0, self));
+    }
+    CrsMatrix root(rootMap_, 0);
+    root.doImport(A, *importer_, Tpetra::INSERT);
+    root.fillComplete(rootMap_, rootMap_);
+    if (comm->getRank() != 0) return;
+    std::vector<size_t> counts(n);
+    for (size_t i = 0; i < n; ++i) counts[i] = root.getNumEntriesInGlobalRow(GO(i));
+    auto S = rcp(new CrsMatrix(serialMap_, Teuchos::ArrayView<const size_t>(counts)));
+    Teuchos::Array<GO> cols;
+    Teuchos::Array<double> vals;
+    for (size_t i = 0; i < n; ++i) {
+      cols.resize(counts[i]);
+      vals.resize(counts[i]);
+      size_t got = 0;
+      root.getGlobalRowCopy(GO(i), cols(), vals(), got);
+      S->insertGlobalValues(GO(i), cols(0, got), vals(0, got));
+    }
+    S->fillComplete(serialMap_, serialMap_);
+    rootSerial_ = S;
+  }
+
+  std::string package_;
+  double tol_;
+  SerialFactorization serial_;
+  RCP<const CrsMatrix> A_;
+  RCP<const Map> rootMap_, serialMap_;
+  RCP<Tpetra::Import<LO, GO>> importer_;
+  RCP<const CrsMatrix> rootSerial_;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> makeDirectSolver(const std::string& package, double tol) {
+  if (!Amesos2::query(package))
+    throw InputError("Linear Solver: direct package '" + package +
+                     "' is not available in this Trilinos build; use KLU2");
+  return std::make_unique<Amesos2Solver>(package, tol);
+}
+
+}  // namespace choc

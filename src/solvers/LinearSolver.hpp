@@ -1,0 +1,44 @@
+// Solving A x = b for a sparse Tpetra matrix: Amesos2 direct (KLU2) or Belos Krylov
+// (CG, GMRES, MINRES) with an Ifpack2 preconditioner, chosen by the "Linear Solver" sublist.
+// The factorisation / preconditioner is computed by setMatrix() and reused by every solve()
+// until setMatrix() is called again (callers key it on dt, scheme and active set).
+#pragma once
+#include <memory>
+#include <string>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "fem/TpetraTypes.hpp"
+
+namespace choc {
+
+struct LinearSolveStatus {
+  bool converged = false;
+  int iterations = 0;          // 0 for a direct solve
+  double relativeResidual = 0; // ||b - A x|| / ||b|| (recomputed, not trusted from the solver)
+  std::string message;         // why it failed
+};
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  // Sets the matrix and computes the factorisation or the preconditioner. Throws
+  // NumericalError when the matrix is singular or the factorisation fails.
+  virtual void setMatrix(RCP<const CrsMatrix> A) = 0;
+  virtual LinearSolveStatus solve(const MultiVector& b, MultiVector& x) = 0;
+  virtual std::string description() const = 0;
+  int factorizations() const { return factorizations_; }
+
+ protected:
+  int factorizations_ = 0;
+};
+
+// The valid "Linear Solver" sublist.
+Teuchos::ParameterList linearSolverParameters();
+// Builds from a validated "Linear Solver" sublist.
+std::unique_ptr<LinearSolver> makeLinearSolver(const Teuchos::ParameterList& params);
+
+// ||b - A x|| / ||b|| for each column, returns the largest (0 when b = 0 and x = 0).
+double relativeResidual(const CrsMatrix& A, const MultiVector& b, const MultiVector& x);
+
+}  // namespace choc

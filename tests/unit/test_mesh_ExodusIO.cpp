@@ -1,0 +1,228 @@
+// Exodus mesh writer and reader: round trips, padding of 1D/2D files, topology names,
+// and one-line InputErrors naming the path for files that are missing or not Exodus.
+#include <gtest/gtest.h>
+#include <exodusII.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "input/Errors.hpp"
+#include "mesh/BarImpactMesh.hpp"
+#include "mesh/ExodusMeshWriter.hpp"
+#include "mesh/ExodusReader.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+class ExodusIO : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(CHOC_BINARY_DIR) / "test-tmp" /
+           ("mesh_exodus_io_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string file(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+void expectSameMesh(const choc::Mesh& a, const choc::Mesh& b) {
+  ASSERT_EQ(a.numNodes(), b.numNodes());
+  for (int n = 0; n < a.numNodes(); ++n) EXPECT_EQ(a.coords[n], b.coords[n]) << "node " << n;
+  ASSERT_EQ(a.blocks.size(), b.blocks.size());
+  for (std::size_t i = 0; i < a.blocks.size(); ++i) {
+    EXPECT_EQ(a.blocks[i].name, b.blocks[i].name);
+    EXPECT_EQ(a.blocks[i].id, b.blocks[i].id);
+    EXPECT_EQ(a.blocks[i].topology, b.blocks[i].topology);
+    EXPECT_EQ(a.blocks[i].nodesPerElement, b.blocks[i].nodesPerElement);
+    EXPECT_EQ(a.blocks[i].connectivity, b.blocks[i].connectivity);
+  }
+  ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
+  for (std::size_t i = 0; i < a.nodeSets.size(); ++i) {
+    EXPECT_EQ(a.nodeSets[i].name, b.nodeSets[i].name);
+    EXPECT_EQ(a.nodeSets[i].id, b.nodeSets[i].id);
+    EXPECT_EQ(a.nodeSets[i].nodes, b.nodeSets[i].nodes);
+  }
+  ASSERT_EQ(a.sideSets.size(), b.sideSets.size());
+  for (std::size_t i = 0; i < a.sideSets.size(); ++i) {
+    EXPECT_EQ(a.sideSets[i].name, b.sideSets[i].name);
+    EXPECT_EQ(a.sideSets[i].id, b.sideSets[i].id);
+    EXPECT_EQ(a.sideSets[i].elements, b.sideSets[i].elements);
+    EXPECT_EQ(a.sideSets[i].sides, b.sideSets[i].sides);
+  }
+}
+
+TEST_F(ExodusIO, RoundTrip1D) {
+  choc::BarImpactOptions o;
+  o.shiftA = -1.1e-5;
+  const choc::Mesh mesh = choc::generateBarImpactMesh(o);
+  choc::writeExodusMesh(mesh, file("bars1d.exo"));
+  const choc::Mesh back = choc::readExodusMesh(file("bars1d.exo"));
+  expectSameMesh(mesh, back);
+  EXPECT_EQ(back.title, mesh.title);
+}
+
+TEST_F(ExodusIO, RoundTrip3D) {
+  choc::BarImpactOptions o;
+  o.dimension = 3;
+  o.axis = 'y';
+  o.across1 = 2;
+  o.across2 = 3;
+  o.along1 = o.along2 = 7;
+  const choc::Mesh mesh = choc::generateBarImpactMesh(o);
+  choc::writeExodusMesh(mesh, file("bars3d.exo"));
+  const choc::Mesh back = choc::readExodusMesh(file("bars3d.exo"));
+  expectSameMesh(mesh, back);
+  // sideNodes works identically on the mesh read back.
+  const choc::SideSet* ss = back.findSideSet("CNT_POU2");
+  ASSERT_NE(ss, nullptr);
+  EXPECT_EQ(back.sideNodes(ss->elements[0], ss->sides[0]),
+            mesh.sideNodes(ss->elements[0], ss->sides[0]));
+}
+
+TEST_F(ExodusIO, EmptyBlockAndLongNamesRoundTrip) {
+  choc::Mesh mesh = choc::generateBarImpactMesh({});
+  choc::ElementBlock empty;
+  empty.name = "AN_ELEMENT_BLOCK_NAME_LONGER_THAN_THIRTY_TWO";
+  empty.id = 9;
+  empty.topology = "HEX8";
+  empty.nodesPerElement = 8;
+  mesh.blocks.push_back(empty);
+  mesh.nodeSets.push_back({"EMPTY_SET", 40, {}});
+  choc::writeExodusMesh(mesh, file("empty_block.exo"));
+  choc::Mesh back = choc::readExodusMesh(file("empty_block.exo"));
+  // Exodus keeps no type for an empty block.
+  EXPECT_EQ(back.blocks[2].name, empty.name);
+  EXPECT_EQ(back.blocks[2].id, 9);
+  EXPECT_EQ(back.blocks[2].numElements(), 0);
+  EXPECT_EQ(back.blocks[2].topology, "");
+  back.blocks[2].topology = "HEX8";
+  back.blocks[2].nodesPerElement = 8;
+  expectSameMesh(mesh, back);
+  // ... and such a block writes and reads again.
+  choc::writeExodusMesh(back, file("empty_block2.exo"));
+  EXPECT_EQ(choc::readExodusMesh(file("empty_block2.exo")).blocks[2].numElements(), 0);
+}
+
+TEST_F(ExodusIO, WriterRefusesBadMeshWithoutLeavingAFile) {
+  choc::Mesh mesh = choc::generateBarImpactMesh({});
+  mesh.blocks[1].connectivity[0] = 500;  // node index out of range
+  EXPECT_THROW(choc::writeExodusMesh(mesh, file("bad.exo")), std::invalid_argument);
+  EXPECT_FALSE(fs::exists(file("bad.exo")));
+  try {
+    choc::writeExodusMesh(choc::generateBarImpactMesh({}), file("no/such/dir/x.exo"));
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(file("no/such/dir/x.exo")), std::string::npos);
+  }
+}
+
+// A file written directly with the Exodus API: num_dim dimensions, one block.
+void writeRaw(const std::string& path, int dim, const char* topology, int nodesPerElement,
+              bool named) {
+  int cpu = 8, io = 8;
+  const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
+  ASSERT_GE(id, 0);
+  const int nodes = nodesPerElement;
+  ASSERT_EQ(ex_put_init(id, "raw", dim, nodes, 1, 1, 0, 0), 0);
+  std::vector<double> x(nodes), y(nodes, 2.0), z(nodes, 3.0);
+  for (int n = 0; n < nodes; ++n) x[n] = n;
+  ASSERT_EQ(ex_put_coord(id, x.data(), dim > 1 ? y.data() : nullptr, dim > 2 ? z.data() : nullptr), 0);
+  ASSERT_EQ(ex_put_block(id, EX_ELEM_BLOCK, 42, topology, 1, nodesPerElement, 0, 0, 0), 0);
+  std::vector<int> conn(nodesPerElement);
+  for (int n = 0; n < nodesPerElement; ++n) conn[n] = n + 1;
+  ASSERT_EQ(ex_put_conn(id, EX_ELEM_BLOCK, 42, conn.data(), nullptr, nullptr), 0);
+  if (named) {
+    char name[] = "PIPE";
+    char* names[1] = {name};
+    ASSERT_EQ(ex_put_names(id, EX_ELEM_BLOCK, names), 0);
+  }
+  ASSERT_EQ(ex_close(id), 0);
+}
+
+TEST_F(ExodusIO, ReadsTwoDimensionalFilePaddedWithZeros) {
+  writeRaw(file("d2.exo"), 2, "truss", 2, true);
+  const choc::Mesh m = choc::readExodusMesh(file("d2.exo"));
+  ASSERT_EQ(m.numNodes(), 2);
+  EXPECT_EQ(m.coords[1], (choc::Point3{1.0, 2.0, 0.0}));
+  EXPECT_EQ(m.blocks[0].name, "PIPE");
+  EXPECT_EQ(m.blocks[0].topology, "BEAM2");
+  EXPECT_EQ(m.blocks[0].connectivity, (std::vector<int>{0, 1}));
+}
+
+TEST_F(ExodusIO, ReadsOneDimensionalUnnamedBlock) {
+  writeRaw(file("d1.exo"), 1, "BAR2", 2, false);
+  const choc::Mesh m = choc::readExodusMesh(file("d1.exo"));
+  EXPECT_EQ(m.coords[1], (choc::Point3{1.0, 0.0, 0.0}));
+  EXPECT_EQ(m.blocks[0].name, "block_42");
+  EXPECT_EQ(m.blocks[0].id, 42);
+}
+
+TEST(ExodusTopology, CanonicalNames) {
+  for (const char* t : {"BAR2", "BAR", "BEAM", "BEAM2", "TRUSS", "TRUSS2", "bar2", " beam "})
+    EXPECT_EQ(choc::canonicalTopology(t, 2), "BEAM2") << t;
+  for (const char* t : {"HEX", "HEX8", "hex8"}) EXPECT_EQ(choc::canonicalTopology(t, 8), "HEX8");
+  EXPECT_EQ(choc::canonicalTopology("HEX", 27), "");
+  EXPECT_EQ(choc::canonicalTopology("BAR", 3), "");
+  EXPECT_EQ(choc::canonicalTopology("TETRA", 4), "");
+}
+
+// Reads path expecting an InputError; the message must be one line naming the path, and
+// nothing may be printed on stderr by the libraries.
+std::string readError(const std::string& path) {
+  ::testing::internal::CaptureStderr();
+  std::string message;
+  try {
+    choc::readExodusMesh(path);
+  } catch (const choc::InputError& e) {
+    message = e.what();
+  }
+  const std::string noise = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(noise, "");
+  EXPECT_NE(message, "") << "no InputError for " << path;
+  EXPECT_NE(message.find(path), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  return message;
+}
+
+TEST_F(ExodusIO, UnsupportedTopologyNamesBlockAndSupportedOnes) {
+  writeRaw(file("tet.exo"), 3, "TETRA", 4, true);
+  const std::string m = readError(file("tet.exo"));
+  EXPECT_NE(m.find("PIPE"), std::string::npos) << m;
+  EXPECT_NE(m.find("TETRA"), std::string::npos) << m;
+  EXPECT_NE(m.find("BEAM2"), std::string::npos) << m;
+  EXPECT_NE(m.find("HEX8"), std::string::npos) << m;
+}
+
+TEST_F(ExodusIO, MissingFile) {
+  EXPECT_NE(readError(file("does_not_exist.exo")).find("not found"), std::string::npos);
+}
+
+TEST_F(ExodusIO, EmptyFile) {
+  std::ofstream(file("empty.exo")).close();
+  readError(file("empty.exo"));
+}
+
+TEST_F(ExodusIO, TextFile) {
+  std::ofstream(file("text.exo")) << "this is not an Exodus file\n1 2 3\n";
+  readError(file("text.exo"));
+}
+
+TEST_F(ExodusIO, Directory) { readError(dir_.string()); }
+
+TEST_F(ExodusIO, TruncatedFile) {
+  choc::BarImpactOptions o;
+  o.dimension = 3;
+  choc::writeExodusMesh(choc::generateBarImpactMesh(o), file("cut.exo"));
+  const auto size = fs::file_size(file("cut.exo"));
+  for (auto keep : {size / 2, size / 8, std::uintmax_t{100}, size - 8}) {
+    fs::copy_file(file("cut.exo"), file("cut_part.exo"), fs::copy_options::overwrite_existing);
+    fs::resize_file(file("cut_part.exo"), keep);
+    readError(file("cut_part.exo"));
+  }
+}
+
+}  // namespace

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian packages choc needs, only when some are missing.
+# Usage: tools/install-deps.sh [--with-viz]
+set -euo pipefail
+pkgs=(build-essential cmake trilinos-all-dev libptscotch-dev libscotch-dev
+      libexodusii-dev libnetcdf-dev openmpi-bin libopenmpi-dev libgtest-dev
+      python3 python3-numpy python3-matplotlib python3-netcdf4)
+if [ "${1:-}" = "--with-viz" ]; then
+  pkgs+=(paraview python3-paraview xvfb xauth)
+fi
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO=sudo
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
