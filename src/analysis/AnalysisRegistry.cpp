@@ -1,6 +1,7 @@
 #include "analysis/AnalysisRegistry.hpp"
 
 #include "analysis/ModalAnalysis.hpp"
+#include "analysis/ModalTransient.hpp"
 #include "input/Errors.hpp"
 #include "input/Validation.hpp"
 
@@ -12,6 +13,12 @@ const std::vector<AnalysisType>& analysisTypes() {
        &ModalAnalysis::parameters,
        [](const std::string& n, const Teuchos::ParameterList& p, const std::string& f) {
          return std::unique_ptr<Analysis>(new ModalAnalysis(n, p, f));
+       }},
+      {"Modal Transient",
+       "explicit transient on a modal basis with nonlinear shock links (DYNA_TRAN_MODAL)",
+       &ModalTransient::parameters,
+       [](const std::string& n, const Teuchos::ParameterList& p, const std::string& f) {
+         return std::unique_ptr<Analysis>(new ModalTransient(n, p, f));
        }},
   };
   return types;

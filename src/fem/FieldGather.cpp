@@ -36,3 +36,24 @@ std::vector<double> nodalComponent(const std::vector<double>& global, const DofM
 }
 
 }  // namespace choc
+
+namespace choc {
+
+std::vector<double> gatherRows(const MultiVector& V, const std::vector<long long>& dofs) {
+  const size_t nv = V.getNumVectors();
+  std::vector<double> local(dofs.size() * nv, 0.0), out(dofs.size() * nv, 0.0);
+  auto map = V.getMap();
+  for (size_t i = 0; i < dofs.size(); ++i) {
+    if (dofs[i] < 0 || !map->isNodeGlobalElement(GO(dofs[i]))) continue;
+    const LO lid = map->getLocalElement(GO(dofs[i]));
+    for (size_t k = 0; k < nv; ++k) local[i * nv + k] = V.getData(k)[lid];
+  }
+  int init = 0;
+  MPI_Initialized(&init);
+  if (!init) return local;
+  MPI_Allreduce(local.data(), out.data(), static_cast<int>(local.size()), MPI_DOUBLE, MPI_SUM,
+                MPI_COMM_WORLD);
+  return out;
+}
+
+}  // namespace choc

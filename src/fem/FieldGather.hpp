@@ -15,3 +15,11 @@ std::vector<double> gatherAll(const MultiVector& v, size_t col, const DofMap& do
 std::vector<double> nodalComponent(const std::vector<double>& global, const DofMap& dofs, int comp);
 
 }  // namespace choc
+
+namespace choc {
+
+// Rows of a distributed multivector at the given global DOFs (-1 rows are zero), on every
+// rank: out[i * numVectors + k] = V(dofs[i], k).
+std::vector<double> gatherRows(const MultiVector& V, const std::vector<long long>& dofs);
+
+}  // namespace choc

@@ -1,0 +1,183 @@
+#include "analysis/ModalLinks.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include <Tpetra_MultiVector.hpp>
+
+#include "fem/Components.hpp"
+#include "fem/FieldGather.hpp"
+#include "input/Errors.hpp"
+#include "input/ParameterSpec.hpp"
+
+namespace choc {
+
+void declareShockLinks(Teuchos::ParameterList& p) {
+  ParameterList& l = declareNamedSublists(
+      p, "Shock Links", "nonlinear two-node shock links (or node-to-fixed-obstacle), by name");
+  declareRequiredString(l, "Node 1", "node set of the first node (its first node)");
+  declareString(l, "Node 2", "",
+                "node set of the second node; empty: a fixed obstacle at node 1's initial position");
+  declareChoice(l, "Obstacle", "BI_PLAN_Z", obstacleShapeNames(),
+                "shape: two planes normal to the local y or z axis, two circles, or an inner "
+                "circle moving in an outer circle");
+  declareString(l, "Axis", "0 0 1", "obstacle axis n (NORM_OBST) 'x y z'");
+  declareDouble(l, "Twist", 0.0, "rotation of the local y, z axes about n [degrees] (ANGL_VRIL)");
+  declareDouble(l, "DIST_1", 0.0, "offset of node 1 (inner radius for BI_CERC_INT) [m]",
+                Range::nonNegative());
+  declareDouble(l, "DIST_2", 0.0, "offset of node 2 (outer radius for BI_CERC_INT) [m]",
+                Range::nonNegative());
+  declareRequiredDouble(l, "Normal Stiffness", "Kn [N/m]", Range::positive());
+  declareDouble(l, "Normal Damping", 0.0, "Cn [N s/m]", Range::nonNegative());
+  declareDouble(l, "Tangential Stiffness", 0.0, "Kt [N/m]", Range::nonNegative());
+  declareDouble(l, "Tangential Damping", 0.0, "Ct [N s/m]", Range::nonNegative());
+  declareDouble(l, "Friction Coefficient", 0.0, "Coulomb coefficient mu", Range::nonNegative());
+}
+
+namespace {
+
+Vec3 parseVector(const std::string& text, const std::string& file, const std::string& param) {
+  std::istringstream in(text);
+  Vec3 v{};
+  for (double& x : v)
+    if (!(in >> x)) throwInput(file, param, text, "expects three numbers 'x y z'");
+  std::string rest;
+  if (in >> rest) throwInput(file, param, text, "expects three numbers 'x y z'");
+  return v;
+}
+
+}  // namespace
+
+ModalLinks::ModalLinks(const Teuchos::ParameterList& p, const Model& model,
+                       const ModalBasis& basis, const std::string& path) {
+  modes_ = static_cast<int>(basis.eigenvalues.size());
+  const std::string& file = model.inputFile();
+  const ParameterList& links = p.sublist("Shock Links");
+  for (auto it = links.begin(); it != links.end(); ++it) {
+    const std::string lpath = path + "/Shock Links/" + links.name(it);
+    const ParameterList& lp = links.sublist(links.name(it));
+    ModalLink l;
+    l.name = links.name(it);
+    l.node1 = model.nodeSet(lp.get<std::string>("Node 1"), lpath + "/Node 1").nodes.front();
+    const std::string n2 = lp.get<std::string>("Node 2");
+    if (!n2.empty()) l.node2 = model.nodeSet(n2, lpath + "/Node 2").nodes.front();
+    if (l.node2 == l.node1)
+      throwInput(file, lpath + "/Node 2", n2, "is the same node as Node 1",
+                 "link two different nodes, or leave Node 2 empty for a fixed obstacle");
+    l.law.shape = parseObstacleShape(lp.get<std::string>("Obstacle"));
+    const Vec3 axis = parseVector(lp.get<std::string>("Axis"), file, lpath + "/Axis");
+    if (!(dot(axis, axis) > 0)) throwInput(file, lpath + "/Axis", lp.get<std::string>("Axis"), "must not be zero");
+    l.law.frame = obstacleFrame(axis, lp.get<double>("Twist") * M_PI / 180.0);
+    l.law.dist1 = lp.get<double>("DIST_1");
+    l.law.dist2 = lp.get<double>("DIST_2");
+    if (l.law.shape == ObstacleShape::BiCercInt && l.law.dist2 < l.law.dist1)
+      throwInput(file, lpath + "/DIST_2", std::to_string(l.law.dist2),
+                 "is smaller than DIST_1 = " + std::to_string(l.law.dist1),
+                 "BI_CERC_INT needs the outer radius DIST_2 >= the inner radius DIST_1");
+    l.law.normalStiffness = lp.get<double>("Normal Stiffness");
+    l.law.normalDamping = lp.get<double>("Normal Damping");
+    l.law.tangentialStiffness = lp.get<double>("Tangential Stiffness");
+    l.law.tangentialDamping = lp.get<double>("Tangential Damping");
+    l.law.friction = lp.get<double>("Friction Coefficient");
+    const auto& X = model.mesh().coords;
+    l.x1 = X[l.node1];
+    l.x2 = l.node2 >= 0 ? X[l.node2] : X[l.node1];
+    std::vector<long long> dofs;
+    for (int c : {DX, DY, DZ}) dofs.push_back(model.dof(l.node1, c));
+    for (int c : {DX, DY, DZ}) dofs.push_back(l.node2 >= 0 ? model.dof(l.node2, c) : -1);
+    const std::vector<double> rows = gatherRows(*basis.vectors, dofs);
+    l.phi1.assign(rows.begin(), rows.begin() + 3 * modes_);
+    l.phi2.assign(rows.begin() + 3 * modes_, rows.end());
+    links_.push_back(l);
+  }
+  lastGapRate_.assign(links_.size(), 0.0);
+}
+
+Vec3 ModalLinks::relative(const ModalLink& l, const std::vector<double>& x, bool position) const {
+  Vec3 d{0, 0, 0};
+  for (int c = 0; c < 3; ++c) {
+    double s = 0.0;
+    const double* p1 = &l.phi1[c * modes_];
+    const double* p2 = &l.phi2[c * modes_];
+    for (int k = 0; k < modes_; ++k) s += (p2[k] - p1[k]) * x[k];
+    d[c] = s + (position ? l.x2[c] - l.x1[c] : 0.0);
+  }
+  return d;
+}
+
+void ModalLinks::evaluate(double, const std::vector<double>& q, const std::vector<double>& v,
+                          double dt, std::vector<double>& f) {
+  std::fill(f.begin(), f.end(), 0.0);
+  for (size_t i = 0; i < links_.size(); ++i) {
+    ModalLink& l = links_[i];
+    const Vec3 d = relative(l, q, true), w = relative(l, v, false);
+    const double prevPower = l.last.closed ? l.law.normalDamping * lastGapRate_[i] * lastGapRate_[i] : 0.0;
+    l.last = evaluateShock(l.law, d, w, dt, l.state, true);
+    // f_q = Phi2^T F - Phi1^T F
+    for (int c = 0; c < 3; ++c) {
+      const double F = l.last.forceOnNode2[c];
+      if (F == 0.0) continue;
+      const double* p1 = &l.phi1[c * modes_];
+      const double* p2 = &l.phi2[c * modes_];
+      for (int k = 0; k < modes_; ++k) f[k] += (p2[k] - p1[k]) * F;
+    }
+    // Gap rate along the force direction, for the dissipation estimate and nearContact().
+    const double fn = std::sqrt(dot(l.last.forceOnNode2, l.last.forceOnNode2));
+    double rate = 0.0;
+    if (fn > 0) rate = dot(w, l.last.forceOnNode2) / fn;
+    const double power = l.last.closed && l.last.normalForce > 0 ? l.law.normalDamping * rate * rate : 0.0;
+    linkDissipated_ += 0.5 * dt * (prevPower + power);
+    lastGapRate_[i] = rate;
+  }
+}
+
+bool ModalLinks::nearContact(double dt) const {
+  for (size_t i = 0; i < links_.size(); ++i) {
+    const ModalLink& l = links_[i];
+    if (l.last.closed) return true;
+    // Could close within two steps at a closing speed of at least the last gap rate.
+    if (l.last.gap <= 2.0 * dt * std::abs(lastGapRate_[i]) + 1e-15) return true;
+  }
+  return false;
+}
+
+double ModalLinks::linkOmega2Bound() const {
+  double s = 0.0;
+  for (const auto& l : links_) {
+    double flex = 0.0;
+    for (int k = 0; k < modes_; ++k) {
+      double dk2 = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        const double d = l.phi2[c * modes_ + k] - l.phi1[c * modes_ + k];
+        dk2 += d * d;
+      }
+      flex += dk2;
+    }
+    s += l.law.normalStiffness * flex;
+  }
+  return s;
+}
+
+double ModalLinks::linkDampingRatioBound() const {
+  double xi = 0.0;
+  for (const auto& l : links_) {
+    double flex = 0.0;
+    for (int k = 0; k < modes_; ++k)
+      for (int c = 0; c < 3; ++c) {
+        const double d = l.phi2[c * modes_ + k] - l.phi1[c * modes_ + k];
+        flex += d * d;
+      }
+    // Effective mass m = 1/flex; xi = C / (2 sqrt(K m)).
+    if (flex > 0 && l.law.normalStiffness > 0)
+      xi = std::max(xi, l.law.normalDamping / (2.0 * std::sqrt(l.law.normalStiffness / flex)));
+  }
+  return xi;
+}
+
+double ModalLinks::springEnergy() const {
+  double e = 0.0;
+  for (const auto& l : links_) e += l.last.springEnergy;
+  return e;
+}
+
+}  // namespace choc

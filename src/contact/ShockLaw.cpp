@@ -1,0 +1,98 @@
+#include "contact/ShockLaw.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace choc {
+
+const std::vector<std::string>& obstacleShapeNames() {
+  static const std::vector<std::string> names = {"BI_PLAN_Y", "BI_PLAN_Z", "BI_CERCLE",
+                                                 "BI_CERC_INT"};
+  return names;
+}
+
+ObstacleShape parseObstacleShape(const std::string& name) {
+  if (name == "BI_PLAN_Y") return ObstacleShape::BiPlanY;
+  if (name == "BI_PLAN_Z") return ObstacleShape::BiPlanZ;
+  if (name == "BI_CERCLE") return ObstacleShape::BiCercle;
+  if (name == "BI_CERC_INT") return ObstacleShape::BiCercInt;
+  throw std::invalid_argument("unknown obstacle shape '" + name + "'");
+}
+
+namespace {
+Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+}  // namespace
+
+ShockResponse evaluateShock(const ShockLawParameters& p, const Vec3& d, const Vec3& w, double dt,
+                            ShockLawState& state, bool commit) {
+  ShockResponse r;
+  // Outward unit normal m: the direction along which a positive force pushes node 2.
+  Vec3 m{0, 0, 0};
+  double sep = 0.0;  // signed distance measure along m
+  switch (p.shape) {
+    case ObstacleShape::BiPlanY:
+    case ObstacleShape::BiPlanZ: {
+      const Vec3& e = p.shape == ObstacleShape::BiPlanY ? p.frame.e2 : p.frame.e3;
+      const double s = dot(d, e);
+      m = scaled(e, s >= 0 ? 1.0 : -1.0);
+      sep = std::abs(s);
+      r.gap = sep - p.dist1 - p.dist2;
+      break;
+    }
+    case ObstacleShape::BiCercle:
+    case ObstacleShape::BiCercInt: {
+      const Vec3 dp = minus(d, scaled(p.frame.e1, dot(d, p.frame.e1)));
+      const double rr = norm(dp);
+      // At r = 0 the direction is undefined: take e2 (only reached if the nodes coincide).
+      const Vec3 radial = rr > 0 ? scaled(dp, 1.0 / rr) : p.frame.e2;
+      if (p.shape == ObstacleShape::BiCercle) {
+        m = radial;
+        r.gap = rr - p.dist1 - p.dist2;
+      } else {
+        m = scaled(radial, -1.0);  // the outer circle pulls node 2 back towards node 1
+        r.gap = (p.dist2 - p.dist1) - rr;
+      }
+      break;
+    }
+  }
+  const double gapRate = dot(w, m);  // d(delta)/dt for every shape
+  r.closed = r.gap <= 0.0;
+  ShockLawState next = state;
+  if (!r.closed) {
+    next.tangentialSpring = {0, 0, 0};
+    next.closed = false;
+  } else {
+    r.normalForce = std::max(0.0, -p.normalStiffness * r.gap - p.normalDamping * gapRate);
+    Vec3 force = scaled(m, r.normalForce);
+    r.springEnergy = 0.5 * p.normalStiffness * r.gap * r.gap;
+    if (p.tangentialStiffness > 0 || p.tangentialDamping > 0) {
+      const Vec3 wt = minus(w, scaled(m, gapRate));  // tangential relative velocity
+      Vec3 spring = state.closed ? state.tangentialSpring : Vec3{0, 0, 0};
+      spring = plus(spring, scaled(wt, dt));
+      spring = minus(spring, scaled(m, dot(spring, m)));  // stays in the contact plane
+      Vec3 ft = scaled(plus(scaled(spring, p.tangentialStiffness), scaled(wt, p.tangentialDamping)), -1.0);
+      const double ftn = norm(ft);
+      const double limit = p.friction * r.normalForce;
+      if (p.friction > 0 && ftn > limit) {
+        // Slip: the force sits on the Coulomb cone, the spring keeps the elastic part.
+        ft = scaled(ft, limit / ftn);
+        r.sliding = true;
+        if (p.tangentialStiffness > 0)
+          spring = scaled(plus(ft, scaled(wt, p.tangentialDamping)), -1.0 / p.tangentialStiffness);
+      }
+      r.tangentialForce = norm(ft);
+      force = plus(force, ft);
+      r.springEnergy += 0.5 * p.tangentialStiffness * dot(spring, spring);
+      next.tangentialSpring = spring;
+    }
+    next.closed = true;
+    r.forceOnNode2 = force;
+  }
+  if (commit) state = next;
+  return r;
+}
+
+}  // namespace choc

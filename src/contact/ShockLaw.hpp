@@ -1,0 +1,55 @@
+// The nonlinear two-node shock law of the modal transient (DEFI_OBSTACLE shapes).
+// d = x2 - x1 is the relative position of node 2 with respect to node 1 (current
+// coordinates), w = v2 - v1 their relative velocity. The normal force is
+//   F = max(0, -Kn delta - Cn d(delta)/dt)  while delta <= 0  (never tensile),
+// along the shape's normal; tangential stiffness Kt, damping Ct and Coulomb friction mu act
+// in the contact plane while the link is closed (elastic stick, slip at mu F).
+// Shapes (gaps):
+//   BI_PLAN_Y / BI_PLAN_Z: two planes normal to e2 / e3: delta = |d.e| - DIST_1 - DIST_2
+//   BI_CERCLE: two circles in the plane orthogonal to e1: delta = r - DIST_1 - DIST_2
+//   BI_CERC_INT: inner circle (radius DIST_1) in an outer one (DIST_2):
+//                delta = (DIST_2 - DIST_1) - r, the link pulls the nodes together.
+// With one node (a fixed obstacle), node 2 is the obstacle at its origin.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "contact/ObstacleFrame.hpp"
+
+namespace choc {
+
+enum class ObstacleShape { BiPlanY, BiPlanZ, BiCercle, BiCercInt };
+
+ObstacleShape parseObstacleShape(const std::string& name);  // std::invalid_argument if unknown
+const std::vector<std::string>& obstacleShapeNames();
+
+struct ShockLawParameters {
+  ObstacleShape shape = ObstacleShape::BiPlanZ;
+  ObstacleFrame frame{};
+  double dist1 = 0.0, dist2 = 0.0;
+  double normalStiffness = 0.0, normalDamping = 0.0;
+  double tangentialStiffness = 0.0, tangentialDamping = 0.0, friction = 0.0;
+};
+
+// State carried between steps: elastic tangential displacement while closed.
+struct ShockLawState {
+  Vec3 tangentialSpring{0.0, 0.0, 0.0};
+  bool closed = false;
+};
+
+struct ShockResponse {
+  Vec3 forceOnNode2{0.0, 0.0, 0.0};  // node 1 receives the opposite
+  double gap = 0.0;                  // delta
+  double normalForce = 0.0;          // F >= 0
+  double tangentialForce = 0.0;      // |Ft|
+  bool closed = false;               // delta <= 0
+  bool sliding = false;
+  double springEnergy = 0.0;         // 1/2 Kn delta^2 + 1/2 Kt |w_t|^2 while closed
+};
+
+// Evaluates the law at relative position d and velocity w. `dt` advances the tangential
+// spring (w_t += dt * tangential velocity); `state` is updated when `commit` is true.
+ShockResponse evaluateShock(const ShockLawParameters& p, const Vec3& d, const Vec3& w, double dt,
+                            ShockLawState& state, bool commit);
+
+}  // namespace choc

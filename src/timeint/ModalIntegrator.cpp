@@ -1,0 +1,104 @@
+#include "timeint/ModalIntegrator.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace choc {
+
+const std::vector<std::string>& modalSchemeNames() {
+  static const std::vector<std::string> n = {"symplectic Euler", "central differences", "adaptive"};
+  return n;
+}
+
+ModalScheme parseModalScheme(const std::string& name) {
+  if (name == "symplectic Euler") return ModalScheme::SymplecticEuler;
+  if (name == "central differences") return ModalScheme::CentralDifference;
+  if (name == "adaptive") return ModalScheme::Adaptive;
+  throw std::invalid_argument("unknown modal scheme '" + name + "'");
+}
+
+ModalIntegrator::ModalIntegrator(ModalScheme scheme, std::vector<double> omega2,
+                                 std::vector<double> damping, ModalForce& force, int refinement)
+    : scheme_(scheme), w2_(std::move(omega2)), c_(std::move(damping)), force_(force),
+      refinement_(refinement) {}
+
+void ModalIntegrator::initialize(ModalState& s, double t) const {
+  const size_t n = w2_.size();
+  s.t = t;
+  s.f.assign(n, 0.0);
+  s.a.assign(n, 0.0);
+  force_.evaluate(t, s.q, s.v, 0.0, s.f);
+  for (size_t k = 0; k < n; ++k) s.a[k] = s.f[k] - c_[k] * s.v[k] - w2_[k] * s.q[k];
+}
+
+double ModalIntegrator::dampingPower(const ModalState& s) const {
+  double p = 0.0;
+  for (size_t k = 0; k < c_.size(); ++k) p += c_[k] * s.v[k] * s.v[k];
+  return p;
+}
+
+void ModalIntegrator::euler(ModalState& s, double h) const {
+  const size_t n = w2_.size();
+  const double p0 = dampingPower(s);
+  for (size_t k = 0; k < n; ++k) {
+    s.v[k] += h * s.a[k];
+    s.q[k] += h * s.v[k];
+  }
+  s.t += h;
+  force_.evaluate(s.t, s.q, s.v, h, s.f);
+  for (size_t k = 0; k < n; ++k) s.a[k] = s.f[k] - c_[k] * s.v[k] - w2_[k] * s.q[k];
+  dissipated_ += 0.5 * h * (p0 + dampingPower(s));
+}
+
+void ModalIntegrator::central(ModalState& s, double h) const {
+  const size_t n = w2_.size();
+  const double p0 = dampingPower(s);
+  for (size_t k = 0; k < n; ++k) {
+    s.v[k] += 0.5 * h * s.a[k];  // v at n+1/2
+    s.q[k] += h * s.v[k];
+  }
+  s.t += h;
+  force_.evaluate(s.t, s.q, s.v, h, s.f);
+  for (size_t k = 0; k < n; ++k) {
+    // a = f - w2 q - c (v_half + h/2 a), solved for a (diagonal damping).
+    s.a[k] = (s.f[k] - w2_[k] * s.q[k] - c_[k] * s.v[k]) / (1.0 + 0.5 * h * c_[k]);
+    s.v[k] += 0.5 * h * s.a[k];
+  }
+  dissipated_ += 0.5 * h * (p0 + dampingPower(s));
+}
+
+void ModalIntegrator::advance(ModalState& s, double dt, int substeps) const {
+  const double t0 = s.t;
+  const double h = dt / substeps;
+  for (int i = 0; i < substeps; ++i) {
+    const double start = t0 + i * h;
+    s.t = start;
+    switch (scheme_) {
+      case ModalScheme::SymplecticEuler:
+        euler(s, h);
+        ++subSteps_;
+        break;
+      case ModalScheme::CentralDifference:
+        central(s, h);
+        ++subSteps_;
+        break;
+      case ModalScheme::Adaptive: {
+        const int r = force_.nearContact(h) ? refinement_ : 1;
+        for (int j = 0; j < r; ++j) {
+          s.t = start + j * (h / r);
+          central(s, h / r);
+          ++subSteps_;
+        }
+        break;
+      }
+    }
+  }
+  s.t = t0 + dt;  // no drift of the output times
+}
+
+double explicitCriticalStep(double omegaMax, double xiMax) {
+  if (!(omegaMax > 0)) return INFINITY;
+  return 2.0 / omegaMax * (std::sqrt(1.0 + xiMax * xiMax) - xiMax);
+}
+
+}  // namespace choc

@@ -1,0 +1,63 @@
+// Explicit integration of the generalized (modal) system
+//   q'' + c o q' + w2 o q = f(t, q, q')        (c = 2 xi omega, w2 = omega^2, per mode)
+// with a nonlinear generalized force f from the shock links. Schemes:
+//   SymplecticEuler: a_n = f_n - c v_n - w2 q_n; v+ = v + dt a_n; q+ = q + dt v+;
+//                    f_{n+1} = f(q+, v+)   (the reference deck's "Euler" scheme)
+//   CentralDifference: velocity-Verlet form, modal damping implicit (exact for diagonal c),
+//                      link forces at (q_{n+1}, v_{n+1/2})
+//   Adaptive: central differences, each step cut into `refinement` sub-steps while a link is
+//             closed or could close within the step (refines around shocks)
+#pragma once
+#include <string>
+#include <vector>
+
+namespace choc {
+
+class ModalForce {
+ public:
+  virtual ~ModalForce() = default;
+  // Generalized force at (t, q, v); advances the links' internal state (one call per step).
+  virtual void evaluate(double t, const std::vector<double>& q, const std::vector<double>& v,
+                        double dt, std::vector<double>& f) = 0;
+  // True when a link is closed or may close within `dt` of the last evaluated state.
+  virtual bool nearContact(double dt) const = 0;
+};
+
+enum class ModalScheme { SymplecticEuler, CentralDifference, Adaptive };
+ModalScheme parseModalScheme(const std::string& name);  // std::invalid_argument if unknown
+const std::vector<std::string>& modalSchemeNames();
+
+struct ModalState {
+  double t = 0.0;
+  std::vector<double> q, v, a, f;  // f: generalized link force at (q, v)
+};
+
+class ModalIntegrator {
+ public:
+  ModalIntegrator(ModalScheme scheme, std::vector<double> omega2, std::vector<double> damping,
+                  ModalForce& force, int refinement = 10);
+  // Sets q, v at t, evaluates f and a.
+  void initialize(ModalState& s, double t) const;
+  // Advances by dt (in `substeps` equal sub-steps, times the adaptive refinement).
+  void advance(ModalState& s, double dt, int substeps = 1) const;
+  long long subStepsTaken() const { return subSteps_; }
+  // Energy dissipated by modal damping since the start (trapezoidal in time).
+  double modalDissipation() const { return dissipated_; }
+
+ private:
+  void euler(ModalState& s, double h) const;
+  void central(ModalState& s, double h) const;
+  double dampingPower(const ModalState& s) const;
+  ModalScheme scheme_;
+  std::vector<double> w2_, c_;
+  ModalForce& force_;
+  int refinement_;
+  mutable long long subSteps_ = 0;
+  mutable double dissipated_ = 0.0;
+};
+
+// Largest stable step of the undamped explicit schemes for the highest circular frequency
+// omega_max, reduced for the largest damping ratio xi: 2/omega (sqrt(1+xi^2) - xi).
+double explicitCriticalStep(double omegaMax, double xiMax);
+
+}  // namespace choc
