@@ -217,8 +217,9 @@ void ModalTransient::run(RunContext& ctx) {
       row[j++] = probeValue(i, x);
     }
     double ek = 0.0, es = 0.0;
+    const std::vector<double> vs = integrator.synchronizedVelocity(state);
     for (int k = 0; k < nm; ++k) {
-      ek += 0.5 * state.v[k] * state.v[k];
+      ek += 0.5 * vs[k] * vs[k];
       es += 0.5 * w2[k] * state.q[k] * state.q[k];
     }
     const double ec = links.springEnergy();

@@ -26,8 +26,21 @@ const char* kUsage =
     "exit codes: 0 success, 1 input error, 2 numerical failure, 3 a declared check failed,\n"
     "            4 internal error\n";
 
+// One line always: a message relayed from a library (Teuchos, Anasazi) may span several.
 void reportError(const std::string& kind, const std::string& message) {
-  if (isRootRank()) std::cerr << "choc: " << kind << ": " << message << std::endl;
+  std::string line;
+  bool broken = false;  // inside a run of line breaks and the blanks that follow them
+  for (char c : message) {
+    if (c == '\n' || c == '\r') {
+      broken = true;
+      continue;
+    }
+    if (broken && (c == ' ' || c == '\t')) continue;
+    if (broken && !line.empty() && line.back() != ' ') line += ' ';
+    broken = false;
+    line += c;
+  }
+  if (isRootRank()) std::cerr << "choc: " << kind << ": " << line << std::endl;
 }
 
 }  // namespace

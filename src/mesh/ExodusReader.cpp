@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -53,10 +54,12 @@ class Reader {
     check(ex_get_init_ext(file_.id, &p), path_, "the file header");
     if (p.num_dim < 1 || p.num_dim > 3 || p.num_nodes < 0 || p.num_elem < 0 ||
         p.num_elem_blk < 0 || p.num_node_sets < 0 || p.num_side_sets < 0 ||
-        p.num_nodes > fileBytes_ || p.num_elem > fileBytes_)
+        p.num_nodes > fileBytes_ || p.num_elem > fileBytes_ || p.num_elem_blk > fileBytes_ ||
+        p.num_node_sets > fileBytes_ || p.num_side_sets > fileBytes_)
       badFile(path_, "invalid sizes in the file header");
     Mesh mesh;
-    mesh.title = p.title;
+    p.title[MAX_LINE_LENGTH] = '\0';
+    mesh.title = trimRight(p.title);
     mesh.dimension = 3;
     readCoordinates(mesh, static_cast<int>(p.num_dim), static_cast<int>(p.num_nodes));
     readBlocks(mesh, static_cast<int>(p.num_elem_blk));
@@ -122,7 +125,12 @@ class Reader {
                          dim > 2 ? c[2].data() : nullptr),
             path_, "the node coordinates");
     mesh.coords.resize(numNodes);
-    for (int n = 0; n < numNodes; ++n) mesh.coords[n] = {c[0][n], c[1][n], c[2][n]};
+    for (int n = 0; n < numNodes; ++n) {
+      mesh.coords[n] = {c[0][n], c[1][n], c[2][n]};
+      for (double x : mesh.coords[n])
+        if (!std::isfinite(x))
+          badFile(path_, "node " + std::to_string(n + 1) + " has a non-finite coordinate");
+    }
   }
 
   void toZeroBased(std::vector<int>& list, int limit, const std::string& what) {

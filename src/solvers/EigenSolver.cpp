@@ -60,9 +60,10 @@ void fillStart(MultiVector& X) {
 EigenResult solveEigenproblem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
                               const EigenRequest& req) {
   const long long n = static_cast<long long>(K->getGlobalNumRows());
-  if (req.numModes < 1 || req.numModes >= n)
+  // Block Krylov-Schur needs Num Blocks > numModes and Num Blocks <= n - 1 (below).
+  if (req.numModes < 1 || req.numModes > n - 2)
     throw InputError("Modal analysis: 'Number of Modes' = " + std::to_string(req.numModes) +
-                     " must be between 1 and " + std::to_string(n - 1) + " (the model has " +
+                     " must be between 1 and " + std::to_string(n - 2) + " (the model has " +
                      std::to_string(n) + " unknowns)");
   RCP<CrsMatrix> A = addMatrices(1.0, *K, -req.shift, *M);
   auto solver = makeDirectSolver(req.directPackage, 1e-8);
@@ -79,7 +80,9 @@ EigenResult solveEigenproblem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
   Teuchos::ParameterList pl;
   pl.set("Which", std::string("LM"));
   pl.set("Block Size", 1);
-  const int numBlocks = static_cast<int>(std::min<long long>(n, std::max(2 * req.numModes, req.numModes + 20)));
+  // The Krylov basis holds Num Blocks + 1 vectors: at most n - 1 blocks for n unknowns (Anasazi
+  // throws "Orthogonalization constraints not feasible" when the basis reaches n + 1 vectors).
+  const int numBlocks = static_cast<int>(std::min<long long>(n - 1, std::max(2 * req.numModes, req.numModes + 20)));
   pl.set("Num Blocks", numBlocks);
   pl.set("Maximum Restarts", req.maxRestarts);
   pl.set("Convergence Tolerance", req.tolerance);

@@ -37,8 +37,16 @@ double ModalIntegrator::dampingPower(const ModalState& s) const {
   return p;
 }
 
+std::vector<double> ModalIntegrator::synchronizedVelocity(const ModalState& s) const {
+  std::vector<double> v = s.v;
+  if (scheme_ == ModalScheme::SymplecticEuler)
+    for (size_t k = 0; k < v.size(); ++k) v[k] += 0.5 * lastStep_ * s.a[k];
+  return v;
+}
+
 void ModalIntegrator::euler(ModalState& s, double h) const {
   const size_t n = w2_.size();
+  lastStep_ = h;
   const double p0 = dampingPower(s);
   for (size_t k = 0; k < n; ++k) {
     s.v[k] += h * s.a[k];

@@ -41,6 +41,10 @@ class ModalIntegrator {
   // Advances by dt (in `substeps` equal sub-steps, times the adaptive refinement).
   void advance(ModalState& s, double dt, int substeps = 1) const;
   long long subStepsTaken() const { return subSteps_; }
+  // Velocity at s.t: symplectic Euler's v is a half-step velocity (v(t - h/2)), so the
+  // synchronized one is v + h/2 a; the central-difference v is already at s.t. Energies use
+  // it, which makes their error O(dt^2) for every scheme.
+  std::vector<double> synchronizedVelocity(const ModalState& s) const;
   // Energy dissipated by modal damping since the start (trapezoidal in time).
   double modalDissipation() const { return dissipated_; }
 
@@ -53,6 +57,7 @@ class ModalIntegrator {
   ModalForce& force_;
   int refinement_;
   mutable long long subSteps_ = 0;
+  mutable double lastStep_ = 0.0;
   mutable double dissipated_ = 0.0;
 };
 
