@@ -1,5 +1,6 @@
 #include "analysis/ModalTransient.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -262,6 +263,7 @@ void ModalTransient::run(RunContext& ctx) {
 
   const int progressLines = params_.get<int>("Progress Lines");
   const long long progressEvery = progressLines > 0 ? std::max(1LL, nsteps / progressLines) : 0;
+  const auto loopStart = std::chrono::steady_clock::now();
   try {
     record(0);
     for (long long n = 1; n <= nsteps; ++n) {
@@ -284,8 +286,12 @@ void ModalTransient::run(RunContext& ctx) {
   }
   if (history) history->finish();
   if (exo) exo->finish();
-  std::snprintf(buf, sizeof buf, "  %lld steps, %lld sub-steps; history %s.history.csv\n", nsteps,
-                integrator.subStepsTaken(), base.c_str());
+  const double loop =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count();
+  std::snprintf(buf, sizeof buf,
+                "  %lld steps, %lld sub-steps in %.4f s (%.2f us per step, output included); "
+                "history %s.history.csv\n",
+                nsteps, integrator.subStepsTaken(), loop, 1e6 * loop / nsteps, base.c_str());
   log() << buf;
 
   auto results = evaluateDeclaredChecks(params_, rec, name_);
