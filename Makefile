@@ -3,6 +3,8 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc)
 CTEST_ARGS ?=
+# Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
+PYTHON ?= /usr/bin/python3
 
 .PHONY: all deps configure build run test clean
 

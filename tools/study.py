@@ -1,0 +1,334 @@
+#!/usr/bin/python3
+"""The speed-accuracy study (make study).
+
+For each modelisation, sweeps the knobs that set cost and accuracy (time step, elements along
+the bars, number of modes, shock/penalty stiffness, scheme and alpha, linear solver), one at a
+time around the reference settings plus a few combined "accurate" configurations, and records
+for each run the error against the exact solution over the whole history (max and RMS of u_A
+relative to the peak, the worst document row, the contact force) and the cost (wall and CPU
+seconds, peak memory, steps, unknowns, Newton and linear iterations when the log gives them).
+
+usage: tools/study.py [--build build] [--out results/study] [--cases A,B,...] [--quick]
+Writes OUT/study.csv, OUT/pareto_<case>.png and prints a summary; tools/study_report.py
+turns the CSV into OUT/README.md.
+"""
+import argparse
+import copy
+import csv
+import os
+import re
+import subprocess
+import sys
+import time
+import xml.etree.ElementTree as ET
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+COLUMNS = ["case", "parameter", "value", "max_error_rel_peak", "rms_error_rel_peak",
+           "worst_document_row_rel", "force_max_error_rel_peak", "wall_s", "cpu_s",
+           "peak_mem_mb", "steps", "dofs", "newton_iterations", "linear_iterations", "status"]
+
+
+# ---------------------------------------------------------------- XML editing
+def plist(node, name):
+    for child in node:
+        if child.tag == "ParameterList" and child.get("name") == name:
+            return child
+    sub = ET.SubElement(node, "ParameterList", name=name)
+    return sub
+
+
+def set_param(root, path, value, typ=None):
+    """Sets 'A/B/key' (sublists A, B) to value, creating what is missing."""
+    parts = path.split("/")
+    node = root
+    for p in parts[:-1]:
+        node = plist(node, p)
+    key = parts[-1]
+    for child in node:
+        if child.tag == "Parameter" and child.get("name") == key:
+            child.set("value", str(value))
+            if typ:
+                child.set("type", typ)
+            return
+    if typ is None:
+        typ = "double" if isinstance(value, float) else "int" if isinstance(value, int) else "string"
+    ET.SubElement(node, "Parameter", name=key, type=typ, value=str(value))
+
+
+def get_param(root, path):
+    parts = path.split("/")
+    node = root
+    for p in parts[:-1]:
+        nxt = None
+        for child in node:
+            if child.tag == "ParameterList" and child.get("name") == p:
+                nxt = child
+        if nxt is None:
+            return None
+        node = nxt
+    for child in node:
+        if child.tag == "Parameter" and child.get("name") == parts[-1]:
+            return child.get("value")
+    return None
+
+
+def analyses(root):
+    return plist(root, "Analyses")
+
+
+def keep_only(root, names):
+    a = analyses(root)
+    for child in list(a):
+        if child.get("name") not in names:
+            a.remove(child)
+
+
+def analysis_type(root, name):
+    return get_param(root, f"Analyses/{name}/Type")
+
+
+# ---------------------------------------------------------------- running
+def run_choc(build, xml_root, workdir, tag):
+    """Runs choc on xml_root; returns (exit code, log, output dir, wall s, cpu s, peak MB)."""
+    os.makedirs(workdir, exist_ok=True)
+    path = os.path.join(workdir, tag + ".xml")
+    ET.ElementTree(xml_root).write(path)
+    out = os.path.join(workdir, tag)
+    logpath = os.path.join(workdir, tag + ".log")
+    with open(logpath, "w") as logf:
+        t0 = time.monotonic()
+        proc = subprocess.Popen([os.path.join(build, "choc"), "run", path, "-o", out],
+                                stdout=logf, stderr=subprocess.STDOUT)
+        # wait4 gives this child's own CPU time and peak resident memory.
+        _, status, ru = os.wait4(proc.pid, 0)
+        wall = time.monotonic() - t0
+    rc = os.waitstatus_to_exitcode(status)
+    with open(logpath) as f:
+        log = f.read()
+    return rc, log, out, wall, ru.ru_utime + ru.ru_stime, ru.ru_maxrss / 1024.0
+
+
+def parse_results(log, out, analysis):
+    r = {"max_error_rel_peak": "", "rms_error_rel_peak": "", "worst_document_row_rel": "",
+         "force_max_error_rel_peak": "", "steps": "", "dofs": "", "newton_iterations": "",
+         "linear_iterations": ""}
+    m = re.search(r"(\d+) unknowns", log)
+    if m:
+        r["dofs"] = int(m.group(1))
+    m = re.search(r"(\d+) steps", log)
+    if m:
+        r["steps"] = int(m.group(1))
+    m = re.search(r"(\d+) Newton iterations", log)
+    if m:
+        r["newton_iterations"] = int(m.group(1))
+    m = re.search(r"(\d+) linear iterations", log)
+    if m:
+        r["linear_iterations"] = int(m.group(1))
+    for line in log.splitlines():
+        m = re.search(r"exact solution, (\S+?)\s*:\s*max error \S+ \((\S+)% of peak", line)
+        if m and (m.group(1).endswith("force") or "force" in m.group(1)):
+            r["force_max_error_rel_peak"] = float(m.group(2)) / 100
+    checks = os.path.join(out, "checks.csv")
+    if os.path.exists(checks):
+        worst = 0.0
+        with open(checks, newline="") as f:
+            for row in csv.DictReader(f):
+                if row["analysis"] != analysis:
+                    continue
+                if row["quantity"].endswith("max error/peak"):
+                    r["max_error_rel_peak"] = float(row["computed"])
+                elif row["quantity"].endswith("RMS error/peak"):
+                    r["rms_error_rel_peak"] = float(row["computed"])
+                elif row["reference_kind"] == "analytic" and row["criterion"] == "relative":
+                    worst = max(worst, float(row["error"]))
+        r["worst_document_row_rel"] = worst
+    return r
+
+
+# ---------------------------------------------------------------- the cases
+def mesh_for(build, workdir, dim, along, gap_shift=None):
+    """Generates (once) a bar-impact mesh with `along` elements per bar."""
+    os.makedirs(os.path.join(workdir, "meshes"), exist_ok=True)
+    name = f"bars_{dim}d_{along}{'_b' if gap_shift else ''}.exo"
+    path = os.path.join(workdir, "meshes", name)
+    if not os.path.exists(path):
+        cmd = [os.path.join(build, "choc"), "mesh", "--dim", str(dim), "--along1", str(along),
+               "--along2", str(along), "--gap", "1e-5", "--axis", "x" if dim == 1 else "z",
+               "-o", path]
+        if gap_shift:
+            cmd[-2:-2] = ["--shift-a", str(gap_shift)]
+        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    return path
+
+
+def base_input(name):
+    root = ET.parse(os.path.join(TOP, "input", name)).getroot()
+    # The mesh path is relative to input/: make it absolute for the runs written elsewhere.
+    mesh = get_param(root, "Mesh/File")
+    set_param(root, "Mesh/File", os.path.normpath(os.path.join(TOP, "input", mesh)))
+    return root
+
+
+def force_exact_rows(root, analysis):
+    """Makes sure the run reports its exact-solution errors as rows (report-only tolerance)."""
+    for key in ("Max Error Tolerance", "RMS Error Tolerance"):
+        set_param(root, f"Analyses/{analysis}/Exact Solution/{key}", 1e9, "double")
+    # A study run must not fail on the document's rows: we record, not judge.
+    checks = None
+    for child in analyses(root):
+        if child.get("name") == analysis:
+            for sub in child:
+                if sub.get("name") == "Checks":
+                    for row in sub:
+                        set_param(row, "Tolerance", 1e9, "double")
+                        set_param(row, "Criterion", "absolute", "string")
+                        checks = True
+    return checks
+
+
+def modal_case(letter, input_name, analysis, quick):
+    """Sweeps of a modal transient case (A or B)."""
+    base = base_input(input_name)
+    keep_only(base, ["modes", analysis])
+    set_param(base, f"Analyses/{analysis}/Exodus Interval", 0, "int")
+    set_param(base, f"Analyses/{analysis}/Progress Lines", 0, "int")
+    set_param(base, f"Analyses/{analysis}/Stability Check", "substep", "string")
+    a = f"Analyses/{analysis}"
+    shift = -1.1e-5 if letter == "B" else None
+    sweeps = []
+    dts = [2e-6, 1e-6, 5e-7, 2.5e-7] if quick else [2e-6, 1e-6, 5e-7, 2.5e-7, 1.25e-7]
+    sweeps += [("dt", v, [(f"{a}/Time Step", v, "double")]) for v in dts]
+    # The lowest modes: fewer than 23 modes nearest 20 kHz would leave out the rigid-body mode
+    # (0 Hz is farther from the shift than every mode below 28 kHz) and the bar would not move.
+    sweeps += [("modes", v, [("Analyses/modes/Number of Modes", v, "int"),
+                             ("Analyses/modes/Which", "Lowest", "string")])
+               for v in ([10, 20, 40, 80] if quick else [10, 20, 40, 60, 80, 95])]
+    sweeps += [("shock_stiffness", v, [(f"{a}/Shock Links/shock/Normal Stiffness", v, "double")])
+               for v in [5e8, 5e9, 5e10, 5e11]]
+    sweeps += [("scheme", v, [(f"{a}/Scheme", v, "string")])
+               for v in ["symplectic Euler", "central differences", "adaptive"]]
+    alongs = [25, 50, 100] if quick else [25, 50, 100, 200, 400]
+    sweeps += [("elements_along", n, [("MESH", (1, n, shift), None),
+                                      ("Analyses/modes/Number of Modes", int(0.8 * n), "int"),
+                                      ("Analyses/modes/Which", "Lowest", "string")])
+               for n in alongs]
+    # Combined configurations aiming at 0.1% of peak: a stiff, undamped link (compliance),
+    # lumped mass with central differences near the bar's Courant limit (the 1D "magic" step
+    # makes lumped-mass central differences exact for the bar), and every mode kept.
+    for n in ([100, 200] if quick else [100, 200, 400]):
+        h = 1.0 / n
+        c = (2e11 / 7800) ** 0.5
+        dt = 0.5 * h / c
+        # Whole steps up to 1.02e-3 / 2e-3 s
+        end = float(get_param(base, f"{a}/End Time"))
+        steps = int(round(end / dt)) + 1
+        dt = end / steps
+        sweeps.append(("accurate", f"lumped,{n}el,allmodes,K5e11", [
+            ("MESH", (1, n, shift), None),
+            ("LUMPED", None, None),
+            ("Analyses/modes/Number of Modes", 2 * n - 1, "int"),
+            ("Analyses/modes/Which", "Lowest", "string"),
+            (f"{a}/Time Step", dt, "double"),
+            (f"{a}/Scheme", "central differences", "string"),
+            (f"{a}/Shock Links/shock/Normal Stiffness", 5e11, "double"),
+            (f"{a}/Shock Links/shock/Normal Damping", 0.0, "double"),
+            (f"{a}/Modal Damping", 0.0, "double"),
+        ]))
+    return base, analysis, sweeps
+
+
+def implicit_cases(input_name, letter, quick):
+    """One case per Transient analysis of a 3D input (C1, C2, D, E1, E2)."""
+    root = base_input(input_name)
+    names = [c.get("name") for c in analyses(root) if analysis_type(root, c.get("name")) == "Transient"]
+    out = []
+    for i, name in enumerate(names):
+        case = letter + (str(i + 1) if len(names) > 1 else "")
+        base = copy.deepcopy(root)
+        keep_only(base, [name])
+        a = f"Analyses/{name}"
+        set_param(base, f"{a}/Exodus Interval", 0, "int")
+        sweeps = []
+        sweeps += [("dt", v, [(f"{a}/Time Step", v, "double")])
+                   for v in ([2e-6, 1e-6, 5e-7] if quick else [4e-6, 2e-6, 1e-6, 5e-7, 2.5e-7])]
+        sweeps += [("elements_along", n, [("MESH", (3, n, None), None)])
+                   for n in ([25, 50, 100] if quick else [25, 50, 100, 200])]
+        sweeps += [("alpha", v, [(f"{a}/Alpha", v, "double")]) for v in [0.0, -0.1, -0.2, -1.0 / 3.0]]
+        method = get_param(base, f"{a}/Contact/Method")
+        if method == "Penalty":
+            key = next((k for k in ["Penalty Stiffness", "Stiffness"]
+                        if get_param(base, f"{a}/Contact/{k}") is not None), "Penalty Stiffness")
+            sweeps += [("penalty_stiffness", v, [(f"{a}/Contact/{key}", v, "double")])
+                       for v in [1e8, 1e9, 1e10, 1e11, 1e12]]
+        sweeps += [("linear_solver", v, [(f"{a}/Linear Solver/Method", v, "string")])
+                   for v in ["Direct", "CG", "GMRES"]]
+        out.append((case, base, name, sweeps))
+    return out
+
+
+def apply(build, workdir, base, changes):
+    root = copy.deepcopy(base)
+    for path, value, typ in changes:
+        if path == "MESH":
+            dim, along, shift = value
+            set_param(root, "Mesh/File", mesh_for(build, workdir, dim, along, shift))
+        elif path == "LUMPED":
+            for blk in plist(plist(root, "Model"), "Blocks"):
+                set_param(blk, "Mass", "lumped", "string")
+        else:
+            set_param(root, path, value, typ)
+    return root
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=os.path.join(TOP, "build"))
+    ap.add_argument("--out", default=os.path.join(TOP, "results", "study"))
+    ap.add_argument("--cases", default="A,B,C,D,E")
+    ap.add_argument("--quick", action="store_true", help="fewer points (for a smoke test)")
+    a = ap.parse_args()
+    wanted = set(a.cases.split(","))
+    os.makedirs(a.out, exist_ok=True)
+    work = os.path.join(a.out, "runs")
+    plan = []
+    if "A" in wanted:
+        b, an, sw = modal_case("A", "sdnl111a.xml", "plans_z", a.quick)
+        plan.append(("A", b, an, sw))
+    if "B" in wanted:
+        b, an, sw = modal_case("B", "sdnl111b.xml", "cerc_int", a.quick)
+        plan.append(("B", b, an, sw))
+    for letter in "CDE":
+        if letter in wanted and os.path.exists(os.path.join(TOP, "input", f"sdnl111{letter.lower()}.xml")):
+            plan += implicit_cases(f"sdnl111{letter.lower()}.xml", letter, a.quick)
+    rows = []
+    for case, base, analysis, sweeps in plan:
+        if not force_exact_rows(base, analysis) and get_param(base, f"Analyses/{analysis}/Exact Solution/Enabled") != "true":
+            print(f"study: case {case} has no exact-solution comparison; skipped", file=sys.stderr)
+            continue
+        for parameter, value, changes in sweeps:
+            root = apply(a.build, work, base, changes)
+            tag = re.sub(r"[^A-Za-z0-9_.-]+", "_", f"{case}_{parameter}_{value}")
+            rc, log, out, wall, cpu, mem = run_choc(a.build, root, work, tag)
+            res = parse_results(log, out, analysis)
+            status = {0: "ok", 1: "input error", 2: "numerical failure", 3: "checks failed"}.get(rc, f"exit {rc}")
+            if rc != 0:
+                first = next((l for l in log.splitlines() if "error" in l or "failure" in l), "")
+                status += ": " + first.strip()[:120]
+            row = {"case": case, "parameter": parameter, "value": value, "wall_s": round(wall, 4),
+                   "cpu_s": round(cpu, 4), "peak_mem_mb": round(mem, 1), "status": status, **res}
+            rows.append(row)
+            print(f"{case:3s} {parameter:18s} {str(value):36s} max {res['max_error_rel_peak']!s:>10.10} "
+                  f"rms {res['rms_error_rel_peak']!s:>10.10} wall {wall:7.3f} s  {status[:40]}", flush=True)
+    path = os.path.join(a.out, "study.csv")
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=COLUMNS)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: r.get(k, "") for k in COLUMNS})
+    print(f"study: {len(rows)} runs -> {path}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
