@@ -1,5 +1,6 @@
 #include "analysis/AnalysisRegistry.hpp"
 
+#include "analysis/ImplicitTransient.hpp"
 #include "analysis/ModalAnalysis.hpp"
 #include "analysis/ModalTransient.hpp"
 #include "input/Errors.hpp"
@@ -9,6 +10,11 @@ namespace choc {
 
 const std::vector<AnalysisType>& analysisTypes() {
   static const std::vector<AnalysisType> types = {
+      {"Transient", "direct implicit transient: Newmark family (HHT, generalized-alpha), contact",
+       &ImplicitTransient::parameters,
+       [](const std::string& n, const Teuchos::ParameterList& p, const std::string& f) {
+         return std::unique_ptr<Analysis>(new ImplicitTransient(n, p, f));
+       }},
       {"Modal", "natural modes by Anasazi shift-invert (K x = lambda M x)",
        &ModalAnalysis::parameters,
        [](const std::string& n, const Teuchos::ParameterList& p, const std::string& f) {

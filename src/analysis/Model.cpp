@@ -44,7 +44,7 @@ BeamSection beamSection(const Teuchos::ParameterList& sec, const std::string& fi
     s.torsionConstant = sec.get<double>("Torsion Constant");
     for (const char* k : {"Area", "Iy", "Iz", "Torsion Constant"})
       if (!(sec.get<double>(k) > 0))
-        throwInput(file, path + "/" + k, std::to_string(sec.get<double>(k)),
+        throwInput(file, path + "/" + k, entryToString(sec.getEntry(k)),
                    "a beam block needs a positive value",
                    "set 'Square Side' or all of Area, Iy, Iz, Torsion Constant");
   }
@@ -179,6 +179,10 @@ RCP<const CrsMatrix> Model::stiffness() {
 RCP<const CrsMatrix> Model::mass() {
   if (M_.is_null()) M_ = assembler_->mass();
   return M_;
+}
+
+RCP<const CrsMatrix> Model::mass(const std::vector<char>& massless) const {
+  return assembler_->mass(massless);
 }
 
 }  // namespace choc

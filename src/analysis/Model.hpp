@@ -28,6 +28,10 @@ class Model {
   const std::string& inputFile() const { return inputFile_; }
   RCP<const CrsMatrix> stiffness();  // assembled once, cached
   RCP<const CrsMatrix> mass();
+  // The mass with the flagged nodes (one entry per mesh node) massless and their elements' mass
+  // redistributed onto the other nodes (Assembler::mass(massless)); not cached. Throws
+  // std::invalid_argument when an element has every node flagged.
+  RCP<const CrsMatrix> mass(const std::vector<char>& massless) const;
   // Material of the block containing the node set's first node (for reference solutions).
   const Material& materialOfBlock(int block) const { return blockMaterial_[block]; }
 

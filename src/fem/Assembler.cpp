@@ -1,6 +1,8 @@
 #include "fem/Assembler.hpp"
 
 #include <algorithm>
+#include <limits>
+#include <stdexcept>
 #include <utility>
 
 #include <Tpetra_CrsMatrix.hpp>
@@ -40,6 +42,56 @@ std::vector<std::uint8_t> Assembler::carriedComponents(const Mesh& mesh,
   return carried;
 }
 
+void redistributeElementMass(const std::vector<Point3>& x, const std::vector<char>& massless, int nc,
+                             MassKind kind, DenseMatrix& Me) {
+  const int nn = static_cast<int>(x.size());
+  // to[k]: the nodes (and weights, summing to 1) whose motion node k follows in the mass.
+  std::vector<std::vector<std::pair<int, double>>> to(nn);
+  bool any = false;
+  for (int k = 0; k < nn; ++k)
+    if (massless[k]) any = true;
+    else to[k] = {{k, 1.0}};
+  if (!any) return;
+  for (int k = 0; k < nn; ++k) {
+    if (!massless[k]) continue;
+    double dmin = std::numeric_limits<double>::infinity();
+    std::vector<double> d(nn, dmin);
+    for (int j = 0; j < nn; ++j) {
+      if (massless[j]) continue;
+      d[j] = 0.0;
+      for (int c = 0; c < 3; ++c) d[j] += (x[k][c] - x[j][c]) * (x[k][c] - x[j][c]);
+      dmin = std::min(dmin, d[j]);
+    }
+    if (!(dmin < std::numeric_limits<double>::infinity()))
+      throw std::invalid_argument(
+          "every node of an element lies on a contact surface: its mass cannot be redistributed "
+          "(refine the mesh so that each element touching a contact surface has a node off it)");
+    int count = 0;
+    for (int j = 0; j < nn; ++j) count += d[j] <= dmin * (1 + 1e-8);
+    for (int j = 0; j < nn; ++j)
+      if (d[j] <= dmin * (1 + 1e-8)) to[k].emplace_back(j, 1.0 / count);
+  }
+  const int n = nn * nc;
+  // R = Me T, then Me <- T^T R; T maps (node j, comp c) of the reduced motion to (node k, c).
+  DenseMatrix R(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int l = 0; l < n; ++l) {
+      const double m = Me(i, l);
+      if (m == 0.0) continue;
+      for (const auto& [j, w] : to[l / nc]) R(i, j * nc + l % nc) += m * w;
+    }
+  DenseMatrix out(n, n);
+  for (int i = 0; i < n; ++i)
+    for (const auto& [j, w] : to[i / nc])
+      for (int b = 0; b < n; ++b) out(j * nc + i % nc, b) += w * R(i, b);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b)
+      Me(a, b) = kind == MassKind::Lumped ? 0.0 : 0.5 * (out(a, b) + out(b, a));
+  if (kind == MassKind::Lumped)  // keep a lumped matrix diagonal: row sums
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) Me(a, a) += out(a, b);
+}
+
 RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn) const {
   const int owned = dofs_.numOwned();
   const long long first = dofs_.firstOwned();
@@ -60,7 +112,7 @@ RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn) const {
       x[k] = mesh_.coords[conn[k]];
       for (int j = 0; j < nc; ++j) gdof[k * nc + j] = dofs_.dof(conn[k], comps[j]);
     }
-    fn(kernel, blocks_[b].mass, x, Ke);
+    fn(kernel, blocks_[b].mass, x, conn, Ke);
     const int n = static_cast<int>(gdof.size());
     for (int i = 0; i < n; ++i) {
       const long long gi = gdof[i];
@@ -103,13 +155,29 @@ RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn) const {
 }
 
 RCP<CrsMatrix> Assembler::stiffness() const {
-  return assemble([](const ElementKernel& k, MassKind, const std::vector<Point3>& x,
+  return assemble([](const ElementKernel& k, MassKind, const std::vector<Point3>& x, const int*,
                      DenseMatrix& Ke) { k.stiffness(x, Ke); });
 }
 
 RCP<CrsMatrix> Assembler::mass() const {
-  return assemble([](const ElementKernel& k, MassKind m, const std::vector<Point3>& x,
+  return assemble([](const ElementKernel& k, MassKind m, const std::vector<Point3>& x, const int*,
                      DenseMatrix& Me) { k.mass(x, m, Me); });
 }
+
+RCP<CrsMatrix> Assembler::mass(const std::vector<char>& massless) const {
+  if (massless.size() != static_cast<size_t>(mesh_.numNodes()))
+    throw std::invalid_argument("mass redistribution: the massless-node mask has " +
+                                std::to_string(massless.size()) + " entries for " +
+                                std::to_string(mesh_.numNodes()) + " nodes");
+  std::vector<char> local;
+  return assemble([&](const ElementKernel& k, MassKind m, const std::vector<Point3>& x,
+                      const int* conn, DenseMatrix& Me) {
+    k.mass(x, m, Me);
+    local.resize(x.size());
+    for (size_t a = 0; a < x.size(); ++a) local[a] = massless[conn[a]];
+    redistributeElementMass(x, local, static_cast<int>(k.components().size()), m, Me);
+  });
+}
+
 
 }  // namespace choc

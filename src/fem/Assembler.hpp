@@ -19,6 +19,20 @@ struct BlockPhysics {
   MassKind mass = MassKind::Consistent;
 };
 
+// Mass redistribution (Khenous, Laborde, Renard 2008, "Mass redistribution method for finite
+// element contact problems in elastodynamics"): the element mass matrix Me (nodes x, nc
+// components per node, node-major) becomes T^T Me T, where T copies every node's motion except
+// that of a massless node, which follows the mean of its nearest non-massless nodes of the
+// element (a partition of unity with non-negative weights). Hence: the massless nodes' rows and
+// columns are zero; the element mass 1_c^T Me 1_c of every component c is kept exactly (T 1 =
+// 1); the matrix stays symmetric positive semi-definite; a lumped matrix is re-lumped (row sums)
+// so it stays diagonal. Where the nearest node is the translate of the massless node along the
+// element edge across the surface (extruded meshes, as SDNL111's), the centre of mass is kept
+// in the surface's plane; across it, the element's share moves to the far nodes (by at most
+// one element size). Throws std::invalid_argument when every node of the element is massless.
+void redistributeElementMass(const std::vector<Point3>& x, const std::vector<char>& massless,
+                             int nc, MassKind kind, DenseMatrix& Me);
+
 class Assembler {
  public:
   Assembler(const Mesh& mesh, const DofMap& dofs, std::vector<BlockPhysics> blocks,
@@ -27,6 +41,12 @@ class Assembler {
   RCP<const Map> map() const { return map_; }
   RCP<CrsMatrix> stiffness() const;
   RCP<CrsMatrix> mass() const;
+  // The mass with the nodes flagged in `massless` (one entry per mesh node) carrying none: each
+  // element touching them has its mass redistributed onto its other nodes
+  // (redistributeElementMass). Computed element by element like mass(), so it is the same on
+  // any number of ranks. Throws std::invalid_argument for a wrong-sized mask or an element
+  // whose nodes are all massless.
+  RCP<CrsMatrix> mass(const std::vector<char>& massless) const;
   // Components each node carries through the elements attached to it (bit mask per node).
   static std::vector<std::uint8_t> carriedComponents(const Mesh& mesh,
                                                      const std::vector<BlockPhysics>& blocks);
@@ -34,8 +54,8 @@ class Assembler {
   const std::vector<int>& localElements() const { return elements_; }
 
  private:
-  using ElementMatrixFn =
-      std::function<void(const ElementKernel&, MassKind, const std::vector<Point3>&, DenseMatrix&)>;
+  using ElementMatrixFn = std::function<void(const ElementKernel&, MassKind, const std::vector<Point3>&,
+                                             const int* conn, DenseMatrix&)>;
   RCP<CrsMatrix> assemble(const ElementMatrixFn& fn) const;
 
   const Mesh& mesh_;

@@ -1,0 +1,181 @@
+#include "contact/ContactManager.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
+
+namespace choc {
+
+ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const Map> map,
+                               const std::vector<PairDefinition>& pairs,
+                               std::unique_ptr<ContactMethod> method)
+    : pairs_(pairs), method_(std::move(method)), map_(std::move(map)) {
+  for (size_t p = 0; p < pairs_.size(); ++p) {
+    PairingResult res;
+    try {
+      res = pairNodeToFace(mesh, pairs_[p], static_cast<int>(p));
+    } catch (const std::exception& e) {
+      throw std::invalid_argument("contact pair '" + pairs_[p].name + "': " + e.what());
+    }
+    unpaired_ += static_cast<int>(res.unpaired.size());
+    for (const SlaveProjection& sp : res.projections) {
+      ContactConstraint c;
+      c.geometry = sp;
+      c.owner = dofs.ownerOfNode(sp.slaveNode);
+      std::vector<std::pair<GO, double>> t;
+      for (int d = 0; d < 3; ++d) {
+        const double n = sp.normal[d];
+        if (std::abs(n) < 1e-14) continue;
+        const long long ds = dofs.dof(sp.slaveNode, d);
+        if (ds >= 0) t.push_back({GO(ds), n});
+        for (int i = 0; i < 4; ++i) {
+          const long long dm = dofs.dof(sp.masterNodes[i], d);
+          if (dm >= 0 && sp.weights[i] != 0.0) t.push_back({GO(dm), -sp.weights[i] * n});
+        }
+      }
+      std::sort(t.begin(), t.end());
+      for (const auto& e : t) {  // merge repeated DOFs
+        if (!c.terms.empty() && c.terms.back().first == e.first) c.terms.back().second += e.second;
+        else c.terms.push_back(e);
+      }
+      constraints_.push_back(c);
+    }
+  }
+  for (const auto& c : constraints_)
+    for (const auto& t : c.terms) contactDofs_.push_back(t.first);
+  std::sort(contactDofs_.begin(), contactDofs_.end());
+  contactDofs_.erase(std::unique(contactDofs_.begin(), contactDofs_.end()), contactDofs_.end());
+  for (const auto& c : constraints_) {
+    std::vector<std::pair<int, double>> lt;
+    for (const auto& t : c.terms)
+      lt.push_back({int(std::lower_bound(contactDofs_.begin(), contactDofs_.end(), t.first) -
+                        contactDofs_.begin()),
+                    t.second});
+    localTerms_.push_back(lt);
+  }
+  status_.assign(constraints_.size(), 0);
+  lambda_.assign(constraints_.size(), 0.0);
+  save();
+}
+
+std::vector<double> ContactManager::contactValues(const Vector& u) const {
+  const size_t n = contactDofs_.size();
+  std::vector<double> mine(n, 0.0), all(n, 0.0);
+  auto data = u.getData();
+  for (size_t k = 0; k < n; ++k) {
+    const LO l = map_->getLocalElement(contactDofs_[k]);
+    if (l != Teuchos::OrdinalTraits<LO>::invalid()) mine[k] = data[l];
+  }
+  if (n > 0)
+    Teuchos::reduceAll<int, double>(*map_->getComm(), Teuchos::REDUCE_SUM, int(n), mine.data(),
+                                    all.data());
+  return all;
+}
+
+std::vector<double> ContactManager::gaps(const Vector& u) const {
+  const std::vector<double> x = contactValues(u);
+  std::vector<double> g(constraints_.size());
+  for (size_t s = 0; s < constraints_.size(); ++s) {
+    double v = constraints_[s].geometry.gap0;
+    for (const auto& [k, coeff] : localTerms_[s]) v += coeff * x[k];
+    g[s] = v;
+  }
+  return g;
+}
+
+std::vector<double> ContactManager::forces(const Vector& u) const {
+  const std::vector<double> g = gaps(u);
+  std::vector<double> f(g.size());
+  for (size_t s = 0; s < g.size(); ++s) f[s] = method_->force(g[s], lambda_[s], status_[s]);
+  return f;
+}
+
+double ContactManager::rowResidual(int s, double gap) const {
+  return status_[s] ? -scale_ * gap : lambda_[s];
+}
+
+double ContactManager::addForces(const Vector& u, Vector& out) const {
+  const std::vector<double> g = gaps(u);
+  auto data = out.getDataNonConst();
+  const int rank = map_->getComm()->getRank();
+  double local = 0.0;
+  for (size_t s = 0; s < constraints_.size(); ++s) {
+    const double f = method_->force(g[s], lambda_[s], status_[s]);
+    if (f != 0.0)
+      for (const auto& [dof, coeff] : constraints_[s].terms) {
+        const LO l = map_->getLocalElement(dof);
+        if (l != Teuchos::OrdinalTraits<LO>::invalid()) data[l] -= f * coeff;
+      }
+    if (method_->hasMultipliers() && constraints_[s].owner == rank) {
+      const double r = rowResidual(int(s), g[s]);
+      local += r * r;
+    }
+  }
+  double global = 0.0;
+  Teuchos::reduceAll<int, double>(*map_->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return std::sqrt(global);
+}
+
+void ContactManager::applyCorrection(const std::vector<double>& d) {
+  for (size_t s = 0; s < lambda_.size(); ++s) lambda_[s] += scale_ * d[s];
+}
+
+void ContactManager::initialize(const Vector& u) {
+  const std::vector<double> g = gaps(u);
+  for (size_t s = 0; s < g.size(); ++s) {
+    lambda_[s] = 0.0;
+    status_[s] = method_->isActive(g[s], 0.0, false);
+  }
+  ++version_;
+  save();
+}
+
+StatusUpdate ContactManager::updateStatus(const Vector& u) {
+  const std::vector<double> g = gaps(u);
+  StatusUpdate up;
+  int changedLocal = 0;
+  for (size_t s = 0; s < g.size(); ++s) {
+    const bool now = method_->isActive(g[s], lambda_[s], status_[s]);
+    if (now != bool(status_[s])) {
+      changedLocal = 1;
+      (now ? up.entered : up.left)++;
+      status_[s] = now;
+      if (!now) lambda_[s] = 0.0;
+    }
+  }
+  // Every rank computed the same statuses from the same gaps; agree anyway.
+  int changed = 0;
+  Teuchos::reduceAll<int, int>(*map_->getComm(), Teuchos::REDUCE_MAX, changedLocal,
+                               Teuchos::outArg(changed));
+  up.changed = changed != 0;
+  if (up.changed) ++version_;
+  up.active = activeCount();
+  return up;
+}
+
+void ContactManager::save() {
+  savedStatus_ = status_;
+  savedLambda_ = lambda_;
+}
+
+void ContactManager::restore() {
+  if (status_ != savedStatus_) ++version_;
+  status_ = savedStatus_;
+  lambda_ = savedLambda_;
+}
+
+int ContactManager::activeCount() const {
+  return static_cast<int>(std::count(status_.begin(), status_.end(), 1));
+}
+
+double ContactManager::energy(const Vector& u) const {
+  const std::vector<double> g = gaps(u);
+  double e = 0.0;
+  for (size_t s = 0; s < g.size(); ++s) e += method_->energy(g[s], lambda_[s], status_[s]);
+  return e;
+}
+
+}  // namespace choc

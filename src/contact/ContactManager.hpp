@@ -1,0 +1,91 @@
+// The contact manager: an explicit active-set object (STYLE; deal.II step-41/42). It holds
+// the node-to-face pairs of every contact pair, the linearised gaps g_s(u) = g0_s + B_s u,
+// each slave node's status (active or not) and pressure unknown lambda_s [N, compression
+// positive], and the enforcement method. It applies the contact forces, decides statuses by
+// the method's complementarity test after each Newton solve, and reports whether the active
+// set changed on any rank. Every rank holds all the constraints (a few per contact face):
+// values at the contact DOFs are summed across ranks, so every rank sees the same gaps,
+// statuses and pressures whatever the number of ranks.
+#pragma once
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "contact/ContactMethod.hpp"
+#include "contact/ContactPairing.hpp"
+#include "fem/DofMap.hpp"
+#include "fem/TpetraTypes.hpp"
+#include "mesh/Mesh.hpp"
+
+namespace choc {
+
+struct ContactConstraint {
+  SlaveProjection geometry;
+  std::vector<std::pair<GO, double>> terms;  // B_s: (global DOF, coefficient)
+  int owner = 0;                             // rank owning the slave node (multiplier row)
+};
+
+struct StatusUpdate {
+  bool changed = false;
+  int active = 0, entered = 0, left = 0;
+};
+
+class ContactManager {
+ public:
+  // Throws std::invalid_argument (pairing problems) naming the pair and side set.
+  ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const Map> map,
+                 const std::vector<PairDefinition>& pairs, std::unique_ptr<ContactMethod> method);
+
+  const ContactMethod& method() const { return *method_; }
+  int numConstraints() const { return static_cast<int>(constraints_.size()); }
+  const std::vector<ContactConstraint>& constraints() const { return constraints_; }
+  int numPairs() const { return static_cast<int>(pairs_.size()); }
+  const PairDefinition& pair(int p) const { return pairs_[p]; }
+  int unpairedNodes() const { return unpaired_; }
+
+  // Gaps at u (the same array on every rank).
+  std::vector<double> gaps(const Vector& u) const;
+  // Normal force of each node at u with the current statuses and pressures.
+  std::vector<double> forces(const Vector& u) const;
+  // out -= f_s B_s^T on the rows this rank owns; returns the norm of the constraint
+  // equations' residual (multiplier rows, force units; 0 for penalty).
+  double addForces(const Vector& u, Vector& out) const;
+  // Right-hand side of constraint row s at u (force units): active -scale g_s, else lambda_s.
+  double rowResidual(int s, double gap) const;
+  // lambda += scale * dLambdaScaled (the multiplier unknowns are lambda / scale).
+  void applyCorrection(const std::vector<double>& dLambdaScaled);
+
+  void initialize(const Vector& u);          // statuses from the gaps at u, lambda = 0
+  StatusUpdate updateStatus(const Vector& u);  // complementarity test, all ranks agree
+  void save();
+  void restore();
+
+  const std::vector<char>& status() const { return status_; }
+  const std::vector<double>& pressures() const { return lambda_; }  // lambda_s [N]
+  int activeCount() const;
+  double energy(const Vector& u) const;
+  int statusVersion() const { return version_; }  // bumped whenever a status changes
+
+  // Scale of the multiplier rows (a typical diagonal of the effective matrix), so that the
+  // saddle-point system is balanced; set once before the first solve.
+  void setScale(double s) { scale_ = s; }
+  double scale() const { return scale_; }
+  RCP<const Comm> comm() const { return map_->getComm(); }
+
+ private:
+  std::vector<double> contactValues(const Vector& u) const;  // u at contactDofs_, replicated
+  std::vector<PairDefinition> pairs_;
+  std::unique_ptr<ContactMethod> method_;
+  RCP<const Map> map_;
+  std::vector<ContactConstraint> constraints_;
+  std::vector<GO> contactDofs_;                // sorted distinct DOFs of all B_s
+  std::vector<std::vector<std::pair<int, double>>> localTerms_;  // index into contactDofs_
+  std::vector<char> status_, savedStatus_;
+  std::vector<double> lambda_, savedLambda_;
+  double scale_ = 1.0;
+  int unpaired_ = 0;
+  int version_ = 0;
+};
+
+}  // namespace choc

@@ -1,0 +1,56 @@
+// Node-to-face pairing: each node of the slave side set is projected onto the QUAD4 faces of
+// the master side set (bilinear surface, closest point by Gauss-Newton on the face's
+// parameters); the face containing the projection with the smallest distance wins. The
+// faces need not match node for node. Gives, per slave node, the master face nodes and their
+// shape-function weights at the projection, the master's outward unit normal there, the
+// reference gap g0 = (x_s - x_m) . n (positive when open) and the slave node's tributary
+// area (integral of its shape function over the slave faces). Reference configuration only:
+// the displacements are small (linear elasticity), so the pairing is computed once.
+#pragma once
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "mesh/Mesh.hpp"
+
+namespace choc {
+
+struct PairDefinition {
+  std::string name;           // e.g. "interface" (history columns '<name>:force', '<name>:gap')
+  std::string masterSideSet;  // e.g. CNT_POU1
+  std::string slaveSideSet;   // e.g. CNT_POU2
+  double searchDistance = 0;  // largest |g0| accepted [m]
+};
+
+struct SlaveProjection {
+  int pair = 0;
+  int slaveNode = -1;
+  int masterFace = -1;              // index into the master side set
+  std::array<int, 4> masterNodes{}; // QUAD4 nodes of that face
+  std::array<double, 4> weights{};  // bilinear shape functions at the projection
+  double xi = 0, eta = 0;           // projection parameters in [-1, 1]^2
+  Point3 normal{};                  // master outward unit normal at the projection
+  double gap0 = 0;                  // reference gap [m]
+  double area = 0;                  // slave tributary area [m^2]
+};
+
+struct PairingResult {
+  std::vector<SlaveProjection> projections;  // paired slave nodes, ascending node number
+  std::vector<int> unpaired;                 // slave nodes projecting onto no master face
+};
+
+// Geometry of one QUAD4 face: position and tangents at (xi, eta).
+struct QuadPoint {
+  Point3 x{}, dxi{}, deta{};
+  std::array<double, 4> N{};
+};
+QuadPoint evaluateQuad(const std::array<Point3, 4>& corners, double xi, double eta);
+// Closest point of x on the bilinear face; returns false when Gauss-Newton does not converge.
+bool projectOnQuad(const std::array<Point3, 4>& corners, const Point3& x, double& xi, double& eta);
+
+// Throws std::invalid_argument naming the side set when it is missing, not made of QUAD4
+// faces (HEX8 sides), or when no slave node pairs.
+PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pairIndex);
+
+}  // namespace choc

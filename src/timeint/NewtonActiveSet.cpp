@@ -1,0 +1,104 @@
+#include "timeint/NewtonActiveSet.hpp"
+
+#include <cmath>
+#include <algorithm>
+#include <cstdio>
+
+#include <Tpetra_Vector.hpp>
+
+namespace choc {
+
+namespace {
+
+std::string fmt(const char* f, double a, double b) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, f, a, b);
+  return buf;
+}
+
+}  // namespace
+
+NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoefficients& c,
+                                   const ResidualFunction& residual, Vector& u,
+                                   const NewtonSettings& s) {
+  NewtonOutcome out;
+  Vector r(op.map()), du(op.map());
+  for (int pass = 1; pass <= s.maxActiveSetIterations; ++pass) {
+    out.activeSetIterations = pass;
+    bool converged = false;
+    double lastIncrement = -1.0;
+    for (int it = 0;; ++it) {
+      const ResidualNorms n = residual(u, r);
+      out.residual = n.residual;
+      out.reference = n.reference;
+      if (!std::isfinite(n.residual)) {
+        out.message = "the residual is not finite";
+        return out;
+      }
+      const double stepNorm = n.incrementScale;
+      const bool resOk = n.residual <= s.residualTolerance * n.reference || n.residual <= 1e-12 * n.roundoff;
+      const bool incOk = lastIncrement >= 0 &&
+                         lastIncrement <= std::max(s.incrementTolerance * stepNorm, 1e-13 * n.solutionNorm);
+      if (resOk && (incOk || lastIncrement == 0.0 || (lastIncrement < 0 && n.residual == 0.0))) {
+        converged = true;
+        break;
+      }
+      if (it >= s.maxIterations) {
+        out.message = "Newton did not converge in " + std::to_string(s.maxIterations) +
+                      " iterations (" +
+                      fmt("residual %.3e for a reference %.3e", n.residual, n.reference) + ")";
+        return out;
+      }
+      const CorrectionStatus cs = op.solveCorrection(c, u, r, du);
+      ++out.iterations;
+      out.krylovIterations += cs.iterations;
+      if (cs.refactored) ++out.refactorizations;
+      if (!cs.ok) {
+        out.message = "linear solve failed: " + cs.message;
+        return out;
+      }
+      u.update(1.0, du, 1.0);
+      lastIncrement = du.norm2();
+      if (!std::isfinite(lastIncrement)) {
+        out.message = "the Newton correction is not finite";
+        return out;
+      }
+    }
+    if (!converged) break;
+    const ConstraintUpdate upd = op.updateConstraints(u);
+    if (!upd.changed) {
+      out.converged = true;
+      return out;
+    }
+  }
+  out.message = "the active set did not settle in " + std::to_string(s.maxActiveSetIterations) +
+                " iterations";
+  return out;
+}
+
+NewtonOutcome solveStatic(SecondOrderOperator& op, Vector& u, double t, const NewtonSettings& s) {
+  Vector zero(op.map()), fc(op.map()), load(op.map()), r2(op.map());
+  EffectiveCoefficients c;
+  c.cd = 1.0;
+  op.applyForces(zero, zero, t, load);  // -f_ext(t)
+  const double loadNorm = load.norm2();
+  auto residual = [&](const Vector& x, Vector& r) {
+    op.applyForces(x, zero, t, r);
+    fc.putScalar(0.0);
+    const double cons = op.addConstraintForces(x, fc);
+    ResidualNorms n;
+    n.reference = std::max({r.norm2(), fc.norm2(), loadNorm});
+    r.update(1.0, fc, 1.0);
+    const double rn = r.norm2();
+    n.residual = std::sqrt(rn * rn + cons * cons);
+    op.applyForces(x, zero, t, r2);  // K x - f_ext
+    r2.update(-1.0, load, 1.0);       // K x
+    n.roundoff = r2.norm2();
+    n.incrementScale = x.norm2();
+    n.solutionNorm = n.incrementScale;
+    return n;
+  };
+  return solveNewtonActiveSet(op, c, residual, u, s);
+}
+
+}  // namespace choc

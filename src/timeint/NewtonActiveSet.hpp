@@ -1,0 +1,57 @@
+// Newton iterations on R(u) = 0 with the constraint status frozen, then a fixed point on the
+// status (active set): the status is re-evaluated after each converged Newton solve and the
+// solve repeated until it no longer changes (on any rank). Convergence of Newton needs both
+//   ||R|| <= residualTolerance * reference   (reference: largest of the force terms' norms),
+//            or ||R|| <= 1e-12 * (round-off floor of the system, see ResidualNorms)
+//   ||du|| <= max(incrementTolerance * incrementScale, 1e-13 ||u||) on the last correction
+//   (see ResidualNorms).
+// Failure (iterations exhausted, a failed linear solve, a non-finite value) is returned,
+// never thrown, so that a step controller can react.
+#pragma once
+#include <functional>
+#include <string>
+
+#include "timeint/SecondOrderOperator.hpp"
+
+namespace choc {
+
+struct NewtonSettings {
+  double residualTolerance = 1e-8;
+  double incrementTolerance = 1e-8;
+  int maxIterations = 10;
+  int maxActiveSetIterations = 20;
+};
+
+struct NewtonOutcome {
+  bool converged = false;
+  int iterations = 0;           // Newton corrections (linear solves), all active-set passes
+  int activeSetIterations = 0;  // Newton solves (status evaluations)
+  int refactorizations = 0;
+  int krylovIterations = 0;
+  double residual = 0.0, reference = 0.0;
+  std::string message;  // why it failed
+};
+
+// r = R(u) including constraint forces; returns {||r|| including the constraint equations,
+// reference force norm}.
+struct ResidualNorms {
+  double residual = 0.0, reference = 0.0;
+  // Round-off floor: the size of the largest term of the effective system at u (e.g.
+  // ||c_a M u||); a residual below 1e-12 of it is at the linear solver's round-off, whatever
+  // the reference (rigid motion, loads that cancel).
+  double roundoff = 0.0;
+  // Size of the solution's change that increments are measured against: ||u_{n+1} - u_n||
+  // for a step, ||u|| for a static solve.
+  double incrementScale = 0.0;
+  double solutionNorm = 0.0;  // ||u||: increments below 1e-13 of it are round-off
+};
+using ResidualFunction = std::function<ResidualNorms(const Vector& u, Vector& r)>;
+
+NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoefficients& c,
+                                   const ResidualFunction& residual, Vector& u,
+                                   const NewtonSettings& s);
+
+// Static equilibrium F(u, 0, t) + f_c(u) = 0 (W = K + constraint block), from u.
+NewtonOutcome solveStatic(SecondOrderOperator& op, Vector& u, double t, const NewtonSettings& s);
+
+}  // namespace choc

@@ -1,0 +1,73 @@
+// The interface a second-order integrator sees (STYLE: "the integrator sees an operator,
+// never an element"): for  M a + C v + K u + f_c(u) = f_ext(t)  it gives
+//   - the inertia M a and the weighted forces F(u, v, t) = C v + K u - f_ext(t);
+//   - the constraint (contact) forces f_c(u) at the end of the step, which the schemes do
+//     not weight (a constraint holds at t_{n+1}), with the residual of the constraint
+//     equations when the operator carries extra unknowns (Lagrange multipliers);
+//   - Newton corrections with the effective matrix W = c_a M + c_v C + c_d K (+ the
+//     constraint block), which the operator may factor once per key (c_a, c_v, c_d, status);
+//   - a fixed point on the constraint status (active set) after each converged Newton solve.
+// Vectors live on map(); the operator keeps its own extra unknowns and their saved copies.
+#pragma once
+#include <string>
+
+#include "fem/TpetraTypes.hpp"
+
+namespace choc {
+
+// W = ca M + cv C + cd K.
+struct EffectiveCoefficients {
+  double ca = 0.0, cv = 0.0, cd = 0.0;
+  bool operator==(const EffectiveCoefficients& o) const {
+    return ca == o.ca && cv == o.cv && cd == o.cd;
+  }
+};
+
+struct CorrectionStatus {
+  bool ok = false;
+  int iterations = 0;        // Krylov iterations (0: direct)
+  bool refactored = false;   // the effective matrix was (re)factored for this solve
+  std::string message;       // why it failed
+};
+
+struct ConstraintUpdate {
+  bool changed = false;      // some status changed (on any rank)
+  int active = 0;            // active constraints after the update
+  std::string summary;       // e.g. "3 -> 4 active"
+};
+
+class SecondOrderOperator {
+ public:
+  virtual ~SecondOrderOperator() = default;
+  virtual RCP<const Map> map() const = 0;
+
+  // out = M a
+  virtual void applyMass(const Vector& a, Vector& out) = 0;
+  // out = C v + K u - f_ext(t)
+  virtual void applyForces(const Vector& u, const Vector& v, double t, Vector& out) = 0;
+  // out += f_c(u) with the current extra unknowns and frozen status; returns the norm of
+  // the constraint equations' residual in force units (0 when there are none).
+  virtual double addConstraintForces(const Vector& u, Vector& out) = 0;
+  // Solves [W + constraint block] (du, dz) = -(r, r_z) and updates the operator's own extra
+  // unknowns z by dz; du is returned. r is the full residual (with constraint forces).
+  virtual CorrectionStatus solveCorrection(const EffectiveCoefficients& c, const Vector& u,
+                                           const Vector& r, Vector& du) = 0;
+  // Initial acceleration from equilibrium: solves M a = -r (r = F(u0, v0, t0) + f_c(u0)); by
+  // default with W = M (plus the constraint block). An operator whose M is singular (massless
+  // DOFs) overrides it.
+  virtual CorrectionStatus solveInitialAcceleration(const Vector& u, const Vector& r, Vector& a) {
+    EffectiveCoefficients mass;
+    mass.ca = 1.0;
+    return solveCorrection(mass, u, r, a);
+  }
+  // Re-evaluates the constraint status at u (after a converged Newton solve).
+  virtual ConstraintUpdate updateConstraints(const Vector& u) = 0;
+  // Initial status from u (before the first step).
+  virtual void initializeConstraints(const Vector& /*u*/) {}
+  // The extra unknowns and statuses of the last accepted step: saved on acceptance,
+  // restored when a step fails.
+  virtual void saveState() {}
+  virtual void restoreState() {}
+};
+
+}  // namespace choc

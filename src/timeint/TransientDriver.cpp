@@ -1,0 +1,155 @@
+#include "timeint/TransientDriver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <Teuchos_TimeMonitor.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "input/Errors.hpp"
+
+namespace choc {
+
+TransientDriver::TransientDriver(SecondOrderOperator& op, NewmarkFamily scheme,
+                                 TransientSettings settings)
+    : op_(op), scheme_(std::move(scheme)), s_(std::move(settings)) {
+  auto map = op_.map();
+  for (RCP<Vector>* v : {&u0_, &v0_, &a0_, &Ma0_, &F0_, &u1_, &v1_, &a1_, &uTilde_, &vTilde_,
+                         &inertia_, &forces_, &fc_, &change_})
+    *v = rcp(new Vector(map));
+}
+
+void TransientDriver::notify(const StepInfo& info) {
+  for (StepObserver* o : observers_) o->stepAccepted(info, *u0_, *v0_, *a0_);
+}
+
+NewtonOutcome TransientDriver::attempt(double t, double dt) {
+  const double beta = scheme_.beta(), gamma = scheme_.gamma();
+  const double af = scheme_.alphaF(), am = scheme_.alphaM();
+  const double t1 = t + dt;
+  // Predictors: u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n, v~ = v_n + dt (1 - gamma) a_n.
+  uTilde_->update(1.0, *u0_, dt, *v0_, 0.0);
+  uTilde_->update(dt * dt * (0.5 - beta), *a0_, 1.0);
+  vTilde_->update(1.0, *v0_, dt * (1 - gamma), *a0_, 0.0);
+  // Start Newton from a_{n+1} = a_n.
+  u1_->update(1.0, *uTilde_, beta * dt * dt, *a0_, 0.0);
+  const EffectiveCoefficients c = scheme_.effectiveCoefficients(dt);
+  op_.applyMass(*u1_, *inertia_);
+  const double roundoff = c.ca * inertia_->norm2();  // ||c_a M u_{n+1}||: largest term of W u
+  auto residual = [&](const Vector& u, Vector& r) {
+    a1_->update(1.0 / (beta * dt * dt), u, -1.0 / (beta * dt * dt), *uTilde_, 0.0);
+    v1_->update(1.0, *vTilde_, gamma * dt, *a1_, 0.0);
+    op_.applyMass(*a1_, *inertia_);
+    inertia_->update(am, *Ma0_, 1 - am);
+    op_.applyForces(u, *v1_, t1, *forces_);
+    forces_->update(af, *F0_, 1 - af);
+    fc_->putScalar(0.0);
+    const double cons = op_.addConstraintForces(u, *fc_);
+    ResidualNorms n;
+    n.reference = std::max({inertia_->norm2(), forces_->norm2(), fc_->norm2()});
+    r.update(1.0, *inertia_, 1.0, *forces_, 0.0);
+    r.update(1.0, *fc_, 1.0);
+    const double rn = r.norm2();
+    n.residual = std::sqrt(rn * rn + cons * cons);
+    n.roundoff = roundoff;
+    change_->update(1.0, u, -1.0, *u0_, 0.0);
+    n.incrementScale = change_->norm2();
+    n.solutionNorm = u.norm2();
+    return n;
+  };
+  NewtonOutcome out = solveNewtonActiveSet(op_, c, residual,
+                                           *u1_, s_.newton);
+  if (out.converged) {  // the state that goes with the converged u_{n+1}
+    a1_->update(1.0 / (beta * dt * dt), *u1_, -1.0 / (beta * dt * dt), *uTilde_, 0.0);
+    v1_->update(1.0, *vTilde_, gamma * dt, *a1_, 0.0);
+  }
+  return out;
+}
+
+TransientSummary TransientDriver::run(Vector& u, Vector& v) {
+  TransientSummary sum;
+  const double dt = s_.timeStep, t0 = s_.startTime;
+  if (!(dt > 0) || !(s_.endTime > t0))
+    throw std::invalid_argument("TransientDriver: needs dt > 0 and endTime > startTime");
+  u0_->assign(u);
+  v0_->assign(v);
+  // Initial acceleration from equilibrium: M a0 = -(F(u0, v0, t0) + f_c(u0)).
+  {
+    op_.initializeConstraints(*u0_);
+    Vector r(op_.map());
+    op_.applyForces(*u0_, *v0_, t0, r);
+    fc_->putScalar(0.0);
+    op_.addConstraintForces(*u0_, *fc_);
+    r.update(1.0, *fc_, 1.0);
+    const CorrectionStatus cs = op_.solveInitialAcceleration(*u0_, r, *a0_);
+    if (cs.refactored) ++sum.refactorizations;
+    if (!cs.ok)
+      throw NumericalError(s_.label + ": initial acceleration: linear solve failed: " + cs.message);
+    op_.saveState();
+  }
+  op_.applyMass(*a0_, *Ma0_);
+  op_.applyForces(*u0_, *v0_, t0, *F0_);
+  sum.smallestStep = dt;
+  StepInfo info;
+  info.time = t0;
+  notify(info);
+
+  const double span = s_.endTime - t0;
+  const long long nominal = std::max(1LL, (long long)std::ceil(span / dt - 1e-9));
+  double t = t0;
+  for (long long n = 1; n <= nominal; ++n) {
+    const double target = n == nominal ? s_.endTime : t0 + double(n) * dt;
+    double h = target - t;
+    int cuts = 0;
+    while (t < target) {
+      const bool finalSub = h >= target - t - 1e-9 * dt;
+      // A whole nominal step uses dt itself (not target - t, which differs by round-off and
+      // would change the effective matrix's key).
+      if (finalSub) h = std::abs(target - t - dt) <= 1e-9 * dt ? dt : target - t;
+      NewtonOutcome out = attempt(t, h);
+      sum.newtonIterations += out.iterations;
+      sum.activeSetIterations += out.activeSetIterations;
+      sum.refactorizations += out.refactorizations;
+      sum.krylovIterations += out.krylovIterations;
+      if (!out.converged) {
+        op_.restoreState();
+        ++sum.failedSteps;
+        if (cuts >= s_.maxCuts) {
+          char buf[200];
+          std::snprintf(buf, sizeof buf, "step from t = %.6e s with dt = %.3e s failed after %d cut(s) of dt: ",
+                        t, h, cuts);
+          throw NumericalError(s_.label + ": " + buf + out.message +
+                               (s_.maxCuts == 0 ? " (dt cutting is off: set 'Maximum Step Cuts')"
+                                                : " (raise 'Maximum Step Cuts' or lower 'Time Step')"));
+        }
+        ++cuts;
+        h *= s_.cutFactor;
+        continue;
+      }
+      // Accept: n+1 becomes n.
+      t = finalSub ? target : t + h;
+      std::swap(u0_, u1_);
+      std::swap(v0_, v1_);
+      std::swap(a0_, a1_);
+      op_.saveState();
+      op_.applyMass(*a0_, *Ma0_);
+      op_.applyForces(*u0_, *v0_, t, *F0_);
+      ++sum.steps;
+      sum.maxNewtonPerStep = std::max(sum.maxNewtonPerStep, out.iterations);
+      sum.smallestStep = std::min(sum.smallestStep, h);
+      info.step = sum.steps;
+      info.time = t;
+      info.dt = h;
+      info.newton = out;
+      info.cuts = cuts;
+      info.last = n == nominal && t >= target;
+      notify(info);
+    }
+  }
+  u.assign(*u0_);
+  v.assign(*v0_);
+  return sum;
+}
+
+}  // namespace choc

@@ -1,0 +1,77 @@
+// The step loop of a Newmark-family integration over a SecondOrderOperator: initial
+// acceleration from equilibrium, one Newton/active-set solve per step, step hooks for
+// output and energies, and the step controller: a failed step (Newton or active set) is
+// retried with dt cut by 'cutFactor' up to 'maxCuts' times inside the nominal step, then the
+// run stops with a NumericalError naming the time and the reason. A step that did not
+// converge is never passed to the observers.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "timeint/NewmarkFamily.hpp"
+#include "timeint/NewtonActiveSet.hpp"
+
+namespace choc {
+
+struct TransientSettings {
+  double startTime = 0.0;
+  double endTime = 0.0;
+  double timeStep = 0.0;
+  int maxCuts = 0;         // cuts of dt allowed inside one nominal step
+  double cutFactor = 0.5;  // dt <- cutFactor * dt on failure
+  NewtonSettings newton;
+  std::string label = "transient";  // for messages
+};
+
+struct StepInfo {
+  int step = 0;           // accepted steps so far (0: the initial state)
+  double time = 0.0;
+  double dt = 0.0;        // 0 for the initial state
+  NewtonOutcome newton;   // of this step
+  int cuts = 0;           // dt cuts made inside the current nominal step
+  bool last = false;      // the final step of the run
+};
+
+class StepObserver {
+ public:
+  virtual ~StepObserver() = default;
+  // Called for the initial state (step 0) and after every accepted step.
+  virtual void stepAccepted(const StepInfo& info, const Vector& u, const Vector& v,
+                            const Vector& a) = 0;
+};
+
+struct TransientSummary {
+  int steps = 0;
+  int newtonIterations = 0;
+  int activeSetIterations = 0;
+  int refactorizations = 0;  // counted by the operator's solves (effective matrix changes)
+  int krylovIterations = 0;
+  int failedSteps = 0;       // attempts that were cut
+  int maxNewtonPerStep = 0;
+  double smallestStep = 0.0;
+};
+
+class TransientDriver {
+ public:
+  TransientDriver(SecondOrderOperator& op, NewmarkFamily scheme, TransientSettings settings);
+  void addObserver(StepObserver* o) { observers_.push_back(o); }
+  // Integrates from (u, v) at startTime to endTime; u and v hold the final state on return.
+  // Throws NumericalError when a step fails beyond the allowed cuts.
+  TransientSummary run(Vector& u, Vector& v);
+  const NewmarkFamily& scheme() const { return scheme_; }
+
+ private:
+  // One attempt from state n to t + dt; returns the outcome, leaves u1, v1, a1.
+  NewtonOutcome attempt(double t, double dt);
+  void notify(const StepInfo& info);
+
+  SecondOrderOperator& op_;
+  NewmarkFamily scheme_;
+  TransientSettings s_;
+  std::vector<StepObserver*> observers_;
+  // State at t_n and its weighted terms, and the trial state at t_{n+1}.
+  RCP<Vector> u0_, v0_, a0_, Ma0_, F0_, u1_, v1_, a1_;
+  RCP<Vector> uTilde_, vTilde_, inertia_, forces_, fc_, change_;
+};
+
+}  // namespace choc

@@ -1,0 +1,76 @@
+// Node-to-face pairing on generated two-bar scenes: outward normals, reference gaps,
+// bilinear weights on non-matching faces, tributary areas.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "contact/ContactPairing.hpp"
+#include "mesh/BarImpactMesh.hpp"
+
+namespace choc {
+namespace {
+
+Mesh scene(int across1, int across2, double gap) {
+  BarImpactOptions o;
+  o.dimension = 3;
+  o.axis = 'z';
+  o.along1 = o.along2 = 2;
+  o.across1 = across1;
+  o.across2 = across2;
+  o.gap = gap;
+  return generateBarImpactMesh(o);
+}
+
+TEST(ContactPairing, MatchingFacesPairNodeToNode) {
+  const Mesh m = scene(1, 1, 1e-5);
+  const PairingResult r = pairNodeToFace(m, {"ifc", "CNT_POU1", "CNT_POU2", 1e-3}, 0);
+  ASSERT_EQ(r.projections.size(), 4u);
+  EXPECT_TRUE(r.unpaired.empty());
+  double area = 0;
+  for (const auto& p : r.projections) {
+    EXPECT_NEAR(p.normal[2], -1.0, 1e-14);  // bar 1's contact face looks towards -z
+    EXPECT_NEAR(p.gap0, 1e-5, 1e-15);
+    double wmax = 0;
+    for (int i = 0; i < 4; ++i) wmax = std::max(wmax, p.weights[i]);
+    EXPECT_NEAR(wmax, 1.0, 1e-12);  // on a master node
+    area += p.area;
+  }
+  EXPECT_NEAR(area, 4e-4, 1e-18);
+}
+
+TEST(ContactPairing, NonMatchingFacesUseBilinearWeights) {
+  const Mesh m = scene(1, 3, 2e-5);  // 16 slave nodes on one master face
+  const PairingResult r = pairNodeToFace(m, {"ifc", "CNT_POU1", "CNT_POU2", 1e-3}, 0);
+  ASSERT_EQ(r.projections.size(), 16u);
+  double area = 0;
+  for (const auto& p : r.projections) {
+    double sum = 0;
+    Point3 x{};
+    for (int i = 0; i < 4; ++i) {
+      sum += p.weights[i];
+      for (int d = 0; d < 3; ++d) x[d] += p.weights[i] * m.coords[p.masterNodes[i]][d];
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-14);
+    // The projection lies straight above the slave node, at the gap.
+    EXPECT_NEAR(x[0], m.coords[p.slaveNode][0], 1e-12);
+    EXPECT_NEAR(x[1], m.coords[p.slaveNode][1], 1e-12);
+    EXPECT_NEAR(p.gap0, 2e-5, 1e-15);
+    area += p.area;
+  }
+  EXPECT_NEAR(area, 4e-4, 1e-17);
+}
+
+TEST(ContactPairing, MissingSideSetIsNamed) {
+  const Mesh m = scene(1, 1, 1e-5);
+  try {
+    pairNodeToFace(m, {"ifc", "CNT_POU9", "CNT_POU2", 1e-3}, 0);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("CNT_POU9"), std::string::npos);
+  }
+  // Beyond the search distance nothing pairs.
+  EXPECT_THROW(pairNodeToFace(m, {"ifc", "CNT_POU1", "CNT_POU2", 1e-6}, 0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace choc
