@@ -1,0 +1,179 @@
+# Command-line tests: one test per error message (exit code 1, exactly one line on stderr that
+# names the file, the parameter and the problem), and the commands that must succeed.
+# Bad inputs live in tests/cli/inputs/: each bad_*.xml is base.xml with one thing changed.
+# The table of messages is tests/cli/ERRORS.md.
+set(CLI_INPUTS ${CMAKE_CURRENT_LIST_DIR}/inputs)
+set(CLI_SCRIPTS ${CMAKE_CURRENT_LIST_DIR}/scripts)
+set(CLI_WORK ${CMAKE_CURRENT_BINARY_DIR}/work)
+
+# choc_cli_test(<name> RC <code> [STDERR <regex>] [ONE_LINE] [STDOUT <regex>...] ARGS <args>...)
+# Regexes may not contain ";" (the list separator) nor an unbalanced "[" or "]" (CMake does not
+# split lists inside brackets): match those characters with ".".
+function(choc_cli_test name)
+  cmake_parse_arguments(T "ONE_LINE" "RC;STDERR" "STDOUT;ARGS" ${ARGN})
+  string(REPLACE ";" "@@" args "${T_ARGS}")
+  string(REPLACE ";" "@@" outre "${T_STDOUT}")
+  set(one 0)
+  if(T_ONE_LINE)
+    set(one 1)
+  endif()
+  add_test(NAME cli.${name}
+           COMMAND ${CMAKE_COMMAND} -DCHOC=$<TARGET_FILE:choc> "-DARGS=${args}" -DRC=${T_RC}
+                   "-DSTDERR_REGEX=${T_STDERR}" -DONE_LINE=${one} "-DSTDOUT_REGEX=${outre}"
+                   -DWORKDIR=${CLI_WORK}/${name} -P ${CLI_SCRIPTS}/expect.cmake)
+  set_tests_properties(cli.${name} PROPERTIES TIMEOUT 60 LABELS cli)
+endfunction()
+
+# An input error from `choc <command> <input>`: "choc: input error: <path to input>: <tail>".
+function(choc_cli_input_error name command input tail)
+  choc_cli_test(error.${name} RC 1 ONE_LINE
+                STDERR "^choc: input error: .*${input}: ${tail}"
+                ARGS ${command} ${CLI_INPUTS}/${input})
+endfunction()
+
+# A command-line error: "choc: input error: <tail>" for `choc <args...>`.
+function(choc_cli_command_error name tail)
+  choc_cli_test(error.${name} RC 1 ONE_LINE STDERR "^choc: input error: ${tail}" ARGS ${ARGN})
+endfunction()
+
+# --- the input file itself --------------------------------------------------------------
+choc_cli_input_error(missing_input_file run no_such_input.xml
+  "input file not found. check the path")
+choc_cli_test(error.input_is_directory RC 1 ONE_LINE
+  STDERR "^choc: input error: .*inputs: is a directory, not an input file"
+  ARGS check ${CLI_INPUTS})
+choc_cli_input_error(empty_file check bad_empty.xml
+  "input file is empty. it must hold a <ParameterList>")
+choc_cli_input_error(malformed_xml check bad_malformed.xml
+  "malformed XML: XML parse error at line 6: file ended before closing element 'ParameterList' from line 1. fix the XML")
+choc_cli_input_error(not_a_parameter_list check bad_not_parameterlist.xml
+  "malformed XML parameter list: XMLParameterListReader expected tag ParameterList, found html")
+
+# --- keys, types, values ----------------------------------------------------------------
+choc_cli_input_error(unknown_key_top_level check bad_unknown_top_key.xml
+  "parameter 'Meshes': unknown parameter. did you mean 'Mesh'\\?")
+choc_cli_input_error(unknown_key_in_sublist check bad_unknown_sub_key.xml
+  "parameter 'Model/Materials/steel/Densty': unknown parameter. did you mean 'Density'\\?")
+choc_cli_input_error(duplicate_key check bad_duplicate_key.xml
+  "parameter 'Model/Materials/steel/Density': is given twice in the same list. keep only one")
+choc_cli_input_error(parameter_instead_of_sublist check bad_parameter_not_sublist.xml
+  "parameter 'Mesh' = '[^']*sdnl111_1d.exo': must be a sublist \\(<ParameterList name=\"Mesh\">\\)")
+choc_cli_input_error(wrong_type_string_for_double check bad_wrong_type.xml
+  "parameter 'Model/Materials/steel/Density' = 'heavy': has type string, expected double. write type=\"double\"")
+choc_cli_input_error(wrong_type_double_for_int check bad_int_type.xml
+  "parameter 'Analyses/modes/Number of Modes' = '5.5': has type double, expected int. write type=\"int\"")
+choc_cli_input_error(not_a_number check bad_double_value.xml
+  "parameter 'Model/Materials/steel/Density' = '7800kg': is not a number")
+choc_cli_input_error(not_a_bool check bad_bool_value.xml
+  "parameter 'Analyses/modes/Write Exodus' = 'nope': is not a bool. write true or false")
+choc_cli_input_error(unknown_xml_type check bad_unknown_type.xml
+  "parameter 'Model/Materials/steel/Density': unknown type 'duble'. use type=")
+choc_cli_input_error(negative_density check bad_negative_density.xml
+  "parameter 'Model/Materials/steel/Density' = '-7800': out of range. valid: a number in \\(0, inf.")
+choc_cli_input_error(zero_youngs_modulus check bad_zero_young.xml
+  "parameter 'Model/Materials/steel/Young's Modulus' = '0': out of range. valid: a number in \\(0, inf.")
+choc_cli_input_error(poisson_ratio_one_half check bad_poisson_half.xml
+  "parameter 'Model/Materials/steel/Poisson's Ratio' = '0.5': out of range. valid: a number in \\(-1, 0.5\\)")
+choc_cli_input_error(negative_section_side check bad_negative_section.xml
+  "parameter 'Model/Blocks/POU1/Section/Square Side' = '-0.02': out of range. valid: a number in .0, inf.")
+choc_cli_input_error(zero_section check bad_zero_section.xml
+  "parameter 'Model/Blocks/POU1/Section/Area' = '0': a beam block needs a positive value. set 'Square Side' or all of Area")
+choc_cli_input_error(missing_required_key check bad_missing_mesh_file.xml
+  "parameter 'Mesh/File': is required but missing. add it")
+choc_cli_input_error(no_analysis check bad_no_analysis.xml
+  "parameter 'Analyses': no analysis to run. add at least one sublist with a Type")
+choc_cli_input_error(unknown_analysis_type check bad_unknown_analysis_type.xml
+  "parameter 'Analyses/modes/Type' = 'Modale': unknown analysis type. did you mean 'Modal'\\? valid: ")
+choc_cli_input_error(invalid_choice check bad_choice.xml
+  "parameter 'Analyses/modes/Which' = 'lowest': is not a valid choice. did you mean 'Lowest'\\? valid: one of 'Lowest', 'Nearest Shift'")
+
+# --- the input against the mesh ----------------------------------------------------------
+choc_cli_input_error(mesh_file_missing check bad_mesh_missing.xml
+  "parameter 'Mesh/File' = 'no_such_mesh.exo': cannot use the mesh: [^ ]*no_such_mesh.exo: mesh file not found")
+choc_cli_input_error(mesh_file_not_exodus check bad_mesh_not_exodus.xml
+  "parameter 'Mesh/File' = 'not_exodus.txt': cannot use the mesh: [^ ]*not_exodus.txt: not a readable Exodus II file")
+choc_cli_input_error(node_set_not_in_mesh check bad_nodeset_unknown.xml
+  "parameter 'Model/Dirichlet/clamped end D/Node Set' = 'DD': no node set of that name in the mesh. did you mean 'D'\\? node sets: A, B, C, D, POU1, POU2")
+choc_cli_input_error(block_not_in_mesh check bad_block_unknown.xml
+  "parameter 'Model/Blocks/BAR3': no element block of that name in the mesh. blocks: POU1, POU2")
+choc_cli_input_error(mesh_block_without_entry check bad_block_missing.xml
+  "parameter 'Model/Blocks': mesh block 'POU2' has no entry. add <ParameterList name=\"POU2\">")
+choc_cli_input_error(material_not_defined check bad_material_unknown.xml
+  "parameter 'Model/Blocks/POU1/Material' = 'stel': no material of that name. did you mean 'steel'\\?")
+choc_cli_input_error(bad_component_name check bad_component.xml
+  "parameter 'Model/Dirichlet/clamped end D/Components' = 'DQ': unknown component 'DQ' \\(valid: DX, DY, DZ")
+choc_cli_input_error(bad_active_component check bad_active_component.xml
+  "parameter 'Model/Active Components' = 'DX DW': unknown component 'DW'")
+choc_cli_input_error(no_unknowns check bad_no_unknowns.xml
+  "parameter 'Model/Active Components' = 'DX': the model has no unknowns")
+# Known only once the model is built: `choc run` (101 unknowns, at most 99 modes).
+choc_cli_input_error(too_many_modes run bad_too_many_modes.xml
+  "parameter 'Analyses/modes/Number of Modes' = '100': more modes than the model's 101 unknowns allow. ask for at most 99")
+
+# --- the command line -------------------------------------------------------------------
+choc_cli_command_error(mesh_zero_length
+  "choc mesh: parameter '--length1' = '0': must be a finite number > 0" mesh --length1 0 -o m.exo)
+choc_cli_command_error(mesh_negative_length
+  "choc mesh: parameter '--length2' = '-1': must be a finite number > 0" mesh --length2 -1 -o m.exo)
+choc_cli_command_error(mesh_zero_width
+  "choc mesh: parameter '--width' = '0': must be a finite number > 0" mesh --dim 3 --width 0 -o m.exo)
+choc_cli_command_error(mesh_zero_elements
+  "choc mesh: parameter '--along1' = '0': must be an integer >= 1" mesh --along1 0 -o m.exo)
+choc_cli_command_error(mesh_bad_axis
+  "choc mesh: parameter '--axis' = 'w': must be x, y or z" mesh --axis w -o m.exo)
+choc_cli_command_error(mesh_bad_dimension
+  "choc mesh: parameter '--dim' = '2': must be 1 or 3" mesh --dim 2 -o m.exo)
+choc_cli_command_error(mesh_not_a_number
+  "choc mesh: parameter '--length1' = 'abc': is not a number" mesh --length1 abc -o m.exo)
+choc_cli_command_error(mesh_unknown_option
+  "choc mesh: parameter '--lenght1': unknown option. run 'choc mesh --help'" mesh --lenght1 1 -o m.exo)
+choc_cli_command_error(mesh_option_without_value
+  "choc mesh: parameter '--along1': needs a value" mesh --along1)
+choc_cli_command_error(mesh_no_output
+  "choc mesh: parameter '-o': no output file given. add -o FILE.exo" mesh --dim 3)
+choc_cli_command_error(unknown_command
+  "unknown command 'frobnicate'. valid: run, check, parameters, mesh, --help" frobnicate)
+choc_cli_command_error(run_without_input
+  "choc run: missing INPUT.xml \\(usage: choc run INPUT.xml\\)" run)
+choc_cli_command_error(check_without_input
+  "choc check: missing INPUT.xml" check)
+choc_cli_command_error(run_two_inputs
+  "choc run: one input file expected, got 'a.xml' and 'b.xml'" run a.xml b.xml)
+choc_cli_command_error(run_unknown_option
+  "choc run: unknown option '-x'. valid: -o DIR" run -x)
+choc_cli_command_error(run_output_option_without_directory
+  "choc run: option -o needs a directory" run ${CLI_INPUTS}/base.xml -o)
+choc_cli_command_error(parameters_with_argument
+  "choc parameters: takes no argument \\(got 'extra'\\)" parameters extra)
+# No command at all: the usage text on stderr (several lines) and exit code 1.
+choc_cli_test(no_command RC 1 STDERR "^usage: choc <command>")
+
+# --- what must succeed ----------------------------------------------------------------
+# The base of every bad_*.xml is valid: each bad input fails for its one change only.
+choc_cli_test(check_base_input RC 0 STDOUT "base.xml is valid: 102 nodes, 101 unknowns"
+              ARGS check ${CLI_INPUTS}/base.xml)
+choc_cli_test(check_sdnl111a RC 0
+              STDOUT "sdnl111a.xml is valid: 102 nodes, 101 unknowns"
+                     "Mass : string = consistent"
+                     "Shear Coefficient : double = 0.833333"
+                     "Residual Tolerance : double = 1e-06"
+                     "Direct Package : string = KLU2"
+              ARGS check ${CMAKE_SOURCE_DIR}/input/sdnl111a.xml)
+choc_cli_test(parameters RC 0
+              STDOUT "Young's Modulus \\(double, required. a number in \\(0, inf.\\)"
+                     "Density \\(double, required"
+                     "Mass \\(string, default 'consistent'. one of 'consistent', 'lumped'\\)"
+                     "Node Set \\(string, required"
+                     "Number of Modes \\(int, default 10"
+                     "Analyses/<name> with Type = 'Modal'"
+              ARGS parameters)
+add_test(NAME cli.parameters_documented
+         COMMAND sh ${CLI_SCRIPTS}/parameters_documented.sh $<TARGET_FILE:choc>
+                 ${CMAKE_SOURCE_DIR}/input/sdnl111a.xml ${CLI_INPUTS}/base.xml)
+choc_cli_test(help RC 0 STDOUT "usage: choc <command>" "exit codes: 0 success, 1 input error"
+              ARGS --help)
+choc_cli_test(mesh_help RC 0 STDOUT "usage: choc mesh" ARGS mesh --help)
+add_test(NAME cli.modal_sdnl111a
+         COMMAND sh ${CLI_SCRIPTS}/modal_run.sh $<TARGET_FILE:choc>
+                 ${CMAKE_SOURCE_DIR}/input/sdnl111a.xml ${CLI_WORK}/modal_sdnl111a)
+set_tests_properties(cli.parameters_documented cli.modal_sdnl111a PROPERTIES TIMEOUT 120 LABELS cli)
