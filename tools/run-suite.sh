@@ -18,4 +18,12 @@ done
 if [ -x "$top/tools/make_report.py" ]; then
   python3 "$top/tools/make_report.py" results || status=1
 fi
+# ParaView views of the transient results (results/paraview/); optional, never fails the run.
+if command -v pvbatch >/dev/null 2>&1 && command -v xvfb-run >/dev/null 2>&1; then
+  xvfb-run -a pvbatch "$top/tools/paraview_views.py" results > results/paraview.log 2>&1 \
+    && echo "ParaView views in results/paraview/ (log: results/paraview.log)" \
+    || echo "warning: ParaView views failed (see results/paraview.log)"
+else
+  echo "ParaView views skipped: pvbatch or xvfb-run not found (make deps installs them)"
+fi
 exit $status
