@@ -9,6 +9,7 @@
 #include "app/Commands.hpp"
 #include "app/MeshCommand.hpp"
 #include "input/Errors.hpp"
+#include "output/Interrupt.hpp"
 #include "output/Log.hpp"
 
 namespace choc {
@@ -24,7 +25,9 @@ const char* kUsage =
     "  mesh [options] -o F.exo  generate a bar-impact mesh (choc mesh --help)\n"
     "  --help                   this text\n"
     "exit codes: 0 success, 1 input error, 2 numerical failure, 3 a declared check failed,\n"
-    "            4 internal error\n";
+    "            4 internal error, 130 interrupted by SIGINT, 143 interrupted by SIGTERM\n"
+    "            (a failed or interrupted run stops at a step boundary and leaves its partial\n"
+    "            results as <name>.incomplete.<ext>, listed in the log)\n";
 
 // One line always: a message relayed from a library (Teuchos, Anasazi) may span several.
 void reportError(const std::string& kind, const std::string& message) {
@@ -50,6 +53,7 @@ int runApplication(int argc, char** argv) {
   // Kokkos would answer --help itself: it sees the program name only.
   int scopeArgc = 1;
   Tpetra::ScopeGuard scope(&scopeArgc, &argv);
+  installInterruptHandlers();  // after MPI_Init, which may install handlers of its own
   if (args.empty()) {
     if (isRootRank()) std::cerr << kUsage;
     return kExitInputError;
@@ -65,10 +69,13 @@ int runApplication(int argc, char** argv) {
     if (cmd == "check") return runCheckCommand(rest);
     if (cmd == "parameters") return runParametersCommand(rest);
     if (cmd == "mesh") return runMeshCommand(rest);
-    throw InputError("choc: unknown command '" + cmd + "'; valid: run, check, parameters, mesh, --help");
+    throw InputError("unknown command '" + cmd + "'; valid: run, check, parameters, mesh, --help");
   } catch (const InputError& e) {
     reportError("input error", e.what());
     return kExitInputError;
+  } catch (const Interrupted& e) {
+    reportError("interrupted", e.what());
+    return e.exitCode();
   } catch (const NumericalError& e) {
     reportError("numerical failure", e.what());
     return kExitNumericalFailure;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -9,6 +10,7 @@
 #include "app/InputDeck.hpp"
 #include "input/Errors.hpp"
 #include "output/Checks.hpp"
+#include "output/Interrupt.hpp"
 #include "output/Log.hpp"
 
 namespace choc {
@@ -62,13 +64,44 @@ int runRunCommand(const std::vector<std::string>& args) {
   RunContext ctx{model, a.outputDir, {}, {}};
   const std::string checksPath = a.outputDir + "/checks.csv";
   std::filesystem::remove(checksPath);
-  for (auto& an : analyses) {
-    const std::string type = input->sublist("Analyses").sublist(an->name()).get<std::string>("Type");
-    log() << "\nanalysis '" << an->name() << "' (" << type << ")\n";
-    const auto t0 = std::chrono::steady_clock::now();
-    an->run(ctx);
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    log() << "  done in " << s << " s\n";
+  // Results of an earlier run under the names this run writes would pass for this run's if
+  // it fails before writing them: remove them first.
+  if (isRootRank())
+    for (auto& an : analyses)
+      for (const char* ext : {".exo", ".incomplete.exo", ".exo.part", ".history.csv",
+                              ".history.incomplete.csv", ".history.csv.part", ".modes.csv",
+                              ".modes.incomplete.csv", ".modes.csv.part"}) {
+        std::error_code ignored;
+        std::filesystem::remove(a.outputDir + "/" + an->name() + ext, ignored);
+      }
+  const auto runStart = std::filesystem::file_time_type::clock::now();
+  try {
+    for (auto& an : analyses) {
+      throwIfInterruptedBefore("analysis '" + an->name() + "'");
+      const std::string type = input->sublist("Analyses").sublist(an->name()).get<std::string>("Type");
+      log() << "\nanalysis '" << an->name() << "' (" << type << ")\n";
+      const auto t0 = std::chrono::steady_clock::now();
+      an->run(ctx);
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      log() << "  done in " << s << " s\n";
+    }
+  } catch (...) {
+    // Say which results of this run are partial (the writers renamed them *.incomplete.*).
+    if (isRootRank()) {
+      std::vector<std::string> partial;
+      std::error_code ec;
+      for (const auto& e : std::filesystem::directory_iterator(a.outputDir, ec)) {
+        const std::string n = e.path().filename().string();
+        std::error_code ec2;
+        if (n.find(".incomplete") != std::string::npos && e.last_write_time(ec2) >= runStart - std::chrono::seconds(2))
+          partial.push_back(e.path().string());
+      }
+      std::sort(partial.begin(), partial.end());
+      log() << "\nrun stopped; incomplete results of this run:";
+      for (const auto& p : partial) log() << " " << p;
+      log() << (partial.empty() ? " none\n" : "\n") << std::flush;
+    }
+    throw;
   }
   if (!ctx.checks.empty()) {
     if (isRootRank()) {

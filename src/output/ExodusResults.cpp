@@ -56,6 +56,11 @@ ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& me
       globalNames_(std::move(globalVariables)) {
   validateNames(nodalNames_, "nodal", path_);
   validateNames(globalNames_, "global", path_);
+  {  // a result of an earlier run must not pass for this run's
+    std::error_code ignored;
+    std::filesystem::remove(path_, ignored);
+    std::filesystem::remove(incompletePath(), ignored);
+  }
   exoid_ = createExodusMeshFile(mesh, partPath());
   try {
     auto define = [&](ex_entity_type type, std::vector<std::string>& names, const char* kind) {

@@ -1,0 +1,81 @@
+#include "output/Interrupt.hpp"
+
+#include <csignal>
+#include <cstdio>
+
+#include <mpi.h>
+
+namespace choc {
+
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+
+extern "C" void onInterrupt(int sig) {
+  if (g_signal != 0) {  // second signal: give up at once
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+    return;
+  }
+  g_signal = sig;
+}
+
+}  // namespace
+
+void installInterruptHandlers() {
+  struct sigaction sa {};
+  sa.sa_handler = onInterrupt;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESTART;
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
+bool interruptRequested() { return g_signal != 0; }
+
+int interruptSignal() { return g_signal; }
+
+void setInterruptForTesting(int sig) { g_signal = sig; }
+
+const char* signalName(int sig) {
+  switch (sig) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    default: return "signal";
+  }
+}
+
+namespace {
+
+int agreedSignal() {
+  int sig = g_signal;
+  int initialized = 0, finalized = 0, size = 1;
+  MPI_Initialized(&initialized);
+  MPI_Finalized(&finalized);
+  if (initialized && !finalized) MPI_Comm_size(MPI_COMM_WORLD, &size);
+  if (size > 1) {
+    int any = 0;
+    MPI_Allreduce(&sig, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    sig = any;
+  }
+  return sig;
+}
+
+}  // namespace
+
+void throwIfInterruptedBefore(const std::string& what) {
+  const int sig = agreedSignal();
+  if (sig != 0)
+    throw Interrupted(sig, std::string(signalName(sig)) + " received: run stopped before " + what);
+}
+
+void throwIfInterrupted(const std::string& what, double time) {
+  const int sig = agreedSignal();
+  if (sig == 0) return;
+  char t[64];
+  std::snprintf(t, sizeof t, "%.6e", time);
+  throw Interrupted(sig, std::string(signalName(sig)) + " received: " + what +
+                             " stopped at t = " + t + " s (the last completed step)");
+}
+
+}  // namespace choc

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# A bounded libFuzzer run (ctest: reliability.fuzz.xml, reliability.fuzz.exodus).
+# usage: tests/reliability/fuzz.sh SOURCE_DIR FUZZ_BUILD_DIR xml|exodus SECONDS
+# Configures (once) tests/reliability/fuzz/ with clang into FUZZ_BUILD_DIR, builds the target
+# (-j2), then fuzzes for SECONDS from the committed seeds (tests/reliability/corpus/<target>/),
+# keeping what it finds in FUZZ_BUILD_DIR/corpus-<target> (never in the source tree).
+# Fails on a crash, an ASan/UBSan report, a leak, a timeout (one input taking longer than
+# -timeout) or an exception other than choc::InputError (it aborts the target).
+set -uo pipefail
+src="$(cd "$1" && pwd)"; mkdir -p "$2"; bdir="$(cd "$2" && pwd)"; target="$3"; secs="$4"
+here="$src/tests/reliability"
+if [ ! -f "$bdir/CMakeCache.txt" ]; then
+  cmake -S "$here/fuzz" -B "$bdir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang \
+        > "$bdir.configure.log" 2>&1 || { cat "$bdir.configure.log"; exit 1; }
+fi
+if ! cmake --build "$bdir" -j "${CHOC_FUZZ_JOBS:-2}" --target "fuzz_$target" > "$bdir/build-$target.log" 2>&1; then
+  tail -n 60 "$bdir/build-$target.log"; echo "fuzz: build of fuzz_$target failed"; exit 1
+fi
+work="$bdir/corpus-$target"; art="$bdir/artifacts-$target"
+mkdir -p "$work" "$art"
+export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$here/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+case "$target" in
+  # Teuchos' XML parser is fast: small inputs, 10 s per input is already pathological.
+  xml)    opts=(-max_len=8192 -timeout=10) ;;
+  # netCDF's header parser may spend tens of seconds on a corrupted header (huge declared
+  # dimensions): inputs stay the size of the seeds and one input may take up to 90 s.
+  # It also allocates whatever length a corrupted header declares (1.8 GB for a name, seen with
+  # corpus/exodus/corrupt_header.exo): requests above 256 MB get NULL, as
+  # malloc may return on any
+  # machine (netCDF then fails with NC_ENOMEM, which choc reports as an input error), instead
+  # of libFuzzer's malloc limit reporting them as a crash; the RSS limit still applies.
+  exodus) opts=(-max_len=8192 -timeout=90 -malloc_limit_mb=1000000)
+          ASAN_OPTIONS="$ASAN_OPTIONS:allocator_may_return_null=1:max_allocation_size_mb=256" ;;
+esac
+echo "fuzz: fuzz_$target for $secs s from $here/corpus/$target"
+start=$(date +%s)
+( cd "$bdir" && "./fuzz_$target" "${opts[@]}" -max_total_time="$secs" -rss_limit_mb=2048 \
+    -print_final_stats=1 -artifact_prefix="$art/" "$work" "$here/corpus/$target" ) \
+    > "$bdir/fuzz-$target.log" 2>&1
+rc=$?
+grep -vE "^(NetCDF|Exodus|ERROR: ex_|    exerrval|\[libexodus\]|     )" "$bdir/fuzz-$target.log" | tail -n 40
+echo "fuzz: fuzz_$target exit $rc after $(( $(date +%s) - start )) s; corpus $(ls "$work" | wc -l) files"
+if [ $rc -ne 0 ]; then
+  echo "fuzz: FAILED; reproducer(s) in $art: $(ls "$art")"
+  echo "fuzz: reproduce with $bdir/fuzz_$target $art/<file>"
+  exit 1
+fi
+echo "fuzz: OK"

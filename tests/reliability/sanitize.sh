@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# The sanitizer step of `make test` (ctest: reliability.sanitize).
+# usage: tests/reliability/sanitize.sh SOURCE_DIR ASAN_BUILD_DIR
+# Configures (once) and builds ASAN_BUILD_DIR with -DCHOC_SANITIZE=ON (ASan + UBSan), only the
+# targets needed, with -j2; then runs the unit tests of input, mesh, fem, reference, output,
+# contact and analysis and a shortened SDNL111 B (tests/reliability/inputs/sdnl111b_short.xml)
+# with leak detection on and UBSan halting on the first error. Fails on any sanitizer report.
+# An existing ASAN_BUILD_DIR is reused, so a warm run only recompiles what changed.
+# Leaks reported at exit inside Open MPI, hwloc and Kokkos are suppressed by
+# tests/reliability/lsan.supp (library frames only; see that file).
+set -uo pipefail
+src="$(cd "$1" && pwd)"; mkdir -p "$2"; bdir="$(cd "$2" && pwd)"
+here="$src/tests/reliability"
+jobs="${CHOC_SANITIZE_JOBS:-2}"
+start=$(date +%s)
+stamp() { echo "sanitize: [$(( $(date +%s) - start )) s] $*"; }
+
+if [ ! -f "$bdir/CMakeCache.txt" ]; then
+  stamp "configuring $bdir"
+  cmake -S "$src" -B "$bdir" -DCHOC_SANITIZE=ON -DCMAKE_BUILD_TYPE=Release \
+        -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" -DCMAKE_C_FLAGS_RELEASE="-O1 -g1" \
+        -DCMAKE_CXX_COMPILER=mpicxx -DCMAKE_C_COMPILER=mpicc > "$bdir.configure.log" 2>&1 ||
+    { cat "$bdir.configure.log"; echo "sanitize: configure failed"; exit 1; }
+fi
+modules=(input mesh fem reference output contact analysis)
+targets=(choc)
+for m in "${modules[@]}"; do targets+=("unit_$m"); done
+stamp "building ${targets[*]} (-j$jobs)"
+if ! cmake --build "$bdir" -j "$jobs" --target "${targets[@]}" > "$bdir/asan-build.log" 2>&1; then
+  tail -n 60 "$bdir/asan-build.log"; echo "sanitize: build failed"; exit 1
+fi
+stamp "built"
+
+export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=0"
+export LSAN_OPTIONS="suppressions=$here/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+export OMPI_MCA_btl="self,vader"  # no network probing under ASan
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+logs="$bdir/sanitize-logs"; rm -rf "$logs"; mkdir -p "$logs"
+failed=()
+check_log() {  # name rc log
+  if [ "$2" -ne 0 ] || grep -qE "ERROR: (AddressSanitizer|LeakSanitizer)|runtime error:|SUMMARY: (Address|UndefinedBehavior|Leak)Sanitizer" "$3"; then
+    failed+=("$1 (exit $2)")
+    echo "---- $1: exit $2, sanitizer output:"
+    grep -nE -A40 "ERROR: (AddressSanitizer|LeakSanitizer)|runtime error:" "$3" | head -n 120
+    [ "$2" -ne 0 ] && tail -n 20 "$3"
+  fi
+}
+for m in "${modules[@]}"; do
+  exe="$bdir/tests/unit_$m"
+  [ -x "$exe" ] || { failed+=("unit_$m (not built)"); continue; }
+  # Tests that spawn choc or need several ranks are exercised elsewhere (Mpi* need mpirun).
+  ( cd "$bdir/tests" && "$exe" --gtest_filter='-Mpi*' ) > "$logs/unit_$m.log" 2>&1
+  rc=$?
+  stamp "unit_$m: exit $rc, $(grep -cE '^\[       OK \]' "$logs/unit_$m.log") tests passed"
+  check_log "unit_$m" $rc "$logs/unit_$m.log"
+done
+out="$logs/sdnl111b_short"
+"$bdir/choc" run "$here/inputs/sdnl111b_short.xml" -o "$out" > "$logs/choc.log" 2>&1
+rc=$?
+stamp "choc run sdnl111b_short.xml: exit $rc"
+check_log "choc run sdnl111b_short" $rc "$logs/choc.log"
+[ -f "$out/cerc_int.history.csv" ] || failed+=("choc run sdnl111b_short: no cerc_int.history.csv")
+# The suppressions must not hide everything: count what they matched.
+stamp "done"
+if [ ${#failed[@]} -gt 0 ]; then
+  echo "sanitize: FAILED: ${failed[*]} (logs in $logs)"
+  exit 1
+fi
+echo "sanitize: OK (no ASan/LSan/UBSan report; logs in $logs)"
