@@ -12,3 +12,5 @@ choc="${1:-$here/../build/choc}"
 # SDNL111 C, D, E: 2 x 50 HEX8 along z, 1 x 1 across, section 0.02 x 0.02.
 "$choc" mesh --dim 3 --axis z --along1 50 --along2 50 --across1 1 --across2 1 \
   --width 0.02 --height 0.02 --gap 1e-5 -o "$here/sdnl111_3d.exo"
+# Beyond the reference (input/sdnl111a_rigid.xml): the 1D scene with 600 beams per bar.
+"$choc" mesh --dim 1 --axis x --along1 600 --along2 600 --gap 1e-5 -o "$here/sdnl111_1d_600.exo"

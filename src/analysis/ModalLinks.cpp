@@ -27,7 +27,12 @@ void declareShockLinks(Teuchos::ParameterList& p) {
                 Range::nonNegative());
   declareDouble(l, "DIST_2", 0.0, "offset of node 2 (outer radius for BI_CERC_INT) [m]",
                 Range::nonNegative());
-  declareRequiredDouble(l, "Normal Stiffness", "Kn [N/m]", Range::positive());
+  declareChoice(l, "Normal Law", "penalty", {"penalty", "rigid"},
+                "penalty: force max(0, -Kn delta - Cn delta'); rigid: no penetration, enforced "
+                "by a forward-increment Lagrange multiplier (the stiffness and damping are then "
+                "not used)");
+  declareDouble(l, "Normal Stiffness", 0.0, "Kn [N/m] (required for the penalty law)",
+                Range::nonNegative());
   declareDouble(l, "Normal Damping", 0.0, "Cn [N s/m]", Range::nonNegative());
   declareDouble(l, "Tangential Stiffness", 0.0, "Kt [N/m]", Range::nonNegative());
   declareDouble(l, "Tangential Damping", 0.0, "Ct [N s/m]", Range::nonNegative());
@@ -74,7 +79,12 @@ ModalLinks::ModalLinks(const Teuchos::ParameterList& p, const Model& model,
       throwInput(file, lpath + "/DIST_2", std::to_string(l.law.dist2),
                  "is smaller than DIST_1 = " + std::to_string(l.law.dist1),
                  "BI_CERC_INT needs the outer radius DIST_2 >= the inner radius DIST_1");
+    l.law.rigid = lp.get<std::string>("Normal Law") == "rigid";
     l.law.normalStiffness = lp.get<double>("Normal Stiffness");
+    if (!l.law.rigid && !(l.law.normalStiffness > 0))
+      throwInput(file, lpath + "/Normal Stiffness", std::to_string(l.law.normalStiffness),
+                 "must be positive for the penalty law",
+                 "give the link stiffness [N/m], or set 'Normal Law' to 'rigid'");
     l.law.normalDamping = lp.get<double>("Normal Damping");
     l.law.tangentialStiffness = lp.get<double>("Tangential Stiffness");
     l.law.tangentialDamping = lp.get<double>("Tangential Damping");
@@ -91,6 +101,8 @@ ModalLinks::ModalLinks(const Teuchos::ParameterList& p, const Model& model,
     links_.push_back(l);
   }
   lastGapRate_.assign(links_.size(), 0.0);
+  for (const auto& l : links_) hasRigid_ = hasRigid_ || l.law.rigid;
+  constraintForce_.assign(modes_, 0.0);
 }
 
 Vec3 ModalLinks::relative(const ModalLink& l, const std::vector<double>& x, bool position) const {
@@ -110,6 +122,7 @@ void ModalLinks::evaluate(double, const std::vector<double>& q, const std::vecto
   std::fill(f.begin(), f.end(), 0.0);
   for (size_t i = 0; i < links_.size(); ++i) {
     ModalLink& l = links_[i];
+    if (l.law.rigid) continue;  // enforced in project(); l.last was set there
     const Vec3 d = relative(l, q, true), w = relative(l, v, false);
     const double prevPower = l.last.closed ? l.law.normalDamping * lastGapRate_[i] * lastGapRate_[i] : 0.0;
     l.last = evaluateShock(l.law, d, w, dt, l.state, true);
@@ -141,9 +154,79 @@ bool ModalLinks::nearContact(double dt) const {
   return false;
 }
 
+void ModalLinks::generalizedDirection(const ModalLink& l, const Vec3& m,
+                                      std::vector<double>& b) const {
+  b.assign(modes_, 0.0);
+  for (int c = 0; c < 3; ++c) {
+    if (m[c] == 0.0) continue;
+    const double* p1 = &l.phi1[c * modes_];
+    const double* p2 = &l.phi2[c * modes_];
+    for (int k = 0; k < modes_; ++k) b[k] += (p2[k] - p1[k]) * m[c];
+  }
+}
+
+void ModalLinks::project(double h, std::vector<double>& q, std::vector<double>& v) {
+  std::vector<double> b;
+  std::fill(constraintForce_.begin(), constraintForce_.end(), 0.0);
+  for (auto& l : links_) {
+    if (!l.law.rigid) continue;
+    // lambda_n >= 0 such that gap(q_{n+1}) >= 0, lambda gap = 0. The gap is linear in q along
+    // a fixed normal (planes); curved shapes converge in a few Newton-like passes.
+    double lambda = 0.0;
+    if (l.law.shape == ObstacleShape::BiCercInt && l.law.dist2 - l.law.dist1 <= 0.0) {
+      // No free play: the inner circle cannot move in the plane orthogonal to the axis, a
+      // bilateral tie d.e2 = d.e3 = 0 (the radial normal is undefined at r = 0).
+      Vec3 force{0, 0, 0};
+      for (int pass = 0; pass < 2; ++pass)
+        for (const Vec3* e : {&l.law.frame.e2, &l.law.frame.e3}) {
+          generalizedDirection(l, *e, b);
+          double w = 0.0;
+          for (double x : b) w += x * x;
+          if (!(w > 0)) continue;
+          const double dl = -dot(relative(l, q, true), *e) / (h * h * w);
+          for (int k = 0; k < modes_; ++k) {
+            q[k] += h * h * dl * b[k];
+            v[k] += h * dl * b[k];
+            constraintForce_[k] += dl * b[k];
+          }
+          for (int c = 0; c < 3; ++c) force[c] += dl * (*e)[c];
+        }
+      const Vec3 d = relative(l, q, true);
+      l.last = ShockResponse{};
+      l.last.gap = -std::sqrt(std::pow(dot(d, l.law.frame.e2), 2) + std::pow(dot(d, l.law.frame.e3), 2));
+      l.last.forceOnNode2 = force;
+      l.last.normalForce = std::sqrt(dot(force, force));
+      l.last.closed = true;
+      continue;
+    }
+    ShockGeometry g = shockGeometry(l.law, relative(l, q, true));
+    for (int pass = 0; pass < 4 && g.gap < 0.0; ++pass) {
+      generalizedDirection(l, g.normal, b);
+      double w = 0.0;
+      for (double x : b) w += x * x;
+      if (!(w > 0)) break;  // the basis cannot move the link: nothing to enforce
+      const double dl = -g.gap / (h * h * w);
+      for (int k = 0; k < modes_; ++k) {
+        q[k] += h * h * dl * b[k];
+        v[k] += h * dl * b[k];
+        constraintForce_[k] += dl * b[k];
+      }
+      lambda += dl;
+      g = shockGeometry(l.law, relative(l, q, true));
+      if (std::abs(g.gap) <= 1e-14 * (l.law.dist1 + l.law.dist2 + 1e-12)) break;
+    }
+    l.last = ShockResponse{};
+    l.last.gap = g.gap;
+    l.last.normalForce = lambda;
+    l.last.closed = lambda > 0.0;
+    for (int c = 0; c < 3; ++c) l.last.forceOnNode2[c] = lambda * g.normal[c];
+  }
+}
+
 double ModalLinks::linkOmega2Bound() const {
   double s = 0.0;
   for (const auto& l : links_) {
+    if (l.law.rigid) continue;  // a constraint adds no frequency to the explicit scheme
     double flex = 0.0;
     for (int k = 0; k < modes_; ++k) {
       double dk2 = 0.0;
@@ -161,6 +244,7 @@ double ModalLinks::linkOmega2Bound() const {
 double ModalLinks::linkDampingRatioBound() const {
   double xi = 0.0;
   for (const auto& l : links_) {
+    if (l.law.rigid) continue;  // no dashpot in the rigid law
     double flex = 0.0;
     for (int k = 0; k < modes_; ++k)
       for (int c = 0; c < 3; ++c) {

@@ -33,6 +33,10 @@ class ModalLinks : public ModalForce {
   void evaluate(double t, const std::vector<double>& q, const std::vector<double>& v, double dt,
                 std::vector<double>& f) override;
   bool nearContact(double dt) const override;
+  void project(double h, std::vector<double>& q, std::vector<double>& v) override;
+  const std::vector<double>* constraintForce() const override {
+    return hasRigid_ ? &constraintForce_ : nullptr;
+  }
   const std::vector<ModalLink>& links() const { return links_; }
   // Highest circular frequency the links add to the basis (bound: K * sum_k (dphi_k . m)^2)
   // and the largest link damping ratio, for the critical step.
@@ -43,10 +47,14 @@ class ModalLinks : public ModalForce {
 
  private:
   Vec3 relative(const ModalLink& l, const std::vector<double>& x, bool position) const;
+  // Generalized direction of a unit force on node 2 along m (and its opposite on node 1).
+  void generalizedDirection(const ModalLink& l, const Vec3& m, std::vector<double>& b) const;
   std::vector<ModalLink> links_;
   int modes_ = 0;
   double linkDissipated_ = 0.0;
   std::vector<double> lastGapRate_;
+  bool hasRigid_ = false;
+  std::vector<double> constraintForce_;  // B^T lambda of the last project()
 };
 
 }  // namespace choc

@@ -21,6 +21,7 @@
 #include "input/ParameterSpec.hpp"
 #include "output/ExodusResults.hpp"
 #include "output/HistoryCsv.hpp"
+#include "output/Interrupt.hpp"
 #include "output/Log.hpp"
 
 namespace choc {
@@ -60,6 +61,12 @@ Teuchos::ParameterList ModalTransient::parameters() {
 }
 
 namespace {
+
+std::string number(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
 
 std::vector<double> parseList(const std::string& text, const std::string& file,
                               const std::string& param) {
@@ -130,11 +137,11 @@ void ModalTransient::run(RunContext& ctx) {
   // Time grid and stability.
   const double t0 = params_.get<double>("Start Time"), tEnd = params_.get<double>("End Time");
   double dt = params_.get<double>("Time Step");
-  if (!(tEnd > t0)) throwInput(file, path("End Time"), std::to_string(tEnd), "must exceed the Start Time");
+  if (!(tEnd > t0)) throwInput(file, path("End Time"), number(tEnd), "must exceed the Start Time");
   const double ratio = (tEnd - t0) / dt;
   const long long nsteps = std::llround(ratio);
   if (nsteps < 1 || std::abs(ratio - nsteps) > 1e-6 * std::max(1.0, ratio))
-    throwInput(file, path("Time Step"), std::to_string(dt),
+    throwInput(file, path("Time Step"), number(dt),
                "does not divide End Time - Start Time into whole steps",
                "choose dt = (End - Start) / N");
   const double omegaMax = std::sqrt(w2max + links.linkOmega2Bound());
@@ -155,7 +162,7 @@ void ModalTransient::run(RunContext& ctx) {
     std::snprintf(buf, sizeof buf, "%.4e s exceeds the critical step %.4e s of the explicit scheme",
                   dt, dtCrit);
     if (stab == "refuse")
-      throwInput(file, path("Time Step"), std::to_string(dt), buf,
+      throwInput(file, path("Time Step"), number(dt), buf,
                  "reduce dt, or set 'Stability Check' to 'substep'");
     if (stab == "warn") log() << "  warning: " << buf << "\n";
     if (stab == "substep") {
@@ -211,10 +218,14 @@ void ModalTransient::run(RunContext& ctx) {
   };
   auto record = [&](long long step) {
     size_t j = 0;
+    const std::vector<double> vsync = integrator.synchronizedVelocity(state);
     for (size_t i = 0; i < probes.size(); ++i) {
+      // Velocities: the scheme's own v for symplectic Euler (as the reference deck reports
+      // it), the synchronized one (with the constraint impulse) for the other schemes.
       const auto& x = probes[i].field == ProbeField::Displacement ? state.q
-                      : probes[i].field == ProbeField::Velocity   ? state.v
-                                                                  : state.a;
+                      : probes[i].field == ProbeField::Velocity
+                          ? (scheme == ModalScheme::SymplecticEuler ? state.v : vsync)
+                          : state.a;
       row[j++] = probeValue(i, x);
     }
     double ek = 0.0, es = 0.0;
@@ -235,10 +246,12 @@ void ModalTransient::run(RunContext& ctx) {
       row[j++] = l.last.gap;
       row[j++] = l.last.closed ? 1.0 : 0.0;
     }
-    for (double v : row)
-      if (!std::isfinite(v))
-        throw NumericalError("modal transient '" + name_ + "': the solution is not finite at t = " +
-                             std::to_string(state.t) + " s (unstable time step?)");
+    for (size_t i = 0; i < row.size(); ++i)
+      if (!std::isfinite(row[i])) {
+        std::snprintf(buf, sizeof buf, "%.6e s (%s = %g; unstable time step?)", state.t,
+                      columns[i].c_str(), row[i]);
+        throw NumericalError("modal transient '" + name_ + "': the solution is not finite at t = " + buf);
+      }
     rec.times.push_back(state.t);
     for (size_t i = 0; i < columns.size(); ++i) rec.columns[columns[i]].push_back(row[i]);
     if (history) history->appendRow(state.t, row);
@@ -264,9 +277,14 @@ void ModalTransient::run(RunContext& ctx) {
   const int progressLines = params_.get<int>("Progress Lines");
   const long long progressEvery = progressLines > 0 ? std::max(1LL, nsteps / progressLines) : 0;
   const auto loopStart = std::chrono::steady_clock::now();
+  // SIGINT/SIGTERM stop the run at a step boundary (every step on one rank; on several, every
+  // 50 steps, since the check is then a reduction).
+  const long long interruptEvery = model.comm()->getSize() > 1 ? 50 : 1;
+  const std::string what = "modal transient '" + name_ + "'";
   try {
     record(0);
     for (long long n = 1; n <= nsteps; ++n) {
+      if (n % interruptEvery == 0) throwIfInterrupted(what, state.t);
       integrator.advance(state, dt, substeps);
       state.t = t0 + n * dt;
       record(n);
@@ -279,9 +297,13 @@ void ModalTransient::run(RunContext& ctx) {
       }
     }
   } catch (...) {
+    std::string kept;
+    if (history && history->open()) kept += " " + incompletePath(history->path());
+    if (exo) kept += " " + exo->incompletePath();
     if (history) history->abandon();
     if (exo) exo->abandon();
-    log() << "  run stopped at t = " << state.t << " s; partial results renamed *.incomplete.*\n";
+    log() << "  run stopped at t = " << state.t << " s; partial results (complete up to that time)"
+          << (kept.empty() ? std::string(": none") : ":" + kept) << "\n";
     throw;
   }
   if (history) history->finish();

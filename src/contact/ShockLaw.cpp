@@ -26,20 +26,15 @@ Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2]
 double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 }  // namespace
 
-ShockResponse evaluateShock(const ShockLawParameters& p, const Vec3& d, const Vec3& w, double dt,
-                            ShockLawState& state, bool commit) {
-  ShockResponse r;
-  // Outward unit normal m: the direction along which a positive force pushes node 2.
-  Vec3 m{0, 0, 0};
-  double sep = 0.0;  // signed distance measure along m
+ShockGeometry shockGeometry(const ShockLawParameters& p, const Vec3& d) {
+  ShockGeometry g;
   switch (p.shape) {
     case ObstacleShape::BiPlanY:
     case ObstacleShape::BiPlanZ: {
       const Vec3& e = p.shape == ObstacleShape::BiPlanY ? p.frame.e2 : p.frame.e3;
       const double s = dot(d, e);
-      m = scaled(e, s >= 0 ? 1.0 : -1.0);
-      sep = std::abs(s);
-      r.gap = sep - p.dist1 - p.dist2;
+      g.normal = scaled(e, s >= 0 ? 1.0 : -1.0);
+      g.gap = std::abs(s) - p.dist1 - p.dist2;
       break;
     }
     case ObstacleShape::BiCercle:
@@ -49,15 +44,24 @@ ShockResponse evaluateShock(const ShockLawParameters& p, const Vec3& d, const Ve
       // At r = 0 the direction is undefined: take e2 (only reached if the nodes coincide).
       const Vec3 radial = rr > 0 ? scaled(dp, 1.0 / rr) : p.frame.e2;
       if (p.shape == ObstacleShape::BiCercle) {
-        m = radial;
-        r.gap = rr - p.dist1 - p.dist2;
+        g.normal = radial;
+        g.gap = rr - p.dist1 - p.dist2;
       } else {
-        m = scaled(radial, -1.0);  // the outer circle pulls node 2 back towards node 1
-        r.gap = (p.dist2 - p.dist1) - rr;
+        g.normal = scaled(radial, -1.0);  // the outer circle pulls node 2 back towards node 1
+        g.gap = (p.dist2 - p.dist1) - rr;
       }
       break;
     }
   }
+  return g;
+}
+
+ShockResponse evaluateShock(const ShockLawParameters& p, const Vec3& d, const Vec3& w, double dt,
+                            ShockLawState& state, bool commit) {
+  ShockResponse r;
+  const ShockGeometry geo = shockGeometry(p, d);
+  const Vec3& m = geo.normal;
+  r.gap = geo.gap;
   const double gapRate = dot(w, m);  // d(delta)/dt for every shape
   r.closed = r.gap <= 0.0;
   ShockLawState next = state;

@@ -10,6 +10,9 @@
 //   BI_CERC_INT: inner circle (radius DIST_1) in an outer one (DIST_2):
 //                delta = (DIST_2 - DIST_1) - r, the link pulls the nodes together.
 // With one node (a fixed obstacle), node 2 is the obstacle at its origin.
+// Normal law "rigid": no penetration at all. The link is then a unilateral constraint
+// enforced by the integrator with a forward-increment Lagrange multiplier (the force at t_n is
+// chosen so that the gap at t_{n+1} is closed, never tensile): see ModalLinks::project().
 #pragma once
 #include <string>
 #include <vector>
@@ -25,6 +28,7 @@ const std::vector<std::string>& obstacleShapeNames();
 
 struct ShockLawParameters {
   ObstacleShape shape = ObstacleShape::BiPlanZ;
+  bool rigid = false;  // normal law: penalty (false) or rigid constraint (true)
   ObstacleFrame frame{};
   double dist1 = 0.0, dist2 = 0.0;
   double normalStiffness = 0.0, normalDamping = 0.0;
@@ -46,6 +50,14 @@ struct ShockResponse {
   bool sliding = false;
   double springEnergy = 0.0;         // 1/2 Kn delta^2 + 1/2 Kt |w_t|^2 while closed
 };
+
+// Gap delta and outward unit normal m (the direction along which a positive force pushes
+// node 2; d(delta) = m . d(d)) of the shape at relative position d.
+struct ShockGeometry {
+  double gap = 0.0;
+  Vec3 normal{0.0, 0.0, 0.0};
+};
+ShockGeometry shockGeometry(const ShockLawParameters& p, const Vec3& d);
 
 // Evaluates the law at relative position d and velocity w. `dt` advances the tangential
 // spring (w_t += dt * tangential velocity); `state` is updated when `commit` is true.

@@ -57,6 +57,32 @@ void fillStart(MultiVector& X) {
 
 }  // namespace
 
+void finishEigenResult(const CrsMatrix& K, const CrsMatrix& M, double shift, EigenResult& res) {
+  MultiVector Kphi(K.getRangeMap(), 1), Mphi(M.getRangeMap(), 1), r(K.getRangeMap(), 1);
+  res.generalizedMass.clear();
+  res.residuals.clear();
+  for (size_t k = 0; k < res.vectors->getNumVectors(); ++k) {
+    auto phi = res.vectors->getVectorNonConst(k);
+    M.apply(*phi, Mphi);
+    std::vector<double> gm(1);
+    phi->dot(*Mphi.getVector(0), Teuchos::ArrayView<double>(gm));
+    if (!(gm[0] > 0)) throw NumericalError("modal analysis: mode with non-positive generalized mass");
+    phi->scale(1.0 / std::sqrt(gm[0]));
+    M.apply(*phi, Mphi);
+    K.apply(*phi, Kphi);
+    const double lambda = res.eigenvalues[k];
+    r.assign(Kphi);
+    r.update(-lambda, Mphi, 1.0);
+    std::vector<double> nr(1), nk(1), nm(1), g(1);
+    r.norm2(Teuchos::ArrayView<double>(nr));
+    Kphi.norm2(Teuchos::ArrayView<double>(nk));
+    Mphi.norm2(Teuchos::ArrayView<double>(nm));
+    phi->dot(*Mphi.getVector(0), Teuchos::ArrayView<double>(g));
+    res.generalizedMass.push_back(g[0]);
+    res.residuals.push_back(nr[0] / (nk[0] + std::max(std::abs(lambda), std::abs(shift)) * nm[0]));
+  }
+}
+
 EigenResult solveEigenproblem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
                               const EigenRequest& req) {
   const long long n = static_cast<long long>(K->getGlobalNumRows());
@@ -101,8 +127,8 @@ EigenResult solveEigenproblem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
   if (ret != Anasazi::Converged || sol.numVecs < req.numModes)
     throw NumericalError("Anasazi Block Krylov-Schur converged " + std::to_string(sol.numVecs) +
                          " of " + std::to_string(req.numModes) + " modes in " +
-                         std::to_string(mgr.getNumIters()) +
-                         " restarts; raise 'Maximum Restarts' or loosen 'Tolerance'");
+                         std::to_string(mgr.getNumIters()) + " iterations with 'Maximum Restarts' = " +
+                         std::to_string(req.maxRestarts) + "; raise 'Maximum Restarts' or loosen 'Tolerance'");
 
   // theta = 1/(lambda - sigma)  =>  lambda = sigma + 1/theta
   std::vector<double> lambda(sol.numVecs);
@@ -114,31 +140,11 @@ EigenResult solveEigenproblem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
 
   EigenResult res;
   res.vectors = rcp(new MultiVector(K->getDomainMap(), req.numModes));
-  MultiVector Kphi(K->getRangeMap(), 1), Mphi(M->getRangeMap(), 1), r(K->getRangeMap(), 1);
   for (int k = 0; k < req.numModes; ++k) {
-    const int i = order[k];
-    auto src = sol.Evecs->getVector(i);  // sol.index marks complex pairs, not columns
-    auto dst = res.vectors->getVectorNonConst(k);
-    dst->assign(*src);
-    // Normalise to unit generalized mass, sign fixed by the largest entry being positive.
-    M->apply(*dst, Mphi);
-    std::vector<double> gm(1);
-    dst->dot(*Mphi.getVector(0), Teuchos::ArrayView<double>(gm));
-    if (!(gm[0] > 0)) throw NumericalError("modal analysis: mode with non-positive generalized mass");
-    dst->scale(1.0 / std::sqrt(gm[0]));
-    M->apply(*dst, Mphi);
-    K->apply(*dst, Kphi);
-    r.assign(Kphi);
-    r.update(-lambda[i], Mphi, 1.0);
-    std::vector<double> nr(1), nk(1), nm(1), g(1);
-    r.norm2(Teuchos::ArrayView<double>(nr));
-    Kphi.norm2(Teuchos::ArrayView<double>(nk));
-    Mphi.norm2(Teuchos::ArrayView<double>(nm));
-    dst->dot(*Mphi.getVector(0), Teuchos::ArrayView<double>(g));
-    res.eigenvalues.push_back(lambda[i]);
-    res.generalizedMass.push_back(g[0]);
-    res.residuals.push_back(nr[0] / (nk[0] + std::max(std::abs(lambda[i]), std::abs(req.shift)) * nm[0]));
+    res.vectors->getVectorNonConst(k)->assign(*sol.Evecs->getVector(order[k]));
+    res.eigenvalues.push_back(lambda[order[k]]);
   }
+  finishEigenResult(*K, *M, req.shift, res);
   res.restarts = mgr.getNumIters();
   res.operatorApplies = op->applies();
   return res;

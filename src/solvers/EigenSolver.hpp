@@ -27,6 +27,10 @@ struct EigenResult {
   int operatorApplies = 0;
 };
 
+// Normalises res.vectors to unit generalized mass (sign: largest entry positive is not
+// enforced) and fills res.generalizedMass and res.residuals (true residuals).
+void finishEigenResult(const CrsMatrix& K, const CrsMatrix& M, double shift, EigenResult& res);
+
 // Throws InputError for an impossible request (more modes than unknowns) and NumericalError
 // when Anasazi does not converge the requested number of modes.
 EigenResult solveEigenproblem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,

@@ -41,6 +41,8 @@ std::vector<double> ModalIntegrator::synchronizedVelocity(const ModalState& s) c
   std::vector<double> v = s.v;
   if (scheme_ == ModalScheme::SymplecticEuler)
     for (size_t k = 0; k < v.size(); ++k) v[k] += 0.5 * lastStep_ * s.a[k];
+  if (const std::vector<double>* fc = force_.constraintForce())
+    for (size_t k = 0; k < v.size() && k < fc->size(); ++k) v[k] += 0.5 * lastStep_ * (*fc)[k];
   return v;
 }
 
@@ -52,6 +54,7 @@ void ModalIntegrator::euler(ModalState& s, double h) const {
     s.v[k] += h * s.a[k];
     s.q[k] += h * s.v[k];
   }
+  force_.project(h, s.q, s.v);
   s.t += h;
   force_.evaluate(s.t, s.q, s.v, h, s.f);
   for (size_t k = 0; k < n; ++k) s.a[k] = s.f[k] - c_[k] * s.v[k] - w2_[k] * s.q[k];
@@ -60,11 +63,13 @@ void ModalIntegrator::euler(ModalState& s, double h) const {
 
 void ModalIntegrator::central(ModalState& s, double h) const {
   const size_t n = w2_.size();
+  lastStep_ = h;
   const double p0 = dampingPower(s);
   for (size_t k = 0; k < n; ++k) {
     s.v[k] += 0.5 * h * s.a[k];  // v at n+1/2
     s.q[k] += h * s.v[k];
   }
+  force_.project(h, s.q, s.v);
   s.t += h;
   force_.evaluate(s.t, s.q, s.v, h, s.f);
   for (size_t k = 0; k < n; ++k) {

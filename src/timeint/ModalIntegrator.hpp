@@ -21,6 +21,12 @@ class ModalForce {
                         double dt, std::vector<double>& f) = 0;
   // True when a link is closed or may close within `dt` of the last evaluated state.
   virtual bool nearContact(double dt) const = 0;
+  // Constraints enforced by forward-increment Lagrange multipliers: called after the position
+  // update of a step of length h with the predicted q (and the velocity that produced it);
+  // applies the constraint impulses to both (q += h^2 B^T lambda, v += h B^T lambda).
+  virtual void project(double /*h*/, std::vector<double>& /*q*/, std::vector<double>& /*v*/) {}
+  // Generalized constraint force B^T lambda of the last project() (nullptr: no constraints).
+  virtual const std::vector<double>* constraintForce() const { return nullptr; }
 };
 
 enum class ModalScheme { SymplecticEuler, CentralDifference, Adaptive };
@@ -42,8 +48,9 @@ class ModalIntegrator {
   void advance(ModalState& s, double dt, int substeps = 1) const;
   long long subStepsTaken() const { return subSteps_; }
   // Velocity at s.t: symplectic Euler's v is a half-step velocity (v(t - h/2)), so the
-  // synchronized one is v + h/2 a; the central-difference v is already at s.t. Energies use
-  // it, which makes their error O(dt^2) for every scheme.
+  // synchronized one is v + h/2 a; the central-difference v is already at s.t. Both add half
+  // the last constraint impulse (the constraint force is not part of a). Energies use it,
+  // which makes their error O(dt^2) for every scheme.
   std::vector<double> synchronizedVelocity(const ModalState& s) const;
   // Energy dissipated by modal damping since the start (trapezoidal in time).
   double modalDissipation() const { return dissipated_; }
