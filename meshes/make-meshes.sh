@@ -14,3 +14,6 @@ choc="${1:-$here/../build/choc}"
   --width 0.02 --height 0.02 --gap 1e-5 -o "$here/sdnl111_3d.exo"
 # Beyond the reference (input/sdnl111a_rigid.xml): the 1D scene with 600 beams per bar.
 "$choc" mesh --dim 1 --axis x --along1 600 --along2 600 --gap 1e-5 -o "$here/sdnl111_1d_600.exo"
+# Beyond the reference (input/sdnl111c_accurate.xml): the 3D bars with 400 HEX8 along each.
+"$choc" mesh --dim 3 --axis z --along1 400 --along2 400 --across1 1 --across2 1 \
+  --width 0.02 --height 0.02 --gap 1e-5 -o "$here/sdnl111_3d_400.exo"

@@ -253,7 +253,7 @@ def implicit_cases(input_name, letter, quick):
         base = copy.deepcopy(root)
         keep_only(base, [name])
         a = f"Analyses/{name}"
-        set_param(base, f"{a}/Exodus Interval", 0, "int")
+        set_param(base, f"{a}/Write Exodus", "false", "bool")
         sweeps = []
         sweeps += [("dt", v, [(f"{a}/Time Step", v, "double")])
                    for v in ([2e-6, 1e-6, 5e-7] if quick else [4e-6, 2e-6, 1e-6, 5e-7, 2.5e-7])]
