@@ -11,6 +11,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "analysis/EnergyBalance.hpp"
 #include "analysis/HistoryChecks.hpp"
 #include "analysis/HistoryProbes.hpp"
 #include "analysis/InitialConditions.hpp"
@@ -87,6 +88,7 @@ Teuchos::ParameterList ImplicitTransient::parameters() {
   declareRequiredString(nf, "Node Set", "node set receiving the force");
   declareChoice(nf, "Component", "DX", {"DX", "DY", "DZ"}, "direction");
   declareRequiredDouble(nf, "Value", "force per node [N]");
+  declareEnergyBalance(p);
   declareInitialConditions(p);
   declareString(p, "History", "", "recorded quantities, e.g. 'N1:DZ N1:VZ'");
   declareBool(p, "Write Exodus", true, "write <name>.exo");
@@ -105,16 +107,19 @@ class TransientOutput : public StepObserver {
   TransientOutput(const Model& model, RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
                   const ContactManager* contact, std::vector<Probe> probes, HistoryCsv* csv,
                   ExodusResultsWriter* exo, int exoInterval, Teuchos::StackedTimer* timer,
-                  RecordedHistory& history, int logInterval)
+                  RecordedHistory& history, int logInterval, double rayleighK, double rayleighM,
+                  RCP<const Vector> load, EnergyBalanceMonitor* balance)
       : model_(model), K_(K), M_(M), contact_(contact), probes_(std::move(probes)), csv_(csv),
         exo_(exo), exoInterval_(exoInterval), timer_(timer), history_(history),
-        logInterval_(logInterval), tmp_(K->getRowMap()) {}
+        logInterval_(logInterval), tmp_(K->getRowMap()), aK_(rayleighK), aM_(rayleighM),
+        load_(load), balance_(balance) {}
 
   static std::vector<std::string> columns(const std::vector<Probe>& probes,
                                           const ContactManager* contact) {
     std::vector<std::string> c;
     for (const auto& p : probes) c.push_back(p.column);
-    for (const char* e : {"energy:kinetic", "energy:strain", "energy:contact", "energy:total"})
+    for (const char* e : {"energy:kinetic", "energy:strain", "energy:contact", "energy:dissipated",
+                          "energy:total", "energy:balance"})
       c.push_back(e);
     if (contact)
       for (int p = 0; p < contact->numPairs(); ++p) {
@@ -147,10 +152,28 @@ class TransientOutput : public StepObserver {
     K_->apply(u, tmp_);
     const double strain = 0.5 * u.dot(tmp_);
     const double cenergy = contact_ ? contact_->energy(u) : 0.0;
+    // Rayleigh damping power v^T C v = aK v^T K v + aM v^T M v, integrated by the trapezoidal
+    // rule over the step; external work of the constant loads f.(u - u0), exact.
+    double power = aM_ * 2.0 * kinetic;
+    if (aK_ != 0.0) {
+      K_->apply(v, tmp_);
+      power += aK_ * v.dot(tmp_);
+    }
+    if (info.step == 0) u0_ = rcp(new Vector(u, Teuchos::Copy));
+    dissipated_ += 0.5 * info.dt * (lastPower_ + power);
+    lastPower_ = power;
+    double external = 0.0;
+    if (!load_.is_null()) {
+      tmp_.update(1.0, u, -1.0, *u0_, 0.0);
+      external = load_->dot(tmp_);
+    }
     vals.push_back(kinetic);
     vals.push_back(strain);
     vals.push_back(cenergy);
+    vals.push_back(dissipated_);
     vals.push_back(kinetic + strain + cenergy);
+    vals.push_back(balance_ ? balance_->update(info.time, kinetic + strain + cenergy, dissipated_, external)
+                            : 0.0);
     std::vector<double> f, g;
     if (contact_) {
       f = contact_->forces(u);
@@ -166,8 +189,15 @@ class TransientOutput : public StepObserver {
         vals.push_back(gap);
       }
     }
-    history_.times.push_back(info.time);
     const auto cols = columns(probes_, contact_);
+    for (size_t k = 0; k < vals.size(); ++k)  // never a non-finite value in an output
+      if (!std::isfinite(vals[k])) {
+        char what[200];
+        std::snprintf(what, sizeof what, "the solution is not finite at t = %.6e s (%s = %g)",
+                      info.time, cols[k].c_str(), vals[k]);
+        throw NumericalError(std::string("transient: ") + what);
+      }
+    history_.times.push_back(info.time);
     for (size_t k = 0; k < cols.size(); ++k) history_.columns[cols[k]].push_back(vals[k]);
     if (csv_) csv_->appendRow(info.time, vals);
     if (logInterval_ > 0 && info.step % logInterval_ == 0) {
@@ -179,7 +209,7 @@ class TransientOutput : public StepObserver {
     }
     if (exoInterval_ > 0 && (info.step % exoInterval_ == 0 || info.last)) writeExodus(info, u, v, a, f, g);
     // SIGINT/SIGTERM: stop at this step boundary (the caller renames the outputs .incomplete).
-    throwIfInterrupted("transient", info.time);
+    throwIfInterrupted("transient", info.time, model_.rawComm());
   }
 
  private:
@@ -225,6 +255,11 @@ class TransientOutput : public StepObserver {
   RecordedHistory& history_;
   int logInterval_;
   Vector tmp_;
+  double aK_ = 0.0, aM_ = 0.0;
+  RCP<const Vector> load_;
+  EnergyBalanceMonitor* balance_ = nullptr;
+  RCP<Vector> u0_;
+  double dissipated_ = 0.0, lastPower_ = 0.0;
 };
 
 std::string fmtDouble(double v) {
@@ -407,9 +442,10 @@ void ImplicitTransient::run(RunContext& ctx) {
   }
   const bool writeExo = params_.get<bool>("Write Exodus");
   RecordedHistory history;
+  EnergyBalanceMonitor balance(params_, "transient '" + name_ + "'");
   TransientOutput output(model, K, M, contact.get(), probes, csv.get(), exo.get(),
                          writeExo ? params_.get<int>("Exodus Interval") : 0, timer.get(), history,
-                         params_.get<int>("Log Interval"));
+                         params_.get<int>("Log Interval"), aK, aM, load, &balance);
   TransientDriver driver(op, scheme, ts);
   driver.addObserver(&output);
   TransientSummary sum;
@@ -422,6 +458,7 @@ void ImplicitTransient::run(RunContext& ctx) {
   }
   if (csv) csv->finish();
   if (exo) exo->finish();
+  log() << balance.summary();
   timer->stopBaseTimer();
 
   figures_.steps = sum.steps;
@@ -446,6 +483,13 @@ void ImplicitTransient::run(RunContext& ctx) {
                   sum.maxNewtonPerStep, sum.activeSetIterations, op.factorizations(), sum.failedSteps,
                   sum.smallestStep);
     log() << line;
+    if (sum.krylovIterations > 0) {
+      std::snprintf(line, sizeof line,
+                    "  Krylov iterations: %d (%.1f per step, %.1f per Newton solve)\n",
+                    sum.krylovIterations, double(sum.krylovIterations) / std::max(1, sum.steps),
+                    double(sum.krylovIterations) / std::max(1, sum.newtonIterations));
+      log() << line;
+    }
     std::snprintf(line, sizeof line,
                   "  time: %.3f s = assembly %.3f + linear solve %.3f + contact %.3f + output %.3f "
                   "+ other (rank 0)\n",

@@ -10,6 +10,7 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "analysis/EnergyBalance.hpp"
 #include "analysis/HistoryChecks.hpp"
 #include "analysis/HistoryProbes.hpp"
 #include "analysis/InitialConditions.hpp"
@@ -54,6 +55,7 @@ Teuchos::ParameterList ModalTransient::parameters() {
   declareInt(p, "Exodus Interval", 10, "write the Exodus fields every N steps (0: never)",
              Range::atLeast(0));
   declareInt(p, "Progress Lines", 10, "progress lines printed during the run", Range::atLeast(0));
+  declareEnergyBalance(p);
   declareInitialConditions(p);
   declareShockLinks(p);
   declareChecks(p);
@@ -175,7 +177,7 @@ void ModalTransient::run(RunContext& ctx) {
   std::vector<std::string> columns;
   for (const auto& p : probes) columns.push_back(p.column);
   for (const char* e : {"energy:kinetic", "energy:strain", "energy:contact", "energy:dissipated",
-                        "energy:total"})
+                        "energy:total", "energy:balance"})
     columns.push_back(e);
   for (const auto& l : links.links()) {
     columns.push_back(l.name + ":force");
@@ -207,6 +209,8 @@ void ModalTransient::run(RunContext& ctx) {
   ModalIntegrator integrator(scheme, w2, c, links, params_.get<int>("Refinement Factor"));
   integrator.initialize(state, t0);
   RecordedHistory rec;
+  // No external loads in a modal transient (obstacles are fixed): W_external = 0.
+  EnergyBalanceMonitor balance(params_, "modal transient '" + name_ + "'");
   std::vector<double> row(columns.size() - 0);
   Vector field(model.map());
 
@@ -241,6 +245,7 @@ void ModalTransient::run(RunContext& ctx) {
     row[j++] = ec;
     row[j++] = ed;
     row[j++] = ek + es + ec;
+    row[j++] = balance.update(state.t, ek + es + ec, ed, 0.0);
     for (const auto& l : links.links()) {
       row[j++] = l.last.normalForce;
       row[j++] = l.last.gap;
@@ -284,7 +289,7 @@ void ModalTransient::run(RunContext& ctx) {
   try {
     record(0);
     for (long long n = 1; n <= nsteps; ++n) {
-      if (n % interruptEvery == 0) throwIfInterrupted(what, state.t);
+      if (n % interruptEvery == 0) throwIfInterrupted(what, state.t, model.rawComm());
       integrator.advance(state, dt, substeps);
       state.t = t0 + n * dt;
       record(n);
@@ -315,6 +320,7 @@ void ModalTransient::run(RunContext& ctx) {
                 "history %s.history.csv\n",
                 nsteps, integrator.subStepsTaken(), loop, 1e6 * loop / nsteps, base.c_str());
   log() << buf;
+  log() << balance.summary();
 
   auto results = evaluateDeclaredChecks(params_, rec, name_);
   auto exact = compareWithExact(params_, rec, model, name_, "Analyses/" + name_);

@@ -1,5 +1,7 @@
 #include "analysis/Model.hpp"
 
+#include <Teuchos_DefaultMpiComm.hpp>
+
 #include <algorithm>
 #include <sstream>
 
@@ -155,6 +157,12 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
   } catch (const std::invalid_argument& e) {
     throwInput(file, "Mesh/File", meshFile, e.what());
   }
+}
+
+MPI_Comm Model::rawComm() const {
+  auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_);
+  if (mpi.is_null()) return MPI_COMM_SELF;
+  return (*mpi->getRawMpiComm())();
 }
 
 const NodeSet& Model::nodeSet(const std::string& name, const std::string& parameter) const {

@@ -1,6 +1,8 @@
 // The discrete model of one input: mesh, element physics per block, the DOF map (only the
 // components the scene needs are unknowns) and the assembled stiffness and mass.
 #pragma once
+#include <mpi.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,6 +27,8 @@ class Model {
   const DofMap& dofs() const { return *dofs_; }
   RCP<const Map> map() const { return assembler_->map(); }
   RCP<const Comm> comm() const { return comm_; }
+  // The raw MPI communicator of comm() (MPI_COMM_WORLD unless the model was built on another).
+  MPI_Comm rawComm() const;
   const std::string& inputFile() const { return inputFile_; }
   RCP<const CrsMatrix> stiffness();  // assembled once, cached
   RCP<const CrsMatrix> mass();

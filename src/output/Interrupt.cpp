@@ -47,15 +47,15 @@ const char* signalName(int sig) {
 
 namespace {
 
-int agreedSignal() {
+int agreedSignal(MPI_Comm comm = MPI_COMM_WORLD) {
   int sig = g_signal;
   int initialized = 0, finalized = 0, size = 1;
   MPI_Initialized(&initialized);
   MPI_Finalized(&finalized);
-  if (initialized && !finalized) MPI_Comm_size(MPI_COMM_WORLD, &size);
+  if (initialized && !finalized) MPI_Comm_size(comm, &size);
   if (size > 1) {
     int any = 0;
-    MPI_Allreduce(&sig, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    MPI_Allreduce(&sig, &any, 1, MPI_INT, MPI_MAX, comm);
     sig = any;
   }
   return sig;
@@ -69,8 +69,8 @@ void throwIfInterruptedBefore(const std::string& what) {
     throw Interrupted(sig, std::string(signalName(sig)) + " received: run stopped before " + what);
 }
 
-void throwIfInterrupted(const std::string& what, double time) {
-  const int sig = agreedSignal();
+void throwIfInterrupted(const std::string& what, double time, MPI_Comm comm) {
+  const int sig = agreedSignal(comm);
   if (sig == 0) return;
   char t[64];
   std::snprintf(t, sizeof t, "%.6e", time);

@@ -5,6 +5,8 @@
 // A second signal while the first is being handled kills the process at once (the default
 // action): the files then stay as "*.part", never with the name of a complete result.
 #pragma once
+#include <mpi.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -27,9 +29,9 @@ bool interruptRequested();        // on this process
 int interruptSignal();            // the signal received, 0 if none
 const char* signalName(int sig);  // "SIGINT", "SIGTERM", ...
 // Throws Interrupted naming 'what' and the time when a signal was received. On more than one
-// MPI rank every rank must call it at the same step boundary: the flag is reduced over the
-// default communicator (a rank that did not see the signal stops too).
-void throwIfInterrupted(const std::string& what, double time);
+// MPI rank every rank of `comm` (the analysis's communicator) must call it at the same step
+// boundary: the flag is reduced over it (a rank that did not see the signal stops too).
+void throwIfInterrupted(const std::string& what, double time, MPI_Comm comm = MPI_COMM_WORLD);
 // The same between two analyses: "<signal> received: run stopped before <what>".
 void throwIfInterruptedBefore(const std::string& what);
 // For tests: as if the signal had been received (0 clears the flag).
