@@ -9,6 +9,7 @@
 #include "fem/FieldGather.hpp"
 #include "input/Errors.hpp"
 #include "input/ParameterSpec.hpp"
+#include "input/Vector3.hpp"
 
 namespace choc {
 
@@ -39,20 +40,6 @@ void declareShockLinks(Teuchos::ParameterList& p) {
   declareDouble(l, "Friction Coefficient", 0.0, "Coulomb coefficient mu", Range::nonNegative());
 }
 
-namespace {
-
-Vec3 parseVector(const std::string& text, const std::string& file, const std::string& param) {
-  std::istringstream in(text);
-  Vec3 v{};
-  for (double& x : v)
-    if (!(in >> x)) throwInput(file, param, text, "expects three numbers 'x y z'");
-  std::string rest;
-  if (in >> rest) throwInput(file, param, text, "expects three numbers 'x y z'");
-  return v;
-}
-
-}  // namespace
-
 ModalLinks::ModalLinks(const Teuchos::ParameterList& p, const Model& model,
                        const ModalBasis& basis, const std::string& path) {
   modes_ = static_cast<int>(basis.eigenvalues.size());
@@ -70,7 +57,7 @@ ModalLinks::ModalLinks(const Teuchos::ParameterList& p, const Model& model,
       throwInput(file, lpath + "/Node 2", n2, "is the same node as Node 1",
                  "link two different nodes, or leave Node 2 empty for a fixed obstacle");
     l.law.shape = parseObstacleShape(lp.get<std::string>("Obstacle"));
-    const Vec3 axis = parseVector(lp.get<std::string>("Axis"), file, lpath + "/Axis");
+    const Vec3 axis = parseVector3(lp.get<std::string>("Axis"), file, lpath + "/Axis");
     if (!(dot(axis, axis) > 0)) throwInput(file, lpath + "/Axis", lp.get<std::string>("Axis"), "must not be zero");
     l.law.frame = obstacleFrame(axis, lp.get<double>("Twist") * M_PI / 180.0);
     l.law.dist1 = lp.get<double>("DIST_1");

@@ -10,6 +10,7 @@
 #include "fem/Hex8Element.hpp"
 #include "input/Errors.hpp"
 #include "input/Validation.hpp"
+#include "input/Vector3.hpp"
 #include "input/XmlInput.hpp"
 #include "mesh/ExodusReader.hpp"
 
@@ -21,16 +22,6 @@ std::string joinNames(const std::vector<std::string>& names) {
   std::string s;
   for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
   return s.empty() ? "(none)" : s;
-}
-
-Point3 parsePoint(const std::string& text, const std::string& file, const std::string& param) {
-  std::istringstream in(text);
-  Point3 p{};
-  for (double& v : p)
-    if (!(in >> v)) throwInput(file, param, text, "expects three numbers 'x y z'");
-  std::string rest;
-  if (in >> rest) throwInput(file, param, text, "expects three numbers 'x y z'");
-  return p;
 }
 
 BeamSection beamSection(const Teuchos::ParameterList& sec, const std::string& file,
@@ -51,7 +42,7 @@ BeamSection beamSection(const Teuchos::ParameterList& sec, const std::string& fi
                    "set 'Square Side' or all of Area, Iy, Iz, Torsion Constant");
   }
   s.shearCoefficientY = s.shearCoefficientZ = sec.get<double>("Shear Coefficient");
-  s.orientation = parsePoint(sec.get<std::string>("Orientation"), file, path + "/Orientation");
+  s.orientation = parseVector3(sec.get<std::string>("Orientation"), file, path + "/Orientation");
   return s;
 }
 
