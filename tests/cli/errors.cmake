@@ -1,7 +1,7 @@
 # Command-line tests: one test per error message (exit code 1, exactly one line on stderr that
 # names the file, the parameter and the problem), and the commands that must succeed.
 # Bad inputs live in tests/cli/inputs/: each bad_*.xml is base.xml with one thing changed.
-# The table of messages is tests/cli/ERRORS.md.
+# The table of messages is in README.md, "Input errors".
 set(CLI_INPUTS ${CMAKE_CURRENT_LIST_DIR}/inputs)
 set(CLI_SCRIPTS ${CMAKE_CURRENT_LIST_DIR}/scripts)
 set(CLI_WORK ${CMAKE_CURRENT_BINARY_DIR}/work)
