@@ -150,6 +150,7 @@ def parse_results(log, out, analysis):
 # ---------------------------------------------------------------- the cases
 def mesh_for(build, workdir, dim, along, gap_shift=None, gap=1e-5):
     """Generates (once) a bar-impact mesh with `along` elements per bar."""
+    workdir = os.path.abspath(workdir)  # choc resolves a relative mesh path beside the input
     os.makedirs(os.path.join(workdir, "meshes"), exist_ok=True)
     name = f"bars_{dim}d_{along}{'_b' if gap_shift else ''}_gap{gap:g}.exo"
     path = os.path.join(workdir, "meshes", name)
