@@ -5,18 +5,25 @@ set -uo pipefail
 top="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$top/build}"
 cd "$top"
+mkdir -p results
 status=0
-for input in input/sdnl111?.xml; do
+# The SDNL111 inputs plus the configurations beyond the reference.
+for input in input/sdnl111?.xml input/sdnl111a_rigid.xml input/sdnl111c_accurate.xml; do
   name=$(basename "$input" .xml)
   echo "== $name"
   "$build/choc" run "$input" -o "results/$name" > "results/$name.log" 2>&1
   rc=$?
   grep -E "checks|NOOK|exact solution|unknowns;|done in|error" "results/$name.log" | grep -v "step " || true
   echo "   exit code $rc (log: results/$name.log)"
-  [ $rc -eq 0 ] || status=1
+  if [ $rc -eq 3 ] && ! grep ",NOOK," "results/$name/checks.csv" | grep -vq "known inconsistency"; then
+    # Every failing row is a documented inconsistency of the document (BRIEF section 1).
+    echo "   the only NOOK rows are the document's known inconsistencies (see their note)"
+  elif [ $rc -ne 0 ]; then
+    status=1
+  fi
 done
 if [ -x "$top/tools/make_report.py" ]; then
-  python3 "$top/tools/make_report.py" results || status=1
+  /usr/bin/python3 "$top/tools/make_report.py" results || status=1
 fi
 # ParaView views of the transient results (results/paraview/); optional, never fails the run.
 if command -v pvbatch >/dev/null 2>&1 && command -v xvfb-run >/dev/null 2>&1; then
