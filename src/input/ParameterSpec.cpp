@@ -41,7 +41,9 @@ bool Range::contains(double v) const {
 }
 
 std::string Range::describe() const {
-  return std::string(loOpen ? "(" : "[") + number(lo) + ", " + number(hi) + (hiOpen ? ")" : "]");
+  // An infinite end is never attained: always an open bracket.
+  return std::string(loOpen || std::isinf(lo) ? "(" : "[") + number(lo) + ", " + number(hi) +
+         (hiOpen || std::isinf(hi) ? ")" : "]");
 }
 
 SpecValidator::SpecValidator(Kind kind, Range range, std::vector<std::string> choices,
