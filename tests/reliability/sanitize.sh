@@ -5,7 +5,7 @@
 # targets needed, with -j2; then runs the unit tests of input, mesh, fem, reference, output,
 # contact and analysis and a shortened SDNL111 B (tests/reliability/inputs/sdnl111b_short.xml)
 # with leak detection on and UBSan halting on the first error. Fails on any sanitizer report.
-# An existing ASAN_BUILD_DIR is reused, so a warm run only recompiles what changed.
+# An existing ASAN_BUILD_DIR is reused (reconfigured), so a warm run only recompiles what changed.
 # Leaks reported at exit inside Open MPI, hwloc and Kokkos are suppressed by
 # tests/reliability/lsan.supp (library frames only; see that file).
 set -uo pipefail
@@ -15,7 +15,8 @@ jobs="${CHOC_SANITIZE_JOBS:-2}"
 start=$(date +%s)
 stamp() { echo "sanitize: [$(( $(date +%s) - start )) s] $*"; }
 
-if [ ! -f "$bdir/CMakeCache.txt" ]; then
+# Configure every time (cheap on an existing tree): a reused tree must see new source files.
+if true; then
   stamp "configuring $bdir"
   cmake -S "$src" -B "$bdir" -DCHOC_SANITIZE=ON -DCMAKE_BUILD_TYPE=Release \
         -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" -DCMAKE_C_FLAGS_RELEASE="-O1 -g1" \
@@ -25,6 +26,9 @@ fi
 modules=(input mesh fem reference output contact analysis)
 targets=(choc)
 for m in "${modules[@]}"; do targets+=("unit_$m"); done
+# The build runs the test executables only to list their tests (gtest_discover_tests): that is
+# not a test run, so leaks at exit are not checked there (they are in the runs below).
+export ASAN_OPTIONS="detect_leaks=0"
 stamp "building ${targets[*]} (-j$jobs)"
 if ! cmake --build "$bdir" -j "$jobs" --target "${targets[@]}" > "$bdir/asan-build.log" 2>&1; then
   tail -n 60 "$bdir/asan-build.log"; echo "sanitize: build failed"; exit 1
@@ -37,13 +41,26 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export OMPI_MCA_btl="self,vader"  # no network probing under ASan
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 logs="$bdir/sanitize-logs"; rm -rf "$logs"; mkdir -p "$logs"
+CHOC_PY=$(command -v /usr/bin/python3 || command -v python3)
 failed=()
 check_log() {  # name rc log
-  if [ "$2" -ne 0 ] || grep -qE "ERROR: (AddressSanitizer|LeakSanitizer)|runtime error:|SUMMARY: (Address|UndefinedBehavior|Leak)Sanitizer" "$3"; then
+  # Memory errors and undefined behaviour: any report fails. Leaks: only those with a frame in
+  # choc's own code fail (leak_report.py); library-only blocks at exit are listed, not hidden.
+  local bad=0
+  if grep -qE "ERROR: AddressSanitizer|runtime error:|SUMMARY: (Address|UndefinedBehavior)Sanitizer: [^0-9]" "$3"; then
+    bad=1
+    grep -nE -A40 "ERROR: AddressSanitizer|runtime error:" "$3" | head -n 120
+  fi
+  if grep -q "ERROR: LeakSanitizer" "$3"; then
+    "$CHOC_PY" "$here/leak_report.py" "$3" "$src" || bad=1
+  elif [ "$2" -ne 0 ]; then
+    bad=1
+  fi
+  # A run that failed for another reason (a test failure) also fails.
+  if grep -qE "^\[  FAILED  \]" "$3"; then bad=1; fi
+  if [ $bad -ne 0 ]; then
     failed+=("$1 (exit $2)")
-    echo "---- $1: exit $2, sanitizer output:"
-    grep -nE -A40 "ERROR: (AddressSanitizer|LeakSanitizer)|runtime error:" "$3" | head -n 120
-    [ "$2" -ne 0 ] && tail -n 20 "$3"
+    echo "---- $1: exit $2"; tail -n 20 "$3"
   fi
 }
 for m in "${modules[@]}"; do
@@ -67,4 +84,4 @@ if [ ${#failed[@]} -gt 0 ]; then
   echo "sanitize: FAILED: ${failed[*]} (logs in $logs)"
   exit 1
 fi
-echo "sanitize: OK (no ASan/LSan/UBSan report; logs in $logs)"
+echo "sanitize: OK (no ASan or UBSan report, no leak in choc's code; logs in $logs)"
