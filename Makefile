@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test clean
+.PHONY: all deps configure build run test study bench bench-inputs clean
 
 all: build
 
@@ -28,6 +28,20 @@ run: build
 # The whole test suite (unit tests, regression cases, error messages).
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
+# The scale benchmark: input/scale-3d.xml (300,300 unknowns) on 1 and 2 MPI ranks, then smaller
+# sizes of the same scene (README "Scale"); generates meshes/scale_3d.exo when missing.
+bench: build
+	$(PYTHON) tools/bench_scale.py --build $(BUILD) --sizes $(BENCH_ARGS)
+
+# The speed-accuracy study: sweeps, results/study/study.csv, Pareto plots and README.md.
+study: build
+	$(PYTHON) tools/study.py --build $(BUILD) --out results/study
+	$(PYTHON) tools/study_report.py results/study
+
+# Wall time of every SDNL111 input, start-up included (prints figures; not a test).
+bench-inputs: build
+	tools/bench.sh $(BUILD) 5
 
 clean:
 	rm -rf $(BUILD) results

@@ -1,7 +1,14 @@
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <string>
+
+#include <sys/resource.h>
+
+#include <Teuchos_CommHelpers.hpp>
 
 #include <Tpetra_Core.hpp>
 
@@ -38,6 +45,49 @@ RunArgs parseRunArgs(const std::vector<std::string>& args, const std::string& cm
   }
   if (r.input.empty()) throw InputError("choc " + cmd + ": missing INPUT.xml (usage: choc " + cmd + " INPUT.xml)");
   return r;
+}
+
+// Peak resident set size of this process [bytes] (VmHWM of /proc/self/status; 0 if unknown).
+double peakResidentBytes() {
+  std::ifstream f("/proc/self/status");
+  std::string line;
+  while (std::getline(f, line))
+    if (line.rfind("VmHWM:", 0) == 0) return 1024.0 * std::stod(line.substr(6));  // kB
+  return 0.0;
+}
+
+// CPU time (user + system) of this process [s].
+double cpuSeconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+// Two log lines: the peak memory of every rank and the total per unknown; the CPU time of
+// every rank (on a loaded machine the wall time of several ranks says little; the CPU time
+// says what each rank computed).
+void logResources(const Teuchos::Comm<int>& comm, long long unknowns) {
+  const int n = comm.getSize();
+  std::vector<double> mine(2 * n, 0.0), all(2 * n, 0.0);
+  mine[comm.getRank()] = peakResidentBytes();
+  mine[n + comm.getRank()] = cpuSeconds();
+  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 2 * n, mine.data(), all.data());
+  double total = 0.0;
+  std::string per, cpu;
+  for (int r = 0; r < n; ++r) {
+    total += all[r];
+    char s[32];
+    std::snprintf(s, sizeof s, "%s%.1f", per.empty() ? "" : " ", all[r] / 1048576.0);
+    per += s;
+    std::snprintf(s, sizeof s, "%s%.2f", cpu.empty() ? "" : " ", all[n + r]);
+    cpu += s;
+  }
+  char line[160];
+  std::snprintf(line, sizeof line, "; all ranks %.1f MiB, %.0f bytes per unknown\n", total / 1048576.0,
+                unknowns > 0 ? total / double(unknowns) : 0.0);
+  log() << "memory: peak resident per rank [MiB]: " << per << line;
+  log() << "cpu time per rank [s]: " << cpu << "\n";
 }
 
 }  // namespace
@@ -111,6 +161,7 @@ int runRunCommand(const std::vector<std::string>& args) {
     }
     log() << "\nchecks (" << checksPath << "):\n" << formatCheckTable(ctx.checks);
   }
+  logResources(*comm, model.dofs().numGlobal());
   const double total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   log() << "\nresults in " << a.outputDir << "/ (" << total << " s)\n";

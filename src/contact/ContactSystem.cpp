@@ -35,42 +35,49 @@ ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
     map_ = dofMap;
   }
 
-  // Graph: K and M patterns, then every contact coupling.
-  std::vector<std::set<GO>> cols(gids.size());
+  // Graph: K and M patterns, then every contact coupling (sorted vectors, not sets: a
+  // 300,000-row system has 25 million entries).
+  std::vector<std::vector<GO>> cols(gids.size());
   Teuchos::Array<GO> ci;
   Teuchos::Array<double> cv;
   for (size_t i = 0; i < nLocalDofs_; ++i) {
+    auto& row = cols[i];
     for (const CrsMatrix* X : {K_.get(), M_.get()}) {
       const size_t n = X->getNumEntriesInGlobalRow(gids[i]);
       ci.resize(n);
       cv.resize(n);
       size_t got = 0;
       X->getGlobalRowCopy(gids[i], ci(), cv(), got);
-      cols[i].insert(ci.begin(), ci.begin() + got);
+      row.insert(row.end(), ci.begin(), ci.begin() + got);
     }
-    cols[i].insert(gids[i]);
+    row.push_back(gids[i]);
   }
   for (int s = 0; s < nS; ++s) {
     const auto& terms = contact_->constraints()[s].terms;
     for (const auto& [di, ciJ] : terms) {
       const LO l = dofMap->getLocalElement(di);
       if (l == Teuchos::OrdinalTraits<LO>::invalid()) continue;
-      for (const auto& t : terms) cols[l].insert(t.first);
-      if (extended_) cols[l].insert(nU + s);
+      for (const auto& t : terms) cols[l].push_back(t.first);
+      if (extended_) cols[l].push_back(nU + s);
       (void)ciJ;
     }
     if (extended_ && rowOfConstraint_[s] >= 0) {
       auto& row = cols[rowOfConstraint_[s]];
-      for (const auto& t : terms) row.insert(t.first);
-      row.insert(nU + s);
+      for (const auto& t : terms) row.push_back(t.first);
+      row.push_back(nU + s);
     }
   }
   std::vector<size_t> counts(gids.size());
-  for (size_t i = 0; i < gids.size(); ++i) counts[i] = cols[i].size();
+  for (size_t i = 0; i < gids.size(); ++i) {
+    auto& row = cols[i];
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    counts[i] = row.size();
+  }
   auto graph = rcp(new Tpetra::CrsGraph<LO, GO>(map_, Teuchos::ArrayView<const size_t>(counts)));
   for (size_t i = 0; i < gids.size(); ++i) {
-    std::vector<GO> c(cols[i].begin(), cols[i].end());
-    graph->insertGlobalIndices(gids[i], Teuchos::ArrayView<const GO>(c));
+    graph->insertGlobalIndices(gids[i], Teuchos::ArrayView<const GO>(cols[i]));
+    std::vector<GO>().swap(cols[i]);
   }
   graph->fillComplete(map_, map_);
   A_ = rcp(new CrsMatrix(graph));

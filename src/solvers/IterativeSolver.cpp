@@ -24,20 +24,34 @@ class BelosSolver : public LinearSolver {
       : method_(p.get<std::string>("Method")),
         precType_(p.get<std::string>("Preconditioner")),
         tol_(p.get<double>("Tolerance")),
-        maxIters_(p.get<int>("Maximum Iterations")) {}
+        maxIters_(p.get<int>("Maximum Iterations")),
+        overlap_(p.isParameter("Schwarz Overlap") ? p.get<int>("Schwarz Overlap") : 1) {}
 
   void setMatrix(RCP<const CrsMatrix> A) override {
     A_ = A;
     prec_ = Teuchos::null;
     if (precType_ != "None") {
       const std::string ifpackName =
-          precType_ == "Jacobi" || precType_ == "Gauss-Seidel" ? "RELAXATION" : precType_;
+          precType_ == "Jacobi" || precType_ == "Gauss-Seidel" ? "RELAXATION"
+          : precType_ == "Additive Schwarz"                    ? "SCHWARZ"
+                                                               : precType_;
       try {
         prec_ = Ifpack2::Factory::create<RowMatrix>(ifpackName, A);
         Teuchos::ParameterList pp;
         if (precType_ == "Jacobi") pp.set("relaxation: type", "Jacobi");
         if (precType_ == "Gauss-Seidel") pp.set("relaxation: type", "Symmetric Gauss-Seidel");
         if (precType_ == "RILUK") pp.set("fact: iluk level-of-fill", 1);
+        if (precType_ == "Additive Schwarz") {
+          // One subdomain per rank, overlapping by one layer of matrix neighbours, each
+          // solved by ILU(0): a one-level domain decomposition (restricted additive Schwarz
+          // would break the symmetry CG needs, so the combine mode stays "Add").
+          pp.set("schwarz: overlap level", overlap_);
+          pp.set("schwarz: combine mode", "Add");
+          pp.set("inner preconditioner name", "RILUK");
+          Teuchos::ParameterList inner;
+          inner.set("fact: iluk level-of-fill", 0);
+          pp.set("inner preconditioner parameters", inner);
+        }
         prec_->setParameters(pp);
         prec_->initialize();
         prec_->compute();
@@ -46,34 +60,39 @@ class BelosSolver : public LinearSolver {
                              std::string(e.what()).substr(0, 200));
       }
     }
+    // The Belos problem and solver are built once per matrix and reused by every solve()
+    // (only the right-hand side and the initial guess change between solves).
+    problem_ = rcp(new Belos::LinearProblem<double, MultiVector, Operator>());
+    problem_->setOperator(A_);
+    if (!prec_.is_null()) problem_->setRightPrec(prec_);
+    if (solver_.is_null()) {
+      auto params = rcp(new Teuchos::ParameterList);
+      params->set("Convergence Tolerance", tol_);
+      params->set("Maximum Iterations", maxIters_);
+      if (method_ == "GMRES") params->set("Num Blocks", std::min(maxIters_, 300));
+      Belos::SolverFactory<double, MultiVector, Operator> factory;
+      solver_ = factory.create(method_ == "CG" ? "PSEUDOBLOCK CG"
+                               : method_ == "MINRES" ? "MINRES" : "PSEUDOBLOCK GMRES", params);
+    }
+    solver_->setProblem(problem_);
     ++factorizations_;
   }
 
   LinearSolveStatus solve(const MultiVector& b, MultiVector& x) override {
     LinearSolveStatus st;
-    auto problem = rcp(new Belos::LinearProblem<double, MultiVector, Operator>(
-        A_, Teuchos::rcpFromRef(x), Teuchos::rcpFromRef(b)));
-    if (!prec_.is_null()) problem->setRightPrec(prec_);
-    if (!problem->setProblem()) {
+    if (!problem_->setProblem(Teuchos::rcpFromRef(x), Teuchos::rcpFromRef(b))) {
       st.message = "Belos could not set up the linear problem";
       return st;
     }
-    auto params = rcp(new Teuchos::ParameterList);
-    params->set("Convergence Tolerance", tol_);
-    params->set("Maximum Iterations", maxIters_);
-    if (method_ == "GMRES") params->set("Num Blocks", std::min(maxIters_, 300));
-    Belos::SolverFactory<double, MultiVector, Operator> factory;
-    auto solver = factory.create(method_ == "CG" ? "PSEUDOBLOCK CG"
-                                 : method_ == "MINRES" ? "MINRES" : "PSEUDOBLOCK GMRES", params);
-    solver->setProblem(problem);
+    solver_->reset(Belos::Problem);
     Belos::ReturnType ret;
     try {
-      ret = solver->solve();
+      ret = solver_->solve();
     } catch (const std::exception& e) {
       st.message = "Belos " + method_ + " failed: " + std::string(e.what()).substr(0, 200);
       return st;
     }
-    st.iterations = solver->getNumIters();
+    st.iterations = solver_->getNumIters();
     st.relativeResidual = relativeResidual(*A_, b, x);
     // Belos' own test is on the preconditioned residual: confirm with the true one.
     st.converged = ret == Belos::Converged && std::isfinite(st.relativeResidual) &&
@@ -89,9 +108,11 @@ class BelosSolver : public LinearSolver {
  private:
   std::string method_, precType_;
   double tol_;
-  int maxIters_;
+  int maxIters_, overlap_;
   RCP<const CrsMatrix> A_;
   RCP<Preconditioner> prec_;
+  RCP<Belos::LinearProblem<double, MultiVector, Operator>> problem_;
+  RCP<Belos::SolverManager<double, MultiVector, Operator>> solver_;
 };
 
 }  // namespace

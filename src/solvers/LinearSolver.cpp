@@ -15,8 +15,12 @@ Teuchos::ParameterList linearSolverParameters() {
                 "Direct: Amesos2 sparse LU; CG/GMRES/MINRES: Belos Krylov solvers");
   declareChoice(p, "Direct Package", "KLU2", {"KLU2", "Basker", "SuperLU", "Umfpack"},
                 "Amesos2 package for Method = Direct");
-  declareChoice(p, "Preconditioner", "RILUK", {"None", "RILUK", "ILUT", "Jacobi", "Gauss-Seidel"},
-                "Ifpack2 preconditioner for the Krylov methods");
+  declareChoice(p, "Preconditioner", "RILUK", {"None", "RILUK", "ILUT", "Jacobi", "Gauss-Seidel", "Additive Schwarz"},
+                "Ifpack2 preconditioner for the Krylov methods (RILUK, ILUT and Gauss-Seidel act "
+                "on each rank's rows; Additive Schwarz: one overlapping subdomain per rank, "
+                "ILU(0) inside)");
+  declareInt(p, "Schwarz Overlap", 1, "overlap level of 'Additive Schwarz' (0: block Jacobi)",
+             Range::atLeast(0));
   declareDouble(p, "Tolerance", 1e-10,
                 "relative residual ||b-Ax||/||b|| a solve must reach (checked on the true "
                 "residual, also for the direct solver)",
