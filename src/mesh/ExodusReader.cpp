@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "input/Errors.hpp"
+#include "mesh/NetcdfHeader.hpp"
 
 namespace choc {
 
@@ -80,16 +81,21 @@ class Reader {
       throwInput(path_, "", "", "is a directory, not a mesh file", "give an Exodus II file");
     fileBytes_ = static_cast<int64_t>(std::filesystem::file_size(path_, ec));
     if (ec) fileBytes_ = 0;
+    // A corrupt classic header is refused before netCDF trusts its counts (NetcdfHeader.hpp).
+    if (checkNetcdfHeader(path_) == NetcdfStorage::Unknown) notExodus();
     ex_opts(EX_DEFAULT);  // no library messages on stderr: our error is the one line
     int cpuWordSize = 8, ioWordSize = 0;
     float version = 0.0f;
     file_.id = ex_open(path_.c_str(), EX_READ, &cpuWordSize, &ioWordSize, &version);
-    if (file_.id < 0)
-      throwInput(path_, "", "", "not a readable Exodus II file (empty, truncated or another format)",
-                 "give a mesh written by an Exodus II tool (e.g. 'choc mesh')");
+    if (file_.id < 0) notExodus();
     const int64_t used = ex_inquire_int(file_.id, EX_INQ_DB_MAX_USED_NAME_LENGTH);
     nameLength_ = static_cast<int>(std::clamp<int64_t>(used, 32, 256));
     check(ex_set_max_name_length(file_.id, nameLength_), path_, "the name length");
+  }
+
+  [[noreturn]] void notExodus() const {
+    throwInput(path_, "", "", "not a readable Exodus II file (empty, truncated or another format)",
+               "give a mesh written by an Exodus II tool (e.g. 'choc mesh')");
   }
 
   std::vector<std::string> names(ex_entity_type type, int count, const std::string& what) {
@@ -111,15 +117,59 @@ class Reader {
     return r;
   }
 
-  std::vector<int> ids(ex_entity_type type, int count, const std::string& what) {
+  // netCDF writes a whole variable into the buffer exodus passes on, whatever size the
+  // Exodus dimension of the same name declares: a corrupt file may make the two differ. The
+  // variable `var` must hold exactly `count` values before it is read into `count` slots.
+  void expectValues(const std::string& var, int64_t count, const std::string& what) {
+    int varId = -1, rank = 0;
+    if (nc_inq_varid(file_.id, var.c_str(), &varId) != NC_NOERR) return;  // exodus says so
+    int dimIds[NC_MAX_VAR_DIMS];
+    if (nc_inq_varndims(file_.id, varId, &rank) != NC_NOERR || rank < 0 ||
+        rank > NC_MAX_VAR_DIMS || nc_inq_vardimid(file_.id, varId, dimIds) != NC_NOERR)
+      badFile(path_, "cannot read the shape of variable '" + var + "'");
+    int64_t values = 1;
+    for (int d = 0; d < rank; ++d) {
+      size_t length = 0;
+      if (nc_inq_dimlen(file_.id, dimIds[d], &length) != NC_NOERR)
+        badFile(path_, "cannot read the shape of variable '" + var + "'");
+      values = length > static_cast<size_t>(fileBytes_) ? fileBytes_ + 1
+                                                          : values * static_cast<int64_t>(length);
+      if (values > fileBytes_) break;
+    }
+    if (values != count)
+      badFile(path_, what + ": variable '" + var + "' holds " +
+                         (values > fileBytes_ ? "more than the file's size in" : std::to_string(values)) +
+                         " values but its Exodus dimensions declare " + std::to_string(count) +
+                         " (file corrupt)");
+  }
+
+  // The ids of `count` entities (variable `var`), which must be distinct: exodus finds an
+  // entity's variables by the position of its id.
+  std::vector<int> ids(ex_entity_type type, int count, const std::string& what,
+                       const std::string& var) {
     std::vector<int> result(count);
-    if (count > 0) check(ex_get_ids(file_.id, type, result.data()), path_, what + " ids");
+    if (count == 0) return result;
+    expectValues(var, count, what + " ids");
+    check(ex_get_ids(file_.id, type, result.data()), path_, what + " ids");
+    for (int i = 0; i < count; ++i)
+      for (int j = 0; j < i; ++j)
+        if (result[i] == result[j])
+          badFile(path_, what + " id " + std::to_string(result[i]) + " is used twice");
     return result;
   }
 
   void readCoordinates(Mesh& mesh, int dim, int numNodes) {
     std::vector<double> c[3];
     for (int d = 0; d < 3; ++d) c[d].assign(numNodes, 0.0);
+    if (numNodes > 0) {
+      int varId = -1;
+      if (nc_inq_varid(file_.id, "coordx", &varId) == NC_NOERR) {
+        for (int d = 0; d < dim; ++d)
+          expectValues(std::string("coord") + "xyz"[d], numNodes, "the node coordinates");
+      } else {
+        expectValues("coord", int64_t{dim} * numNodes, "the node coordinates");
+      }
+    }
     if (numNodes > 0)
       check(ex_get_coord(file_.id, c[0].data(), dim > 1 ? c[1].data() : nullptr,
                          dim > 2 ? c[2].data() : nullptr),
@@ -143,7 +193,7 @@ class Reader {
   }
 
   void readBlocks(Mesh& mesh, int count) {
-    const std::vector<int> blockIds = ids(EX_ELEM_BLOCK, count, "element block");
+    const std::vector<int> blockIds = ids(EX_ELEM_BLOCK, count, "element block", "eb_prop1");
     const std::vector<std::string> blockNames = names(EX_ELEM_BLOCK, count, "element block");
     for (int b = 0; b < count; ++b) {
       ex_block info{};
@@ -171,10 +221,13 @@ class Reader {
         badFile(path_, "element block '" + block.name + "' has an invalid element count");
       block.nodesPerElement = nodes;
       block.connectivity.resize(static_cast<std::size_t>(info.num_entry) * nodes);
-      if (info.num_entry > 0)
+      if (info.num_entry > 0) {
+        expectValues("connect" + std::to_string(b + 1), info.num_entry * nodes,
+                     "element block '" + block.name + "'");
         check(ex_get_conn(file_.id, EX_ELEM_BLOCK, block.id, block.connectivity.data(), nullptr,
                           nullptr),
               path_, "the connectivity of element block '" + block.name + "'");
+      }
       toZeroBased(block.connectivity, mesh.numNodes(),
                   "the connectivity of element block '" + block.name + "'");
       mesh.blocks.push_back(std::move(block));
@@ -190,7 +243,7 @@ class Reader {
   }
 
   void readNodeSets(Mesh& mesh, int count) {
-    const std::vector<int> setIds = ids(EX_NODE_SET, count, "node set");
+    const std::vector<int> setIds = ids(EX_NODE_SET, count, "node set", "ns_prop1");
     const std::vector<std::string> setNames = names(EX_NODE_SET, count, "node set");
     for (int s = 0; s < count; ++s) {
       NodeSet set;
@@ -198,15 +251,17 @@ class Reader {
       set.name = setNames[s].empty() ? "nodeset_" + std::to_string(set.id) : setNames[s];
       const std::string what = "node set '" + set.name + "'";
       set.nodes.resize(setSize(EX_NODE_SET, set.id, what));
-      if (!set.nodes.empty())
+      if (!set.nodes.empty()) {
+        expectValues("node_ns" + std::to_string(s + 1), set.nodes.size(), what);
         check(ex_get_set(file_.id, EX_NODE_SET, set.id, set.nodes.data(), nullptr), path_, what);
+      }
       toZeroBased(set.nodes, mesh.numNodes(), what);
       mesh.nodeSets.push_back(std::move(set));
     }
   }
 
   void readSideSets(Mesh& mesh, int count) {
-    const std::vector<int> setIds = ids(EX_SIDE_SET, count, "side set");
+    const std::vector<int> setIds = ids(EX_SIDE_SET, count, "side set", "ss_prop1");
     const std::vector<std::string> setNames = names(EX_SIDE_SET, count, "side set");
     for (int s = 0; s < count; ++s) {
       SideSet set;
@@ -216,9 +271,12 @@ class Reader {
       const int n = setSize(EX_SIDE_SET, set.id, what);
       set.elements.resize(n);
       set.sides.resize(n);
-      if (n > 0)
+      if (n > 0) {
+        expectValues("elem_ss" + std::to_string(s + 1), n, what);
+        expectValues("side_ss" + std::to_string(s + 1), n, what);
         check(ex_get_set(file_.id, EX_SIDE_SET, set.id, set.elements.data(), set.sides.data()),
               path_, what);
+      }
       toZeroBased(set.elements, mesh.numElements(), what);
       for (int i = 0; i < n; ++i) {
         const ElementBlock& block = mesh.blocks[mesh.locateElement(set.elements[i]).first];

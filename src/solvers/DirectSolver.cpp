@@ -1,6 +1,7 @@
 #include "solvers/DirectSolver.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include <Amesos2.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
@@ -9,10 +10,17 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include "input/Errors.hpp"
+#include "solvers/CollectiveFailure.hpp"
 
 namespace choc {
 
 namespace {
+
+std::string scientific(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3e", v);
+  return text;
+}
 
 std::string firstLine(const std::string& s) {
   auto p = s.find('\n');
@@ -49,7 +57,10 @@ class Amesos2Solver : public LinearSolver {
  public:
   Amesos2Solver(std::string package, double tol) : package_(package), tol_(tol), serial_(package) {}
 
+  // On more than one rank only rank 0 factors: its failure is shared (CollectiveFailure.hpp)
+  // so that every rank throws, none waits in the next solve.
   void setMatrix(RCP<const CrsMatrix> A) override {
+    std::string failure;
     try {
       A_ = A;
       if (A->getComm()->getSize() == 1) {
@@ -59,37 +70,49 @@ class Amesos2Solver : public LinearSolver {
         if (A->getComm()->getRank() == 0) serial_.factor(rootSerial_);
       }
     } catch (const std::exception& e) {
-      throw NumericalError("direct solver " + package_ + ": factorisation failed (singular or " +
-                           "unconstrained system?): " + firstLine(e.what()));
+      failure = firstLine(e.what());
     }
+    failure = collectiveFailure(*A->getComm(), failure);
+    if (!failure.empty())
+      throw NumericalError("direct solver " + package_ + ": factorisation failed (singular or " +
+                           "unconstrained system?): " + failure);
     ++factorizations_;
   }
 
   LinearSolveStatus solve(const MultiVector& b, MultiVector& x) override {
     LinearSolveStatus st;
-    try {
-      if (A_->getComm()->getSize() == 1) {
+    std::string failure;
+    if (A_->getComm()->getSize() == 1) {
+      try {
         serial_.solve(b, x);
-      } else {
-        MultiVector bRoot(rootMap_, b.getNumVectors()), xRoot(rootMap_, b.getNumVectors());
-        bRoot.doImport(b, *importer_, Tpetra::INSERT);
-        if (A_->getComm()->getRank() == 0) {
+      } catch (const std::exception& e) {
+        failure = firstLine(e.what());
+      }
+    } else {
+      MultiVector bRoot(rootMap_, b.getNumVectors()), xRoot(rootMap_, b.getNumVectors());
+      bRoot.doImport(b, *importer_, Tpetra::INSERT);
+      if (A_->getComm()->getRank() == 0) {
+        try {
           MultiVector bs(serialMap_, b.getNumVectors()), xs(serialMap_, b.getNumVectors());
           copyLocal(bRoot, bs);
           serial_.solve(bs, xs);
           copyLocal(xs, xRoot);
+        } catch (const std::exception& e) {
+          failure = firstLine(e.what());
         }
-        x.doExport(xRoot, *importer_, Tpetra::INSERT);
       }
-    } catch (const std::exception& e) {
-      st.message = "direct solve failed: " + firstLine(e.what());
+      x.doExport(xRoot, *importer_, Tpetra::INSERT);
+      failure = collectiveFailure(*A_->getComm(), failure);
+    }
+    if (!failure.empty()) {
+      st.message = "direct solve failed: " + failure;
       return st;
     }
     st.relativeResidual = relativeResidual(*A_, b, x);
     st.converged = std::isfinite(st.relativeResidual) && st.relativeResidual <= tol_;
     if (!st.converged)
-      st.message = "direct solve residual " + std::to_string(st.relativeResidual) + " above " +
-                   std::to_string(tol_) + " (singular or ill-conditioned matrix)";
+      st.message = "direct solve residual " + scientific(st.relativeResidual) + " above " +
+                   scientific(tol_) + " (singular or ill-conditioned matrix)";
     return st;
   }
 

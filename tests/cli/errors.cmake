@@ -92,6 +92,11 @@ choc_cli_input_error(mesh_file_missing check bad_mesh_missing.xml
   "parameter 'Mesh/File' = 'no_such_mesh.exo': cannot use the mesh: [^ ]*no_such_mesh.exo: mesh file not found")
 choc_cli_input_error(mesh_file_not_exodus check bad_mesh_not_exodus.xml
   "parameter 'Mesh/File' = 'not_exodus.txt': cannot use the mesh: [^ ]*not_exodus.txt: not a readable Exodus II file")
+# A header whose counts do not fit the file is refused before netCDF allocates what they declare.
+choc_cli_input_error(mesh_file_corrupt_header check bad_mesh_corrupt_header.xml
+  "parameter 'Mesh/File' = 'corrupt_header.exo': cannot use the mesh: [^ ]*corrupt_header.exo: corrupt netCDF header at byte 156: the name of dimension 3 is 1853189471 bytes long \\(netCDF names have 1 to 256\\). check that the file is a complete Exodus II mesh")
+choc_cli_input_error(mesh_file_truncated check bad_mesh_truncated.xml
+  "parameter 'Mesh/File' = 'truncated.exo': cannot use the mesh: [^ ]*truncated.exo: data past the end of the file \\(truncated\\?\\): variable 'time_whole' starts at byte 6092 but the file has 2000 bytes")
 choc_cli_input_error(node_set_not_in_mesh check bad_nodeset_unknown.xml
   "parameter 'Model/Dirichlet/clamped end D/Node Set' = 'DD': no node set of that name in the mesh. did you mean 'D'\\? node sets: A, B, C, D, POU1, POU2")
 choc_cli_input_error(block_not_in_mesh check bad_block_unknown.xml

@@ -6,7 +6,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <utility>
 
 #include "input/Errors.hpp"
 #include "mesh/BarImpactMesh.hpp"
@@ -223,6 +225,34 @@ TEST_F(ExodusIO, TruncatedFile) {
     fs::resize_file(file("cut_part.exo"), keep);
     readError(file("cut_part.exo"));
   }
+}
+
+}  // namespace
+
+namespace {
+
+// Swaps two equally long byte strings everywhere in a file.
+void swapInFile(const std::string& path, const std::string& a, const std::string& b) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  in.close();
+  const std::string marker(a.size(), '\x01');
+  for (auto [from, to] : {std::pair{a, marker}, std::pair{b, a}, std::pair{marker, b}})
+    for (auto at = bytes.find(from); at != std::string::npos; at = bytes.find(from, at + 1))
+      bytes.replace(at, from.size(), to);
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// Found by the fuzzer: a node set's Exodus dimension (num_nod_ns1) shorter than its netCDF
+// variable (node_ns1), which netCDF writes whole into the buffer sized by the dimension.
+TEST_F(ExodusIO, SetVariableLongerThanItsDimensionIsRefused) {
+  choc::BarImpactOptions o;  // node sets A, B, C, D (1 node each), POU1, POU2 (a bar each)
+  const std::string path = file("swapped.exo");
+  choc::writeExodusMesh(choc::generateBarImpactMesh(o), path);
+  swapInFile(path, std::string("num_nod_ns1\0", 12), std::string("num_nod_ns5\0", 12));
+  const std::string m = readError(path);
+  EXPECT_NE(m.find("variable 'node_ns1' holds 1 values but its Exodus dimensions declare"),
+            std::string::npos) << m;
 }
 
 }  // namespace
