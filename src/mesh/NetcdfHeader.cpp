@@ -1,6 +1,7 @@
 // Walks a netCDF classic header with every count checked against the file's size.
 #include "mesh/NetcdfHeader.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -58,6 +59,17 @@ class HeaderWalk {
     readDimensions();
     readAttributes("a global attribute");
     readVariables();
+    // A record holds every record variable's slab, each padded to 4 bytes unless there is
+    // only one record variable.
+    int recordVariables = 0;
+    for (const auto& v : variables_) {
+      if (!v.record) continue;
+      ++recordVariables;
+      recordBytes_ = std::min(size_ + 1, recordBytes_ + padded4(v.bytesPerRecord));
+    }
+    if (recordVariables == 1)
+      for (const auto& v : variables_)
+        if (v.record) recordBytes_ = v.bytesPerRecord;
     for (const auto& v : variables_) checkExtent(v);
   }
 
@@ -216,8 +228,13 @@ class HeaderWalk {
     if (v.begin < pos_)
       fail(v.at, v.label + " starts at byte " + std::to_string(v.begin) +
                      ", inside the header (which ends at byte " + std::to_string(pos_) + ")");
-    const uint64_t records = v.record ? numrecs_ : 1;
-    const uint64_t bytes = productCapped(v.bytesPerRecord, records, size_);
+    // Up to the end of its last record (record variables) or of its data.
+    const uint64_t bytes =
+        !v.record ? v.bytesPerRecord
+        : numrecs_ == 0
+            ? 0
+            : std::min(size_ + 1,
+                       productCapped(recordBytes_, numrecs_ - 1, size_) + v.bytesPerRecord);
     std::string problem;
     if (v.begin > size_)
       problem = v.label + " starts at byte " + std::to_string(v.begin);
@@ -237,6 +254,7 @@ class HeaderWalk {
   uint64_t size_;
   uint64_t pos_ = 0;
   uint64_t numrecs_ = 0;
+  uint64_t recordBytes_ = 0;  // bytes of one record (all record variables)
   int version_ = 1, countBytes_ = 4, offsetBytes_ = 4;
   std::vector<Dimension> dimensions_;
   std::set<std::string> dimensionNames_, variableNames_;

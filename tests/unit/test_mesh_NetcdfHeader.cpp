@@ -2,6 +2,7 @@
 // three classic versions pass, and each corruption the fuzzer can produce (a huge count or
 // name, a bad tag, type or dimension id, data past the end) is one InputError naming it.
 #include <gtest/gtest.h>
+#include <netcdf.h>
 #include <unistd.h>
 
 #include <cstdint>
@@ -114,6 +115,43 @@ TEST_F(NetcdfHeader, ValidFilesOfEachClassicVersionPass) {
     SmallFile f;
     f.version = version;
     EXPECT_EQ(choc::checkNetcdfHeader(write(f.bytes())), NetcdfStorage::Classic) << version;
+  }
+}
+
+// Written by the netCDF library itself, with record variables of 1- and 2-byte types (whose
+// records are padded) and attributes of several types: the check agrees with the library.
+TEST_F(NetcdfHeader, FilesWrittenByNetcdfInEachClassicVersionPass) {
+  for (int mode : {NC_CLASSIC_MODEL, NC_64BIT_OFFSET, NC_64BIT_DATA}) {
+    const std::string path = (dir_ / ("lib_" + std::to_string(mode) + ".nc")).string();
+    int nc = -1, time = -1, n = -1, x = -1, t = -1, b = -1, s = -1;
+    ASSERT_EQ(nc_create(path.c_str(), NC_CLOBBER | mode, &nc), NC_NOERR);
+    ASSERT_EQ(nc_def_dim(nc, "time", NC_UNLIMITED, &time), NC_NOERR);
+    ASSERT_EQ(nc_def_dim(nc, "n", 5, &n), NC_NOERR);
+    const int ints[3] = {1, 2, 3};
+    ASSERT_EQ(nc_put_att_int(nc, NC_GLOBAL, "ints", NC_INT, 3, ints), NC_NOERR);
+    ASSERT_EQ(nc_put_att_text(nc, NC_GLOBAL, "title", 7, "a title"), NC_NOERR);
+    const int bt[2] = {time, n};
+    ASSERT_EQ(nc_def_var(nc, "x", NC_DOUBLE, 1, &n, &x), NC_NOERR);
+    ASSERT_EQ(nc_def_var(nc, "t", NC_DOUBLE, 1, &time, &t), NC_NOERR);
+    ASSERT_EQ(nc_def_var(nc, "b", NC_BYTE, 2, bt, &b), NC_NOERR);
+    ASSERT_EQ(nc_def_var(nc, "s", NC_SHORT, 1, &time, &s), NC_NOERR);
+    ASSERT_EQ(nc_put_att_text(nc, x, "units", 1, "m"), NC_NOERR);
+    ASSERT_EQ(nc_enddef(nc), NC_NOERR);
+    const double xs[5] = {0, 1, 2, 3, 4};
+    ASSERT_EQ(nc_put_var_double(nc, x, xs), NC_NOERR);
+    for (size_t r = 0; r < 7; ++r) {
+      const size_t start[2] = {r, 0}, count[2] = {1, 5};
+      const double tr = 0.5 * r;
+      const signed char br[5] = {1, 2, 3, 4, 5};
+      const short sr = static_cast<short>(r);
+      ASSERT_EQ(nc_put_var1_double(nc, t, start, &tr), NC_NOERR);
+      ASSERT_EQ(nc_put_vara_schar(nc, b, start, count, br), NC_NOERR);
+      ASSERT_EQ(nc_put_var1_short(nc, s, start, &sr), NC_NOERR);
+    }
+    ASSERT_EQ(nc_close(nc), NC_NOERR);
+    EXPECT_EQ(choc::checkNetcdfHeader(path), NetcdfStorage::Classic) << mode;
+    fs::resize_file(path, fs::file_size(path) - 3);  // into s's last value (2 bytes + padding)
+    EXPECT_THROW(choc::checkNetcdfHeader(path), choc::InputError) << mode;
   }
 }
 
