@@ -14,13 +14,15 @@ namespace {
 
 class MeshFileWriter {
  public:
-  MeshFileWriter(const Mesh& mesh, const std::string& path) : mesh_(mesh), path_(path) {}
+  MeshFileWriter(const Mesh& mesh, const std::string& path, bool netcdf4)
+      : mesh_(mesh), path_(path), netcdf4_(netcdf4) {}
 
   int create() {
     validateNames();
     ex_opts(EX_DEFAULT);  // no library messages: failures become exceptions
     int cpuWordSize = 8, ioWordSize = 8;
-    id_ = ex_create(path_.c_str(), EX_CLOBBER | EX_LARGE_MODEL, &cpuWordSize, &ioWordSize);
+    id_ = ex_create(path_.c_str(), EX_CLOBBER | (netcdf4_ ? EX_NETCDF4 : EX_LARGE_MODEL),
+                    &cpuWordSize, &ioWordSize);
     if (id_ < 0) throw std::runtime_error(exodusFailure("creating the Exodus file", path_));
     try {
       check(ex_set_max_name_length(id_, kExodusMaxNameLength), "setting the name length");
@@ -165,6 +167,7 @@ class MeshFileWriter {
 
   const Mesh& mesh_;
   std::string path_;
+  bool netcdf4_ = false;
   int id_ = -1;
 };
 
@@ -180,12 +183,12 @@ std::string exodusFailure(const std::string& what, const std::string& path) {
   return m;
 }
 
-int createExodusMeshFile(const Mesh& mesh, const std::string& path) {
-  return MeshFileWriter(mesh, path).create();
+int createExodusMeshFile(const Mesh& mesh, const std::string& path, bool netcdf4) {
+  return MeshFileWriter(mesh, path, netcdf4).create();
 }
 
-void writeExodusMesh(const Mesh& mesh, const std::string& path) {
-  const int id = createExodusMeshFile(mesh, path);
+void writeExodusMesh(const Mesh& mesh, const std::string& path, bool netcdf4) {
+  const int id = createExodusMeshFile(mesh, path, netcdf4);
   if (ex_close(id) < 0) throw std::runtime_error(exodusFailure("closing the Exodus file", path));
 }
 

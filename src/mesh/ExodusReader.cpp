@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "input/Errors.hpp"
+#include "mesh/ChildProcessProbe.hpp"
 #include "mesh/NetcdfHeader.hpp"
 
 namespace choc {
@@ -47,7 +48,8 @@ std::string upper(std::string s) {
 
 class Reader {
  public:
-  explicit Reader(const std::string& path) : path_(path) {}
+  // `probeHdf5`: a netCDF-4 (HDF5) file is first read by a child process (ChildProcessProbe.hpp).
+  Reader(const std::string& path, bool probeHdf5) : path_(path), probeHdf5_(probeHdf5) {}
 
   Mesh read() {
     open();
@@ -82,7 +84,10 @@ class Reader {
     fileBytes_ = static_cast<int64_t>(std::filesystem::file_size(path_, ec));
     if (ec) fileBytes_ = 0;
     // A corrupt classic header is refused before netCDF trusts its counts (NetcdfHeader.hpp).
-    if (checkNetcdfHeader(path_) == NetcdfStorage::Unknown) notExodus();
+    const NetcdfStorage storage = checkNetcdfHeader(path_);
+    if (storage == NetcdfStorage::Unknown) notExodus();
+    if (storage == NetcdfStorage::Hdf5 && probeHdf5_)
+      probeInChildProcess(path_, "HDF5", [this] { Reader(path_, false).read(); });
     ex_opts(EX_DEFAULT);  // no library messages on stderr: our error is the one line
     int cpuWordSize = 8, ioWordSize = 0;
     float version = 0.0f;
@@ -294,6 +299,7 @@ class Reader {
   OpenFile file_;
   int nameLength_ = 32;
   int64_t fileBytes_ = 0;  // size of the file: bounds every count read from the header
+  bool probeHdf5_ = true;
 };
 
 }  // namespace
@@ -307,6 +313,6 @@ std::string canonicalTopology(const std::string& exodusType, int nodesPerElement
   return "";
 }
 
-Mesh readExodusMesh(const std::string& path) { return Reader(path).read(); }
+Mesh readExodusMesh(const std::string& path) { return Reader(path, true).read(); }
 
 }  // namespace choc

@@ -256,3 +256,19 @@ TEST_F(ExodusIO, SetVariableLongerThanItsDimensionIsRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(ExodusIO, RoundTripNetcdf4) {
+  choc::BarImpactOptions o;
+  o.dimension = 3;
+  const choc::Mesh mesh = choc::generateBarImpactMesh(o);
+  choc::writeExodusMesh(mesh, file("nc4.exo"), true);
+  std::ifstream in(file("nc4.exo"), std::ios::binary);
+  char signature[4] = {};
+  in.read(signature, 4);
+  ASSERT_EQ(std::string(signature + 1, 3), "HDF");  // read through HDF5, after the probe
+  expectSameMesh(mesh, choc::readExodusMesh(file("nc4.exo")));
+}
+
+}  // namespace
