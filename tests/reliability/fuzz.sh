@@ -18,6 +18,7 @@ if ! cmake --build "$bdir" -j "${CHOC_FUZZ_JOBS:-2}" --target "fuzz_$target" > "
 fi
 work="$bdir/corpus-$target"; art="$bdir/artifacts-$target"
 mkdir -p "$work" "$art"
+rm -f "$art"/*  # this run's reproducers only
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$here/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
@@ -41,7 +42,9 @@ rc=$?
 grep -vE "^(NetCDF|Exodus|ERROR: ex_|    exerrval|\[libexodus\]|     )" "$bdir/fuzz-$target.log" | tail -n 40
 echo "fuzz: fuzz_$target exit $rc after $(( $(date +%s) - start )) s; corpus $(ls "$work" | wc -l) files"
 if [ $rc -ne 0 ]; then
-  echo "fuzz: FAILED; reproducer(s) in $art: $(ls "$art")"
+  echo "fuzz: FAILED; reproducer(s) in $art: $(ls -t "$art")"
+  echo "fuzz: (the newest is the failure; older ones, if any, come from child processes that read" \
+       "HDF5 inputs and died there, which choc reports as input errors)"
   echo "fuzz: reproduce with $bdir/fuzz_$target $art/<file>"
   exit 1
 fi
