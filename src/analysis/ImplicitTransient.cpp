@@ -52,6 +52,9 @@ Teuchos::ParameterList ImplicitTransient::parameters() {
   declareDouble(nw, "Increment Tolerance", 1e-8,
                 "||du|| of the last correction / ||u_{n+1} - predictor||", Range::positive());
   declareInt(nw, "Maximum Iterations", 10, "Newton corrections per active-set pass", Range::atLeast(1));
+  declareChoice(nw, "Convergence", "residual and increment", {"residual and increment", "residual"},
+                "'residual' accepts an iterate on the residual test alone, saving the solve that "
+                "confirms a small increment (about half the solves of a linear step)");
   ParameterList& sc = declareSublist(p, "Step Control", "what a failed step does");
   declareInt(sc, "Maximum Step Cuts", 0,
              "cuts of dt allowed inside one step before the run stops (0: stop at once)",
@@ -299,6 +302,7 @@ void ImplicitTransient::run(RunContext& ctx) {
   ts.newton.residualTolerance = nw.get<double>("Residual Tolerance");
   ts.newton.incrementTolerance = nw.get<double>("Increment Tolerance");
   ts.newton.maxIterations = nw.get<int>("Maximum Iterations");
+  ts.newton.requireIncrement = nw.get<std::string>("Convergence") != "residual";
   ts.maxCuts = params_.sublist("Step Control").get<int>("Maximum Step Cuts");
   ts.cutFactor = params_.sublist("Step Control").get<double>("Cut Factor");
 

@@ -39,7 +39,10 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
       const bool resOk = n.residual <= s.residualTolerance * n.reference || n.residual <= 1e-12 * n.roundoff;
       const bool incOk = lastIncrement >= 0 &&
                          lastIncrement <= std::max(s.incrementTolerance * stepNorm, 1e-13 * n.solutionNorm);
-      if (resOk && (incOk || lastIncrement == 0.0 || (lastIncrement < 0 && n.residual == 0.0))) {
+      const bool incrementAccepted =
+          (!s.requireIncrement && lastIncrement >= 0) || incOk || lastIncrement == 0.0 ||
+          (lastIncrement < 0 && n.residual == 0.0);
+      if (resOk && incrementAccepted) {
         converged = true;
         break;
       }

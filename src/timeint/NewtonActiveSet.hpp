@@ -4,7 +4,10 @@
 //   ||R|| <= residualTolerance * reference   (reference: largest of the force terms' norms),
 //            or ||R|| <= 1e-12 * (round-off floor of the system, see ResidualNorms)
 //   ||du|| <= max(incrementTolerance * incrementScale, 1e-13 ||u||) on the last correction
-//   (see ResidualNorms).
+//   (see ResidualNorms), unless requireIncrement is false: the residual test alone then
+//   accepts any iterate after the first correction, which saves the solve that only confirms
+//   a converged one (the predictor itself is never accepted on its residual: the reference
+//   includes terms as large as c_a M u).
 // Failure (iterations exhausted, a failed linear solve, a non-finite value) is returned,
 // never thrown, so that a step controller can react.
 #pragma once
@@ -18,6 +21,8 @@ namespace choc {
 struct NewtonSettings {
   double residualTolerance = 1e-8;
   double incrementTolerance = 1e-8;
+  // false: the residual test alone decides (no confirming solve after the last correction).
+  bool requireIncrement = true;
   int maxIterations = 10;
   int maxActiveSetIterations = 20;
 };
