@@ -11,7 +11,8 @@
 #include <vector>
 
 #include "input/Errors.hpp"
-#include "mesh/ChildProcessProbe.hpp"
+#include "mesh/ChildProcess.hpp"
+#include "mesh/MeshBytes.hpp"
 #include "mesh/NetcdfHeader.hpp"
 
 namespace choc {
@@ -48,10 +49,13 @@ std::string upper(std::string s) {
 
 class Reader {
  public:
-  // `probeHdf5`: a netCDF-4 (HDF5) file is first read by a child process (ChildProcessProbe.hpp).
-  Reader(const std::string& path, bool probeHdf5) : path_(path), probeHdf5_(probeHdf5) {}
+  // `isolateHdf5`: a netCDF-4 (HDF5) file is read by a child process (ChildProcess.hpp).
+  Reader(const std::string& path, bool isolateHdf5) : path_(path), isolateHdf5_(isolateHdf5) {}
 
   Mesh read() {
+    if (checkFile() == NetcdfStorage::Hdf5 && isolateHdf5_)
+      return meshFromBytes(runInChildProcess(
+          path_, "HDF5", [this] { return meshToBytes(Reader(path_, false).read()); }));
     open();
     ex_init_params p{};
     check(ex_get_init_ext(file_.id, &p), path_, "the file header");
@@ -75,7 +79,9 @@ class Reader {
   }
 
  private:
-  void open() {
+  // Exists, is a file, has a netCDF signature; a corrupt classic header is refused before
+  // netCDF trusts its counts (NetcdfHeader.hpp).
+  NetcdfStorage checkFile() {
     std::error_code ec;
     if (!std::filesystem::exists(path_, ec))
       throwInput(path_, "", "", "mesh file not found", "check the file name and directory");
@@ -83,11 +89,12 @@ class Reader {
       throwInput(path_, "", "", "is a directory, not a mesh file", "give an Exodus II file");
     fileBytes_ = static_cast<int64_t>(std::filesystem::file_size(path_, ec));
     if (ec) fileBytes_ = 0;
-    // A corrupt classic header is refused before netCDF trusts its counts (NetcdfHeader.hpp).
     const NetcdfStorage storage = checkNetcdfHeader(path_);
     if (storage == NetcdfStorage::Unknown) notExodus();
-    if (storage == NetcdfStorage::Hdf5 && probeHdf5_)
-      probeInChildProcess(path_, "HDF5", [this] { Reader(path_, false).read(); });
+    return storage;
+  }
+
+  void open() {
     ex_opts(EX_DEFAULT);  // no library messages on stderr: our error is the one line
     int cpuWordSize = 8, ioWordSize = 0;
     float version = 0.0f;
@@ -299,7 +306,7 @@ class Reader {
   OpenFile file_;
   int nameLength_ = 32;
   int64_t fileBytes_ = 0;  // size of the file: bounds every count read from the header
-  bool probeHdf5_ = true;
+  bool isolateHdf5_ = true;
 };
 
 }  // namespace

@@ -95,6 +95,9 @@ choc_cli_input_error(mesh_file_not_exodus check bad_mesh_not_exodus.xml
 # A header whose counts do not fit the file is refused before netCDF allocates what they declare.
 choc_cli_input_error(mesh_file_corrupt_header check bad_mesh_corrupt_header.xml
   "parameter 'Mesh/File' = 'corrupt_header.exo': cannot use the mesh: [^ ]*corrupt_header.exo: corrupt netCDF header at byte 156: the name of dimension 3 is 1853189471 bytes long \\(netCDF names have 1 to 256\\). check that the file is a complete Exodus II mesh")
+# A netCDF-4 mesh on which Debian's HDF5 segfaults (found by fuzzing): read in a child process.
+choc_cli_input_error(mesh_file_corrupt_hdf5 check bad_mesh_corrupt_hdf5.xml
+  "parameter 'Mesh/File' = 'corrupt_hdf5.exo': cannot use the mesh: [^ ]*corrupt_hdf5.exo: the HDF5 library crashed \\(signal 11, Segmentation fault\\) reading this file: it is corrupt. check that the file is a complete Exodus II mesh")
 choc_cli_input_error(mesh_file_truncated check bad_mesh_truncated.xml
   "parameter 'Mesh/File' = 'truncated.exo': cannot use the mesh: [^ ]*truncated.exo: data past the end of the file \\(truncated\\?\\): variable 'time_whole' starts at byte 6092 but the file has 2000 bytes")
 choc_cli_input_error(node_set_not_in_mesh check bad_nodeset_unknown.xml

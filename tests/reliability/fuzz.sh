@@ -29,8 +29,8 @@ case "$target" in
   # (src/mesh/NetcdfHeader.cpp): without that, a corrupted count or name length made netCDF
   # allocate up to 1.8 GB or loop for tens of seconds. The default limits now hold: any
   # allocation above the 2 GB RSS limit, or an input taking over 10 s, is a finding. An input
-  # with the HDF5 signature is read in a child process first (src/mesh/ChildProcessProbe.cpp):
-  # HDF5 crashes there are the expected input errors.
+  # with the HDF5 signature is read in a child process (src/mesh/ChildProcess.cpp): HDF5
+  # crashes there are the expected input errors.
   exodus) opts=(-max_len=8192 -timeout=10) ;;
 esac
 echo "fuzz: fuzz_$target for $secs s from $here/corpus/$target"

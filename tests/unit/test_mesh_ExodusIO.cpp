@@ -267,7 +267,7 @@ TEST_F(ExodusIO, RoundTripNetcdf4) {
   std::ifstream in(file("nc4.exo"), std::ios::binary);
   char signature[4] = {};
   in.read(signature, 4);
-  ASSERT_EQ(std::string(signature + 1, 3), "HDF");  // read through HDF5, after the probe
+  ASSERT_EQ(std::string(signature + 1, 3), "HDF");  // read by a child process through HDF5
   expectSameMesh(mesh, choc::readExodusMesh(file("nc4.exo")));
 }
 

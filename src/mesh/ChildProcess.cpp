@@ -1,4 +1,4 @@
-#include "mesh/ChildProcessProbe.hpp"
+#include "mesh/ChildProcess.hpp"
 
 #include <poll.h>
 #include <signal.h>
@@ -30,13 +30,13 @@ void writeAll(int fd, const std::string& text) {
   }
 }
 
-[[noreturn]] void childMain(int fd, const std::function<void()>& read) {
+[[noreturn]] void childMain(int fd, const std::function<std::string()>& work) {
   // A crash of the child is the expected failure: it dies quietly (no crash report from the
   // handlers Open MPI installs), the parent gives the one-line error.
   for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) ::signal(sig, SIG_DFL);
   int code = kReadOk;
   try {
-    read();
+    writeAll(fd, work());
   } catch (const InputError& e) {
     writeAll(fd, e.what());
     code = kInputError;
@@ -49,22 +49,22 @@ void writeAll(int fd, const std::string& text) {
 
 }  // namespace
 
-void probeInChildProcess(const std::string& path, const std::string& library,
-                         const std::function<void()>& read, int timeoutSeconds) {
+std::string runInChildProcess(const std::string& path, const std::string& library,
+                              const std::function<std::string()>& work, int timeoutSeconds) {
   int fds[2];
-  if (::pipe(fds) != 0) return;
+  if (::pipe(fds) != 0) return work();
   const pid_t pid = ::fork();
   if (pid < 0) {
     ::close(fds[0]);
     ::close(fds[1]);
-    return;
+    return work();
   }
   if (pid == 0) {
     ::close(fds[0]);
-    childMain(fds[1], read);
+    childMain(fds[1], work);
   }
   ::close(fds[1]);
-  std::string message;
+  std::string output;  // the result, or the message of an InputError
   bool timedOut = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeoutSeconds);
   for (;;) {  // until the child closes its end (it exits) or the deadline
@@ -76,22 +76,25 @@ void probeInChildProcess(const std::string& path, const std::string& library,
     }
     pollfd p{fds[0], POLLIN, 0};
     const int ready = ::poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
-    if (ready < 0 && errno != EINTR) break;
+    if (ready < 0 && errno != EINTR) {  // cannot wait for the child: stop it
+      timedOut = true;
+      break;
+    }
     if (ready <= 0) continue;
-    char buffer[4096];
+    char buffer[65536];
     const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
-    message.append(buffer, static_cast<std::size_t>(n));
+    output.append(buffer, static_cast<std::size_t>(n));
   }
   ::close(fds[0]);
   if (timedOut) ::kill(pid, SIGKILL);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
-  if (!timedOut && WIFEXITED(status) && WEXITSTATUS(status) == kReadOk) return;
+  if (!timedOut && WIFEXITED(status) && WEXITSTATUS(status) == kReadOk) return output;
   if (!timedOut && WIFEXITED(status) && WEXITSTATUS(status) == kInputError)
-    throw InputError(message);
+    throw InputError(output);
   const std::string how =
       timedOut ? "took more than " + std::to_string(timeoutSeconds) + " s"
       : WIFSIGNALED(status) ? std::string("crashed (signal ") + std::to_string(WTERMSIG(status)) +
