@@ -7,6 +7,7 @@
 
 #include "mesh/BarImpactMesh.hpp"
 #include "mesh/MeshBytes.hpp"
+#include "test_mesh_helpers.hpp"
 
 namespace {
 
@@ -18,27 +19,7 @@ TEST(MeshBytes, RoundTripKeepsEverything) {
     const choc::Mesh b = choc::meshFromBytes(choc::meshToBytes(a));
     EXPECT_EQ(a.title, b.title);
     EXPECT_EQ(a.dimension, b.dimension);
-    EXPECT_EQ(a.coords, b.coords);
-    ASSERT_EQ(a.blocks.size(), b.blocks.size());
-    for (std::size_t i = 0; i < a.blocks.size(); ++i) {
-      EXPECT_EQ(a.blocks[i].name, b.blocks[i].name);
-      EXPECT_EQ(a.blocks[i].id, b.blocks[i].id);
-      EXPECT_EQ(a.blocks[i].topology, b.blocks[i].topology);
-      EXPECT_EQ(a.blocks[i].nodesPerElement, b.blocks[i].nodesPerElement);
-      EXPECT_EQ(a.blocks[i].connectivity, b.blocks[i].connectivity);
-    }
-    ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
-    for (std::size_t i = 0; i < a.nodeSets.size(); ++i) {
-      EXPECT_EQ(a.nodeSets[i].name, b.nodeSets[i].name);
-      EXPECT_EQ(a.nodeSets[i].id, b.nodeSets[i].id);
-      EXPECT_EQ(a.nodeSets[i].nodes, b.nodeSets[i].nodes);
-    }
-    ASSERT_EQ(a.sideSets.size(), b.sideSets.size());
-    for (std::size_t i = 0; i < a.sideSets.size(); ++i) {
-      EXPECT_EQ(a.sideSets[i].name, b.sideSets[i].name);
-      EXPECT_EQ(a.sideSets[i].elements, b.sideSets[i].elements);
-      EXPECT_EQ(a.sideSets[i].sides, b.sideSets[i].sides);
-    }
+    expectSameMesh(a, b);
   }
 }
 
