@@ -1,6 +1,47 @@
 # Writes the extremes inputs (regression/extremes/*.xml); rerun after editing a case here.
 import os, sys
 D = os.path.dirname(os.path.abspath(__file__))
+
+def model_head(name, comment, mesh, component, nu, section, dirichlet, node_set):
+    """The deck up to the Analyses' contents: title, mesh, steel bars POU1 and POU2, one clamp."""
+    return f'''<ParameterList name="{name}">
+  <!-- {comment} -->
+  <Parameter name="Title" type="string" value="extremes: {name}"/>
+  <ParameterList name="Mesh">
+    <Parameter name="File" type="string" value="{mesh}"/>
+  </ParameterList>
+  <ParameterList name="Model">
+    <Parameter name="Active Components" type="string" value="{component}"/>
+    <ParameterList name="Materials">
+      <ParameterList name="steel">
+        <Parameter name="Young's Modulus" type="double" value="2e11"/>
+        <Parameter name="Poisson's Ratio" type="double" value="{nu}"/>
+        <Parameter name="Density" type="double" value="7800"/>
+      </ParameterList>
+    </ParameterList>
+    <ParameterList name="Blocks">
+      <ParameterList name="POU1">
+        <Parameter name="Material" type="string" value="steel"/>
+{section}      </ParameterList>
+      <ParameterList name="POU2">
+        <Parameter name="Material" type="string" value="steel"/>
+{section}      </ParameterList>
+    </ParameterList>
+    <ParameterList name="Dirichlet">
+      <ParameterList name="{dirichlet}">
+        <Parameter name="Node Set" type="string" value="{node_set}"/>
+        <Parameter name="Components" type="string" value="{component}"/>
+      </ParameterList>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Analyses">
+'''
+
+SQUARE = '''        <ParameterList name="Section">
+          <Parameter name="Square Side" type="double" value="0.02"/>
+        </ParameterList>
+'''
+
 def modal(name, comment, mesh, dt, end, k=5e9, c=2e4, d1=5e-6, d2=5e-6, v=-1.0, scheme="symplectic Euler",
           stab="refuse", modes_block=None, obstacle="BI_PLAN_Z", axis="0 0 1", damping=0.001, exo=100, progress=2,
           history="A:DX A:VX C:DX"):
@@ -11,44 +52,7 @@ def modal(name, comment, mesh, dt, end, k=5e9, c=2e4, d1=5e-6, d2=5e-6, v=-1.0, 
       <Parameter name="Number of Modes" type="int" value="21"/>
       <Parameter name="Write Exodus" type="bool" value="false"/>
     </ParameterList>'''
-    s = f'''<ParameterList name="{name}">
-  <!-- {comment} -->
-  <Parameter name="Title" type="string" value="extremes: {name}"/>
-  <ParameterList name="Mesh">
-    <Parameter name="File" type="string" value="{mesh}"/>
-  </ParameterList>
-  <ParameterList name="Model">
-    <Parameter name="Active Components" type="string" value="DX"/>
-    <ParameterList name="Materials">
-      <ParameterList name="steel">
-        <Parameter name="Young's Modulus" type="double" value="2e11"/>
-        <Parameter name="Poisson's Ratio" type="double" value="0"/>
-        <Parameter name="Density" type="double" value="7800"/>
-      </ParameterList>
-    </ParameterList>
-    <ParameterList name="Blocks">
-      <ParameterList name="POU1">
-        <Parameter name="Material" type="string" value="steel"/>
-        <ParameterList name="Section">
-          <Parameter name="Square Side" type="double" value="0.02"/>
-        </ParameterList>
-      </ParameterList>
-      <ParameterList name="POU2">
-        <Parameter name="Material" type="string" value="steel"/>
-        <ParameterList name="Section">
-          <Parameter name="Square Side" type="double" value="0.02"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-    <ParameterList name="Dirichlet">
-      <ParameterList name="clamped end D">
-        <Parameter name="Node Set" type="string" value="D"/>
-        <Parameter name="Components" type="string" value="DX"/>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Analyses">
-{modes_block}
+    s = model_head(name, comment, mesh, "DX", "0", SQUARE, "clamped end D", "D") + f'''{modes_block}
     <ParameterList name="run">
       <Parameter name="Type" type="string" value="Modal Transient"/>
       <Parameter name="Modal Basis" type="string" value="modes"/>
@@ -88,38 +92,7 @@ def modal(name, comment, mesh, dt, end, k=5e9, c=2e4, d1=5e-6, d2=5e-6, v=-1.0, 
 
 def implicit(name, comment, mesh, dt, end, scheme="modified average acceleration", alpha=-0.1,
              method="Lagrange", kpen=1e10, v=-1.0, mass="standard", exo=50, extra=""):
-    s = f'''<ParameterList name="{name}">
-  <!-- {comment} -->
-  <Parameter name="Title" type="string" value="extremes: {name}"/>
-  <ParameterList name="Mesh">
-    <Parameter name="File" type="string" value="{mesh}"/>
-  </ParameterList>
-  <ParameterList name="Model">
-    <Parameter name="Active Components" type="string" value="DZ"/>
-    <ParameterList name="Materials">
-      <ParameterList name="steel">
-        <Parameter name="Young's Modulus" type="double" value="2e11"/>
-        <Parameter name="Poisson's Ratio" type="double" value="0.3"/>
-        <Parameter name="Density" type="double" value="7800"/>
-      </ParameterList>
-    </ParameterList>
-    <ParameterList name="Blocks">
-      <ParameterList name="POU1">
-        <Parameter name="Material" type="string" value="steel"/>
-      </ParameterList>
-      <ParameterList name="POU2">
-        <Parameter name="Material" type="string" value="steel"/>
-      </ParameterList>
-    </ParameterList>
-    <ParameterList name="Dirichlet">
-      <ParameterList name="clamped face of bar 2">
-        <Parameter name="Node Set" type="string" value="CL_POU2"/>
-        <Parameter name="Components" type="string" value="DZ"/>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Analyses">
-    <ParameterList name="run">
+    s = model_head(name, comment, mesh, "DZ", "0.3", "", "clamped face of bar 2", "CL_POU2") + f'''    <ParameterList name="run">
       <Parameter name="Type" type="string" value="Transient"/>
       <Parameter name="Scheme" type="string" value="{scheme}"/>
       <Parameter name="Alpha" type="double" value="{alpha:.17g}"/>
