@@ -22,6 +22,16 @@ constexpr uint32_t kAbsent = 0x00, kDimensionTag = 0x0A, kVariableTag = 0x0B,
                    kAttributeTag = 0x0C;
 constexpr uint64_t kMaxName = 256;  // NC_MAX_NAME
 
+// Attributes that the Exodus library reads into fixed-size buffers without checking their
+// length (a longer one overwrote its stack: found by fuzzing, confirmed with valgrind).
+// Global attributes read as one number:
+const std::set<std::string> kScalarGlobalAttributes = {
+    "api_version", "api version", "version", "floating_point_word_size",
+    "floating point word size", "file_size", "maximum_name_length", "int64_status"};
+// Variable attributes read into a char[MAX_STR_LENGTH + 1] (MAX_STR_LENGTH = 32):
+const std::set<std::string> kShortTextAttributes = {"elem_type"};
+constexpr uint64_t kMaxShortText = 32;
+
 // Bytes of one value of netCDF external type `type` (0 if unknown in this version).
 uint64_t typeSize(uint32_t type, int version) {
   static const std::array<uint64_t, 12> sizes = {0, 1, 1, 2, 4, 4, 8, 1, 2, 4, 8, 8};
@@ -57,7 +67,7 @@ class HeaderWalk {
     const uint64_t numrecs = unsignedField(countBytes_, "the number of records");
     numrecs_ = numrecs == streaming ? 0 : numrecs;
     readDimensions();
-    readAttributes("a global attribute");
+    readAttributes("a global attribute", true);
     readVariables();
     // A record holds every record variable's slab, each padded to 4 bytes unless there is
     // only one record variable.
@@ -172,7 +182,8 @@ class HeaderWalk {
     }
   }
 
-  void readAttributes(const std::string& what) {
+  // `what` names an attribute: "a global attribute" or "an attribute of variable 'x'".
+  void readAttributes(const std::string& what, bool global) {
     const uint64_t n = listHeader(kAttributeTag, "attribute");
     std::set<std::string> names;
     for (uint64_t i = 0; i < n; ++i) {
@@ -182,6 +193,13 @@ class HeaderWalk {
       const uint64_t size = typeSize(type, version_);
       if (size == 0) fail(at, "attribute '" + nm + "' has unknown type " + std::to_string(type));
       const uint64_t values = count("the length of attribute '" + nm + "'");
+      if (global && kScalarGlobalAttributes.count(nm) && values != 1)
+        fail(at, "global attribute '" + nm + "' has " + std::to_string(values) +
+                     " values (Exodus reads exactly one)");
+      if (!global && kShortTextAttributes.count(nm) && values > kMaxShortText)
+        fail(at, "attribute '" + nm + "' of " + what.substr(what.find(" of ") + 4) + " has " +
+                     std::to_string(values) + " characters (Exodus reads at most " +
+                     std::to_string(kMaxShortText) + ")");
       const uint64_t bytes = productCapped(values, size, size_);
       skip(bytes > size_ ? bytes : padded4(bytes), "attribute '" + nm + "'");
     }
@@ -210,7 +228,7 @@ class HeaderWalk {
           elements = productCapped(elements, length, size_);
         }
       }
-      readAttributes("an attribute of " + v.label);
+      readAttributes("an attribute of " + v.label, false);
       const uint64_t at = pos_;
       const uint32_t type = static_cast<uint32_t>(unsignedField(4, "the type of " + v.label));
       const uint64_t size = typeSize(type, version_);

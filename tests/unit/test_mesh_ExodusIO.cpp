@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <functional>
+#include <vector>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -245,6 +247,57 @@ TEST_F(ExodusIO, RoundTripNetcdf4) {
   in.read(signature, 4);
   ASSERT_EQ(std::string(signature + 1, 3), "HDF");  // read by a child process through HDF5
   expectSameMesh(mesh, choc::readExodusMesh(file("nc4.exo")));
+}
+
+}  // namespace
+
+namespace {
+
+// Found by fuzzing (valgrind: stack smashing inside the Exodus library, or choc's ex_block
+// overwritten): attributes that Exodus reads into fixed-size buffers, grown with the netCDF
+// API on a valid mesh, are refused before Exodus reads them. A long title is read (Exodus
+// truncates it safely).
+TEST_F(ExodusIO, AttributesLongerThanExodusBuffersAreRefused) {
+  choc::BarImpactOptions o;
+  o.dimension = 3;
+  struct Case {
+    const char* name;
+    std::function<int(int)> grow;  // on the open netCDF file, in define mode
+    const char* message;
+  };
+  const std::vector<float> versions(200, 8.0f);
+  const std::vector<int> lengths(200, 32);
+  const std::string longType = "HEX8" + std::string(300, 'x');
+  const std::string longTitle(400, 'T');
+  const std::vector<Case> cases = {
+      {"version", [&](int nc) { return nc_put_att_float(nc, NC_GLOBAL, "version", NC_FLOAT, 200, versions.data()); },
+       "global attribute 'version' has 200 values (Exodus reads exactly one)"},
+      {"maxname", [&](int nc) { return nc_put_att_int(nc, NC_GLOBAL, "maximum_name_length", NC_INT, 200, lengths.data()); },
+       "global attribute 'maximum_name_length' has 200 values"},
+      {"elemtype", [&](int nc) {
+         int var = -1;
+         const int rc = nc_inq_varid(nc, "connect1", &var);
+         return rc != NC_NOERR ? rc : nc_put_att_text(nc, var, "elem_type", longType.size(), longType.c_str());
+       },
+       "attribute 'elem_type' of variable 'connect1' has 304 characters (Exodus reads at most 32)"},
+      {"title", [&](int nc) { return nc_put_att_text(nc, NC_GLOBAL, "title", longTitle.size(), longTitle.c_str()); },
+       nullptr},
+  };
+  for (const Case& c : cases) {
+    const std::string path = file(std::string("grown_") + c.name + ".exo");
+    choc::writeExodusMesh(choc::generateBarImpactMesh(o), path);
+    int nc = -1;
+    ASSERT_EQ(nc_open(path.c_str(), NC_WRITE, &nc), NC_NOERR);
+    ASSERT_EQ(nc_redef(nc), NC_NOERR);
+    ASSERT_EQ(c.grow(nc), NC_NOERR) << c.name;
+    ASSERT_EQ(nc_close(nc), NC_NOERR);
+    if (!c.message) {
+      EXPECT_NO_THROW(choc::readExodusMesh(path)) << c.name;
+      continue;
+    }
+    const std::string m = readError(path);
+    EXPECT_NE(m.find(c.message), std::string::npos) << m;
+  }
 }
 
 }  // namespace
