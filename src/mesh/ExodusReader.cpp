@@ -157,11 +157,14 @@ class Reader {
 
   // The ids of `count` entities (variable `var`), which must be distinct: exodus finds an
   // entity's variables by the position of its id.
+  // `var` is the ids variable (eb_prop1, ns_prop1, ss_prop1); exodus also reads the status
+  // variable (eb_status, ...) whole into a buffer of `count` values when it looks an id up.
   std::vector<int> ids(ex_entity_type type, int count, const std::string& what,
                        const std::string& var) {
     std::vector<int> result(count);
     if (count == 0) return result;
     expectValues(var, count, what + " ids");
+    expectValues(var.substr(0, 2) + "_status", count, what + " status");
     check(ex_get_ids(file_.id, type, result.data()), path_, what + " ids");
     for (int i = 0; i < count; ++i)
       for (int j = 0; j < i; ++j)

@@ -301,3 +301,31 @@ TEST_F(ExodusIO, AttributesLongerThanExodusBuffersAreRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+// Found by fuzzing (valgrind: an invalid write in ex_id_lkup): exodus reads a status variable
+// whole into a buffer sized by the entity count; a longer one is refused.
+TEST_F(ExodusIO, StatusVariableLongerThanTheEntityCountIsRefused) {
+  choc::BarImpactOptions o;
+  o.dimension = 3;
+  const std::string path = file("long_status.exo");
+  choc::writeExodusMesh(choc::generateBarImpactMesh(o), path);
+  int nc = -1, big = -1, var = -1, old = -1;
+  ASSERT_EQ(nc_open(path.c_str(), NC_WRITE, &nc), NC_NOERR);
+  ASSERT_EQ(nc_redef(nc), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(nc, "eb_status", &old), NC_NOERR);
+  ASSERT_EQ(nc_rename_var(nc, old, "eb_status_old"), NC_NOERR);
+  ASSERT_EQ(nc_def_dim(nc, "big", 500, &big), NC_NOERR);
+  ASSERT_EQ(nc_def_var(nc, "eb_status", NC_INT, 1, &big, &var), NC_NOERR);
+  ASSERT_EQ(nc_enddef(nc), NC_NOERR);
+  const std::vector<int> ones(500, 1);
+  ASSERT_EQ(nc_put_var_int(nc, var, ones.data()), NC_NOERR);
+  ASSERT_EQ(nc_close(nc), NC_NOERR);
+  const std::string m = readError(path);
+  EXPECT_NE(m.find("element block status: variable 'eb_status' holds 500 values but its Exodus "
+                   "dimensions declare 2"),
+            std::string::npos) << m;
+}
+
+}  // namespace
