@@ -49,13 +49,16 @@ std::string upper(std::string s) {
 
 class Reader {
  public:
-  // `isolateHdf5`: a netCDF-4 (HDF5) file is read by a child process (ChildProcess.hpp).
-  Reader(const std::string& path, bool isolateHdf5) : path_(path), isolateHdf5_(isolateHdf5) {}
+  // `isolate`: the libraries read the file in a child process (ChildProcess.hpp), which
+  // sends the mesh back; this process only runs choc's own header check on it.
+  Reader(const std::string& path, bool isolate) : path_(path), isolate_(isolate) {}
 
   Mesh read() {
-    if (checkFile() == NetcdfStorage::Hdf5 && isolateHdf5_)
+    const NetcdfStorage storage = checkFile();
+    if (isolate_)
       return meshFromBytes(runInChildProcess(
-          path_, "HDF5", [this] { return meshToBytes(Reader(path_, false).read()); }));
+          path_, storage == NetcdfStorage::Hdf5 ? "HDF5" : "Exodus/netCDF",
+          [this] { return meshToBytes(Reader(path_, false).read()); }));
     open();
     ex_init_params p{};
     check(ex_get_init_ext(file_.id, &p), path_, "the file header");
@@ -309,7 +312,7 @@ class Reader {
   OpenFile file_;
   int nameLength_ = 32;
   int64_t fileBytes_ = 0;  // size of the file: bounds every count read from the header
-  bool isolateHdf5_ = true;
+  bool isolate_ = true;
 };
 
 }  // namespace

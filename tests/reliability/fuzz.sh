@@ -28,9 +28,9 @@ case "$target" in
   # Inputs stay the size of the seeds. choc checks a classic header before netCDF reads it
   # (src/mesh/NetcdfHeader.cpp): without that, a corrupted count or name length made netCDF
   # allocate up to 1.8 GB or loop for tens of seconds. The default limits now hold: any
-  # allocation above the 2 GB RSS limit, or an input taking over 10 s, is a finding. An input
-  # with the HDF5 signature is read in a child process (src/mesh/ChildProcess.cpp): HDF5
-  # crashes there are the expected input errors.
+  # allocation above the 2 GB RSS limit, or an input taking over 10 s, is a finding. The
+  # libraries read each input in a child process (src/mesh/ChildProcess.cpp): their crashes
+  # there are the expected input errors.
   exodus) opts=(-max_len=8192 -timeout=10) ;;
 esac
 echo "fuzz: fuzz_$target for $secs s from $here/corpus/$target"
@@ -43,8 +43,8 @@ grep -vE "^(NetCDF|Exodus|ERROR: ex_|    exerrval|\[libexodus\]|     )" "$bdir/f
 echo "fuzz: fuzz_$target exit $rc after $(( $(date +%s) - start )) s; corpus $(ls "$work" | wc -l) files"
 if [ $rc -ne 0 ]; then
   echo "fuzz: FAILED; reproducer(s) in $art: $(ls -t "$art")"
-  echo "fuzz: (the newest is the failure; older ones, if any, come from child processes that read" \
-       "HDF5 inputs and died there, which choc reports as input errors)"
+  echo "fuzz: (the newest is the failure; older ones, if any, come from child processes that" \
+       "read a mesh and died there, which choc reports as input errors)"
   echo "fuzz: reproduce with $bdir/fuzz_$target $art/<file>"
   exit 1
 fi
