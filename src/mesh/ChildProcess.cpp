@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -18,16 +19,17 @@ namespace {
 
 constexpr int kReadOk = 0, kInputError = 97, kOtherException = 98;
 
-void writeAll(int fd, const std::string& text) {
+bool writeAll(int fd, const std::string& text) {
   const char* p = text.data();
   std::size_t left = text.size();
   while (left > 0) {
     const ssize_t n = ::write(fd, p, left);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return;
+    if (n <= 0) return false;
     p += n;
     left -= static_cast<std::size_t>(n);
   }
+  return true;
 }
 
 [[noreturn]] void childMain(int fd, const std::function<std::string()>& work) {
@@ -36,7 +38,7 @@ void writeAll(int fd, const std::string& text) {
   for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) ::signal(sig, SIG_DFL);
   int code = kReadOk;
   try {
-    writeAll(fd, work());
+    if (!writeAll(fd, work())) code = kOtherException;  // a result cut short is no result
   } catch (const InputError& e) {
     writeAll(fd, e.what());
     code = kInputError;

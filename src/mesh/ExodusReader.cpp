@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "input/Errors.hpp"
@@ -49,16 +50,19 @@ std::string upper(std::string s) {
 
 class Reader {
  public:
-  // `isolate`: the libraries read the file in a child process (ChildProcess.hpp), which
-  // sends the mesh back; this process only runs choc's own header check on it.
-  Reader(const std::string& path, bool isolate) : path_(path), isolate_(isolate) {}
+  explicit Reader(const std::string& path) : path_(path) {}
 
+  // choc's own header check runs here; the libraries read the file in a child process
+  // (ChildProcess.hpp), which sends the mesh back.
   Mesh read() {
     const NetcdfStorage storage = checkFile();
-    if (isolate_)
-      return meshFromBytes(runInChildProcess(
-          path_, storage == NetcdfStorage::Hdf5 ? "HDF5" : "Exodus/netCDF",
-          [this] { return meshToBytes(Reader(path_, false).read()); }));
+    return meshFromBytes(runInChildProcess(
+        path_, storage == NetcdfStorage::Hdf5 ? "HDF5" : "Exodus/netCDF",
+        [this] { return meshToBytes(readWithLibraries()); }));
+  }
+
+ private:
+  Mesh readWithLibraries() {
     open();
     ex_init_params p{};
     check(ex_get_init_ext(file_.id, &p), path_, "the file header");
@@ -81,7 +85,6 @@ class Reader {
     return mesh;
   }
 
- private:
   // Exists, is a file, has a netCDF signature; a corrupt classic header is refused before
   // netCDF trusts its counts (NetcdfHeader.hpp).
   NetcdfStorage checkFile() {
@@ -158,10 +161,9 @@ class Reader {
                          " (file corrupt)");
   }
 
-  // The ids of `count` entities (variable `var`), which must be distinct: exodus finds an
-  // entity's variables by the position of its id.
-  // `var` is the ids variable (eb_prop1, ns_prop1, ss_prop1); exodus also reads the status
-  // variable (eb_status, ...) whole into a buffer of `count` values when it looks an id up.
+  // The ids of `count` entities, from variable `var` (eb_prop1, ns_prop1, ss_prop1). They must
+  // be distinct: exodus finds an entity's variables by the position of its id, reading `var`
+  // and the status variable (eb_status, ...) whole into buffers of `count` values.
   std::vector<int> ids(ex_entity_type type, int count, const std::string& what,
                        const std::string& var) {
     std::vector<int> result(count);
@@ -169,10 +171,9 @@ class Reader {
     expectValues(var, count, what + " ids");
     expectValues(var.substr(0, 2) + "_status", count, what + " status");
     check(ex_get_ids(file_.id, type, result.data()), path_, what + " ids");
-    for (int i = 0; i < count; ++i)
-      for (int j = 0; j < i; ++j)
-        if (result[i] == result[j])
-          badFile(path_, what + " id " + std::to_string(result[i]) + " is used twice");
+    std::unordered_set<int> seen;
+    for (int id : result)
+      if (!seen.insert(id).second) badFile(path_, what + " id " + std::to_string(id) + " is used twice");
     return result;
   }
 
@@ -180,18 +181,17 @@ class Reader {
     std::vector<double> c[3];
     for (int d = 0; d < 3; ++d) c[d].assign(numNodes, 0.0);
     if (numNodes > 0) {
-      int varId = -1;
+      int varId = -1;  // one variable per axis (coordx...) or one for all (coord)
       if (nc_inq_varid(file_.id, "coordx", &varId) == NC_NOERR) {
         for (int d = 0; d < dim; ++d)
           expectValues(std::string("coord") + "xyz"[d], numNodes, "the node coordinates");
       } else {
         expectValues("coord", int64_t{dim} * numNodes, "the node coordinates");
       }
-    }
-    if (numNodes > 0)
       check(ex_get_coord(file_.id, c[0].data(), dim > 1 ? c[1].data() : nullptr,
                          dim > 2 ? c[2].data() : nullptr),
             path_, "the node coordinates");
+    }
     mesh.coords.resize(numNodes);
     for (int n = 0; n < numNodes; ++n) {
       mesh.coords[n] = {c[0][n], c[1][n], c[2][n]};
@@ -312,7 +312,6 @@ class Reader {
   OpenFile file_;
   int nameLength_ = 32;
   int64_t fileBytes_ = 0;  // size of the file: bounds every count read from the header
-  bool isolate_ = true;
 };
 
 }  // namespace
@@ -326,6 +325,6 @@ std::string canonicalTopology(const std::string& exodusType, int nodesPerElement
   return "";
 }
 
-Mesh readExodusMesh(const std::string& path) { return Reader(path, true).read(); }
+Mesh readExodusMesh(const std::string& path) { return Reader(path).read(); }
 
 }  // namespace choc
