@@ -47,10 +47,6 @@ uint64_t productCapped(uint64_t a, uint64_t b, uint64_t cap) {
   return a > cap / b ? cap + 1 : a * b;
 }
 
-struct Dimension {
-  uint64_t length = 0;  // 0: the record dimension
-};
-
 class HeaderWalk {
  public:
   HeaderWalk(const std::string& path, std::ifstream& in, uint64_t fileBytes)
@@ -67,7 +63,7 @@ class HeaderWalk {
     const uint64_t numrecs = unsignedField(countBytes_, "the number of records");
     numrecs_ = numrecs == streaming ? 0 : numrecs;
     readDimensions();
-    readAttributes("a global attribute", true);
+    readAttributes("");
     readVariables();
     // A record holds every record variable's slab, each padded to 4 bytes unless there is
     // only one record variable.
@@ -172,18 +168,19 @@ class HeaderWalk {
       const std::string label = "dimension " + std::to_string(i);
       const std::string nm = uniqueName(label, "dimension", dimensionNames_);
       const uint64_t at = pos_;
-      Dimension d;
-      d.length = count("the length of dimension '" + nm + "'");
-      if (d.length == 0) {
+      const uint64_t length = count("the length of dimension '" + nm + "'");
+      if (length == 0) {
         if (haveRecordDimension) fail(at, "dimension '" + nm + "' is a second record dimension");
         haveRecordDimension = true;
       }
-      dimensions_.push_back(d);
+      dimensionLengths_.push_back(length);
     }
   }
 
-  // `what` names an attribute: "a global attribute" or "an attribute of variable 'x'".
-  void readAttributes(const std::string& what, bool global) {
+  // The attributes of `owner` (a variable's label), or the global ones when it is empty.
+  void readAttributes(const std::string& owner) {
+    const bool global = owner.empty();
+    const std::string what = global ? "a global attribute" : "an attribute of " + owner;
     const uint64_t n = listHeader(kAttributeTag, "attribute");
     std::set<std::string> names;
     for (uint64_t i = 0; i < n; ++i) {
@@ -197,7 +194,7 @@ class HeaderWalk {
         fail(at, "global attribute '" + nm + "' has " + std::to_string(values) +
                      " values (Exodus reads exactly one)");
       if (!global && kShortTextAttributes.count(nm) && values > kMaxShortText)
-        fail(at, "attribute '" + nm + "' of " + what.substr(what.find(" of ") + 4) + " has " +
+        fail(at, "attribute '" + nm + "' of " + owner + " has " +
                      std::to_string(values) + " characters (Exodus reads at most " +
                      std::to_string(kMaxShortText) + ")");
       const uint64_t bytes = productCapped(values, size, size_);
@@ -217,10 +214,10 @@ class HeaderWalk {
       for (uint64_t k = 0; k < rank; ++k) {
         const uint64_t at = pos_;
         const uint64_t id = count("a dimension id of " + v.label);
-        if (id >= dimensions_.size())
+        if (id >= dimensionLengths_.size())
           fail(at, v.label + " uses dimension id " + std::to_string(id) + " but the file has " +
-                       std::to_string(dimensions_.size()) + " dimensions");
-        const uint64_t length = dimensions_[id].length;
+                       std::to_string(dimensionLengths_.size()) + " dimensions");
+        const uint64_t length = dimensionLengths_[id];
         if (length == 0) {
           if (k != 0) fail(at, v.label + " uses the record dimension after its first dimension");
           v.record = true;
@@ -228,7 +225,7 @@ class HeaderWalk {
           elements = productCapped(elements, length, size_);
         }
       }
-      readAttributes("an attribute of " + v.label, false);
+      readAttributes(v.label);
       const uint64_t at = pos_;
       const uint32_t type = static_cast<uint32_t>(unsignedField(4, "the type of " + v.label));
       const uint64_t size = typeSize(type, version_);
@@ -274,7 +271,7 @@ class HeaderWalk {
   uint64_t numrecs_ = 0;
   uint64_t recordBytes_ = 0;  // bytes of one record (all record variables)
   int version_ = 1, countBytes_ = 4, offsetBytes_ = 4;
-  std::vector<Dimension> dimensions_;
+  std::vector<uint64_t> dimensionLengths_;  // 0: the record dimension
   std::set<std::string> dimensionNames_, variableNames_;
   std::vector<Variable> variables_;
 };
