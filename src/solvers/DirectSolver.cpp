@@ -16,12 +16,6 @@ namespace choc {
 
 namespace {
 
-std::string scientific(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3e", v);
-  return text;
-}
-
 std::string firstLine(const std::string& s) {
   auto p = s.find('\n');
   return p == std::string::npos ? s : s.substr(0, p);
@@ -110,9 +104,13 @@ class Amesos2Solver : public LinearSolver {
     }
     st.relativeResidual = relativeResidual(*A_, b, x);
     st.converged = std::isfinite(st.relativeResidual) && st.relativeResidual <= tol_;
-    if (!st.converged)
-      st.message = "direct solve residual " + scientific(st.relativeResidual) + " above " +
-                   scientific(tol_) + " (singular or ill-conditioned matrix)";
+    if (!st.converged) {
+      char message[128];
+      std::snprintf(message, sizeof message,
+                    "direct solve residual %.3e above %.3e (singular or ill-conditioned matrix)",
+                    st.relativeResidual, tol_);
+      st.message = message;
+    }
     return st;
   }
 
