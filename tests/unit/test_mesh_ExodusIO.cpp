@@ -1,16 +1,17 @@
-// Exodus mesh writer and reader: round trips, padding of 1D/2D files, topology names,
-// and one-line InputErrors naming the path for files that are missing or not Exodus.
+// Exodus mesh writer and reader: round trips (classic and netCDF-4), padding of 1D/2D files,
+// topology names, and one-line InputErrors naming the path for files that are missing, not
+// Exodus, or corrupt in the ways the fuzzer found.
 #include <gtest/gtest.h>
 #include <exodusII.h>
 #include <unistd.h>
 
 #include <filesystem>
-#include <functional>
-#include <vector>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "input/Errors.hpp"
 #include "mesh/BarImpactMesh.hpp"
@@ -33,7 +34,6 @@ class ExodusIO : public ::testing::Test {
   std::string file(const std::string& name) const { return (dir_ / name).string(); }
   fs::path dir_;
 };
-
 
 TEST_F(ExodusIO, RoundTrip1D) {
   choc::BarImpactOptions o;
@@ -205,9 +205,6 @@ TEST_F(ExodusIO, TruncatedFile) {
   }
 }
 
-}  // namespace
-
-namespace {
 
 // Swaps two equally long byte strings everywhere in a file.
 void swapInFile(const std::string& path, const std::string& a, const std::string& b) {
@@ -233,9 +230,6 @@ TEST_F(ExodusIO, SetVariableLongerThanItsDimensionIsRefused) {
             std::string::npos) << m;
 }
 
-}  // namespace
-
-namespace {
 
 TEST_F(ExodusIO, RoundTripNetcdf4) {
   choc::BarImpactOptions o;
@@ -249,9 +243,6 @@ TEST_F(ExodusIO, RoundTripNetcdf4) {
   expectSameMesh(mesh, choc::readExodusMesh(file("nc4.exo")));
 }
 
-}  // namespace
-
-namespace {
 
 // Found by fuzzing (valgrind: stack smashing inside the Exodus library, or choc's ex_block
 // overwritten): attributes that Exodus reads into fixed-size buffers, grown with the netCDF
@@ -300,9 +291,6 @@ TEST_F(ExodusIO, AttributesLongerThanExodusBuffersAreRefused) {
   }
 }
 
-}  // namespace
-
-namespace {
 
 // Found by fuzzing (valgrind: an invalid write in ex_id_lkup): exodus reads a status variable
 // whole into a buffer sized by the entity count; a longer one is refused.
