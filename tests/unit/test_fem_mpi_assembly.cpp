@@ -151,9 +151,9 @@ void checkRankIndependence(const Scene& m, const std::string& what,
   compareWithSerial(*Md, *Ms, what + " M");
 }
 
-// The 3D benchmark scene: 2 x 50 HEX8 along, 1 x 1 across, every translation free except the
-// clamped face of bar 2 (the lateral DOFs are left free to exercise every coupling).
-TEST(MpiAssembly, Hex8BenchmarkMeshIsRankIndependent) {
+// The 3D benchmark scene (bars along z, 2 x 50 HEX8, 1 x 1 across), steel, consistent mass;
+// the mask is left to each test.
+Scene hex8BenchmarkScene() {
   BarImpactOptions o;
   o.dimension = 3;
   o.axis = 'z';
@@ -162,6 +162,13 @@ TEST(MpiAssembly, Hex8BenchmarkMeshIsRankIndependent) {
   Material steel{2e11, 0.3, 7800.0};
   m.physics.resize(m.mesh.blocks.size());
   for (auto& p : m.physics) p.kernel = makeHex8(steel);
+  return m;
+}
+
+// The 3D benchmark scene: 2 x 50 HEX8 along, 1 x 1 across, every translation free except the
+// clamped face of bar 2 (the lateral DOFs are left free to exercise every coupling).
+TEST(MpiAssembly, Hex8BenchmarkMeshIsRankIndependent) {
+  Scene m = hex8BenchmarkScene();
   m.mask = Assembler::carriedComponents(m.mesh, m.physics);
   for (int n : m.mesh.findNodeSet("CL_POU2")->nodes) m.mask[n] &= std::uint8_t(~(1u << DZ));
   ASSERT_EQ(m.mesh.numNodes(), 408);
@@ -171,14 +178,7 @@ TEST(MpiAssembly, Hex8BenchmarkMeshIsRankIndependent) {
 // Lumped mass on one bar, consistent on the other; the benchmark's 3D constraints (DX = DY = 0
 // everywhere, DZ = 0 on the clamped face).
 TEST(MpiAssembly, Hex8BenchmarkConstraintsAndLumpedMassAreRankIndependent) {
-  BarImpactOptions o;
-  o.dimension = 3;
-  o.axis = 'z';
-  Scene m;
-  m.mesh = generateBarImpactMesh(o);
-  Material steel{2e11, 0.3, 7800.0};
-  m.physics.resize(m.mesh.blocks.size());
-  for (auto& p : m.physics) p.kernel = makeHex8(steel);
+  Scene m = hex8BenchmarkScene();
   m.physics[0].mass = MassKind::Lumped;
   m.mask = Assembler::carriedComponents(m.mesh, m.physics);
   for (auto& b : m.mask) b &= std::uint8_t(1u << DZ);
@@ -189,14 +189,7 @@ TEST(MpiAssembly, Hex8BenchmarkConstraintsAndLumpedMassAreRankIndependent) {
 // Redistributed mass (the contact faces' nodes massless, SDNL111 C/D/E 'Contact Mass' =
 // 'redistributed'): the element-by-element redistribution keeps the bitwise rank independence.
 TEST(MpiAssembly, Hex8RedistributedContactMassIsRankIndependent) {
-  BarImpactOptions o;
-  o.dimension = 3;
-  o.axis = 'z';
-  Scene m;
-  m.mesh = generateBarImpactMesh(o);
-  Material steel{2e11, 0.3, 7800.0};
-  m.physics.resize(m.mesh.blocks.size());
-  for (auto& p : m.physics) p.kernel = makeHex8(steel);
+  Scene m = hex8BenchmarkScene();
   m.mask = Assembler::carriedComponents(m.mesh, m.physics);
   for (int n : m.mesh.findNodeSet("CL_POU2")->nodes) m.mask[n] &= std::uint8_t(~(1u << DZ));
   std::vector<char> massless(m.mesh.numNodes(), 0);
