@@ -19,6 +19,8 @@ fi
 work="$bdir/corpus-$target"; art="$bdir/artifacts-$target"
 mkdir -p "$work" "$art"
 rm -f "$art"/*  # this run's reproducers only
+export TMPDIR="$bdir/tmp"  # the targets' input files (fuzz_input_file.hpp), not /tmp
+mkdir -p "$TMPDIR"
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$here/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"

@@ -2,31 +2,16 @@
 // (readExodusMesh takes a path). choc::InputError is the expected rejection; any other
 // exception escapes and is reported as a crash. A mesh that is read is checked for
 // consistency (connectivity and node sets within the node range).
-#include <unistd.h>
-
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <string>
 
+#include "fuzz_input_file.hpp"
 #include "input/Errors.hpp"
 #include "mesh/ExodusReader.hpp"
 
-namespace {
-std::string tempPath() {
-  const char* dir = std::getenv("TMPDIR");
-  return std::string(dir && *dir ? dir : "/tmp") + "/choc_fuzz_exo_" + std::to_string(getpid()) + ".exo";
-}
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static const std::string path = tempPath();
-  if (std::FILE* f = std::fopen(path.c_str(), "wb")) {
-    std::fwrite(data, 1, size, f);
-    std::fclose(f);
-  } else {
-    std::abort();
-  }
+  const std::string& path = writeFuzzInput(data, size, "exo", "exo");
   try {
     choc::Mesh mesh = choc::readExodusMesh(path);
     // The reader promises indices in range (ExodusReader.hpp): a violation is a finding.
