@@ -16,9 +16,10 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
-# Defaults of the 'Exact Solution' sublist (src/analysis/HistoryChecks.cpp, declareChecks).
+# The check type and the defaults of its parameters (src/checks/BarImpactCheck.cpp).
+EXACT_CHECK_TYPE = "Bar Impact Exact Solution"
 EXACT_DEFAULTS = {
-    "Enabled": False, "Node Set": "A", "Component": "DX", "Wave Speed": "bar",
+    "Node Set": "A", "Component": "DX", "Wave Speed": "bar",
     "Given Wave Speed": 0.0, "Length": 1.0, "Section Area": 4e-4, "Impact Velocity": -1.0,
     "Contact Start": 0.0, "Bilateral": False, "Force Column": "",
     "Max Error Tolerance": 0.0, "RMS Error Tolerance": 0.0,
@@ -119,7 +120,7 @@ class BarImpactExact:
 
 
 class ExactSpec:
-    """The 'Exact Solution' sublist of one analysis, resolved with the input's material."""
+    """The 'Bar Impact Exact Solution' check of one analysis, resolved with the input's material."""
 
     def __init__(self, params, material, wave_speed, exact):
         self.params, self.material, self.wave_speed, self.exact = params, material, wave_speed, exact
@@ -134,10 +135,12 @@ def exact_for_analysis(inp, analysis):
     an = inp.get("Analyses", {}).get(analysis)
     if an is None:
         raise ValueError(f"no analysis '{analysis}' in the input")
-    p = dict(EXACT_DEFAULTS)
-    p.update(an.get("Exact Solution", {}))
-    if not p["Enabled"]:
+    rows = [c for c in an.get("Checks", {}).values()
+            if isinstance(c, dict) and c.get("Type") == EXACT_CHECK_TYPE]
+    if not rows:
         return None
+    p = dict(EXACT_DEFAULTS)
+    p.update(rows[0])
     mats = inp.get("Model", {}).get("Materials", {})
     if not mats:
         raise ValueError("no Model/Materials in the input")

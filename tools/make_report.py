@@ -8,7 +8,7 @@ by tools/run-suite.sh: RESULTS_DIR/<input>/ for every input/sdnl111?.xml), or on
 directory (it holds checks.csv or histories directly; --input names its input, otherwise
 <inputs>/<dir name>.xml). The report holds:
   - every row of every checks.csv, with the total count of checks and of NOOK rows;
-  - per transient run with an enabled 'Exact Solution': the max and RMS error of u_A relative
+  - per transient run with a 'Bar Impact Exact Solution' check: the max and RMS error of u_A relative
     to the peak of the exact solution, computed here from the history with tools/bar_exact.py
     (independent of the C++ computation, which is read back from checks.csv, or from the run
     log <run dir>.log at its printed precision, and compared);

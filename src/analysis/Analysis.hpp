@@ -1,25 +1,35 @@
-// What every analysis of an input shares: the model, the output directory, the modal bases
-// computed so far, and the checks collected for checks.csv.
+// One analysis of an input, in three phases:
+//   settings  the constructor reads the validated parameter list once into typed settings
+//             (and refuses what needs no model: a step longer than the run, a scheme out of
+//             range...);
+//   setup     resolves every reference on the model (node and side sets, probes, the modal
+//             basis named, contact pairs, solver and method compatibility, checks) and
+//             builds what the run needs, with no time stepping and no file written;
+//             `choc check` stops here, so it reports every reference error `choc run` would;
+//   run       a short sequence of named steps, writing the results.
 #pragma once
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "analysis/Model.hpp"
 #include "output/Checks.hpp"
+#include "physics/ModalBasis.hpp"
+#include "physics/Model.hpp"
 
 namespace choc {
 
-struct ModalBasis {
-  std::string name;
-  std::vector<double> eigenvalues;  // omega^2, ascending
-  RCP<const MultiVector> vectors;   // M-normalised mode shapes on the model's map
-  double frequencyHz(int mode) const;
+// What setup sees: the model, and the modal analyses set up before this one (whose bases
+// the run will have computed).
+struct SetupContext {
+  Model& model;
+  std::map<std::string, int> modalAnalyses;  // name -> number of modes
 };
 
+// What run sees: the model, the output directory, the bases computed so far, the checks.
 struct RunContext {
   Model& model;
   std::string outputDir;
@@ -34,7 +44,9 @@ class Analysis {
       : name_(std::move(name)), params_(params), inputFile_(std::move(inputFile)) {}
   virtual ~Analysis() = default;
   const std::string& name() const { return name_; }
-  // Runs to completion, or throws InputError / NumericalError (outputs then abandoned).
+  // Throws InputError for a reference the model cannot resolve.
+  virtual void setup(SetupContext& ctx) = 0;
+  // Runs to completion, or throws NumericalError / Interrupted (outputs then abandoned).
   virtual void run(RunContext& ctx) = 0;
 
  protected:

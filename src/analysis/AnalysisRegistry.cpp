@@ -3,29 +3,32 @@
 #include "analysis/ImplicitTransient.hpp"
 #include "analysis/ModalAnalysis.hpp"
 #include "analysis/ModalTransient.hpp"
-#include "input/Errors.hpp"
+#include "checks/HistoryCheck.hpp"
+#include "core/Errors.hpp"
 #include "input/Validation.hpp"
+#include "observers/TransientOutputs.hpp"
 
 namespace choc {
+
+namespace {
+template <class A>
+std::unique_ptr<Analysis> make(const std::string& n, const Teuchos::ParameterList& p, const std::string& f) {
+  return std::make_unique<A>(n, p, f);
+}
+}  // namespace
 
 const std::vector<AnalysisType>& analysisTypes() {
   static const std::vector<AnalysisType> types = {
       {"Transient", "direct implicit transient: Newmark family (HHT, generalized-alpha), contact",
        &ImplicitTransient::parameters,
-       [](const std::string& n, const Teuchos::ParameterList& p, const std::string& f) {
-         return std::unique_ptr<Analysis>(new ImplicitTransient(n, p, f));
-       }},
+       &make<ImplicitTransient>},
       {"Modal", "natural modes by Anasazi shift-invert (K x = lambda M x)",
        &ModalAnalysis::parameters,
-       [](const std::string& n, const Teuchos::ParameterList& p, const std::string& f) {
-         return std::unique_ptr<Analysis>(new ModalAnalysis(n, p, f));
-       }},
+       &make<ModalAnalysis>},
       {"Modal Transient",
        "explicit transient on a modal basis with nonlinear shock links (DYNA_TRAN_MODAL)",
        &ModalTransient::parameters,
-       [](const std::string& n, const Teuchos::ParameterList& p, const std::string& f) {
-         return std::unique_ptr<Analysis>(new ModalTransient(n, p, f));
-       }},
+       &make<ModalTransient>},
   };
   return types;
 }
@@ -35,17 +38,14 @@ const AnalysisType& typeOf(const Teuchos::ParameterList& a, const std::string& n
                            const std::string& file) {
   std::vector<std::string> names;
   for (const auto& t : analysisTypes()) names.push_back(t.type);
-  std::string all;
-  for (const auto& n : names) all += (all.empty() ? "'" : ", '") + n + "'";
+  const std::string all = quotedNames(names);
   const std::string param = "Analyses/" + name + "/Type";
   if (!a.isParameter("Type")) throwInput(file, param, "", "is required but missing", "valid: " + all);
   if (!a.isType<std::string>("Type")) throwInput(file, param, "", "must be a string", "valid: " + all);
   const std::string type = a.get<std::string>("Type");
   for (const auto& t : analysisTypes())
     if (t.type == type) return t;
-  const std::string near = closestName(type, names);
-  throwInput(file, param, type, "unknown analysis type",
-             (near.empty() ? "" : "did you mean '" + near + "'? ") + "valid: " + all);
+  throwInput(file, param, type, "unknown analysis type", didYouMean(type, names) + "valid: " + all);
 }
 }  // namespace
 
@@ -56,7 +56,10 @@ void validateAnalyses(Teuchos::ParameterList& analyses, const std::string& input
     const std::string name = analyses.name(it);
     Teuchos::ParameterList& a = analyses.sublist(name);
     const AnalysisType& t = typeOf(a, name, inputFile);
-    validate(a, t.parameters(), InputLocation{inputFile, "Analyses/" + name});
+    const InputLocation where{inputFile, "Analyses/" + name};
+    if (t.type != "Modal") translateDeprecatedOutputKeys(a, inputFile, where.path);
+    validate(a, t.parameters(), where);
+    if (a.isSublist("Checks")) validateChecks(a.sublist("Checks"), where.child("Checks"));
   }
 }
 
@@ -69,6 +72,11 @@ std::vector<std::unique_ptr<Analysis>> createAnalyses(const Teuchos::ParameterLi
     out.push_back(typeOf(a, name, inputFile).create(name, a, inputFile));
   }
   return out;
+}
+
+void setupAnalyses(const std::vector<std::unique_ptr<Analysis>>& analyses, Model& model) {
+  SetupContext ctx{model, {}};
+  for (const auto& a : analyses) a->setup(ctx);
 }
 
 }  // namespace choc

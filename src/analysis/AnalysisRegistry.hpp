@@ -26,4 +26,8 @@ void validateAnalyses(Teuchos::ParameterList& analyses, const std::string& input
 std::vector<std::unique_ptr<Analysis>> createAnalyses(const Teuchos::ParameterList& analyses,
                                                       const std::string& inputFile);
 
+// Sets every analysis up on the model, in input order (a modal transient sees the Modal
+// analyses before it): every reference is resolved, nothing is computed or written.
+void setupAnalyses(const std::vector<std::unique_ptr<Analysis>>& analyses, Model& model);
+
 }  // namespace choc

@@ -2,18 +2,33 @@
 // acceleration, modified average acceleration, HHT, generalized-alpha, Newmark) over the
 // model's K and M with Rayleigh damping, constant nodal forces and contact (Lagrange,
 // penalty or the continuous augmented Lagrangian). Writes <name>.history.csv (probes,
-// energies, per-pair force and gap) and <name>.exo (every 'Exodus Interval' steps), checks
-// the declared rows and compares with the exact solution; prints Newton iterations,
-// refactorisations and the time split (assembly, linear solve, contact, output).
+// energies, per-pair force and gap) and <name>.exo (every 'Exodus Interval' steps), evaluates
+// its checks; prints Newton iterations, refactorisations and the time split (assembly,
+// linear solve, contact, output).
 #pragma once
+#include <chrono>
+#include <memory>
+
+#include <Teuchos_StackedTimer.hpp>
+
 #include "analysis/Analysis.hpp"
+#include "checks/HistoryCheck.hpp"
+#include "contact/ContactParameters.hpp"
+#include "observers/Probes.hpp"
+#include "observers/TransientOutputs.hpp"
+#include "physics/InitialConditions.hpp"
+#include "physics/StructuralOperator.hpp"
+#include "solvers/LinearSolver.hpp"
+#include "timeint/TransientDriver.hpp"
 
 namespace choc {
 
 class ImplicitTransient : public Analysis {
  public:
-  using Analysis::Analysis;
+  ImplicitTransient(const std::string& name, const Teuchos::ParameterList& params,
+                    const std::string& inputFile);
   static Teuchos::ParameterList parameters();
+  void setup(SetupContext& ctx) override;
   void run(RunContext& ctx) override;
 
   // Figures of the last run (for tests and the benchmark).
@@ -25,6 +40,39 @@ class ImplicitTransient : public Analysis {
   const Figures& figures() const { return figures_; }
 
  private:
+  struct Settings {
+    NewmarkFamily scheme = NewmarkFamily::averageAcceleration();
+    TransientSettings time;
+    double rayleighK = 0, rayleighM = 0;
+    ContactSettings contact;
+    TransientOutputSettings output;
+  };
+  // What setup builds for the run.
+  struct Built {
+    RCP<const CrsMatrix> K, M;
+    RCP<Vector> load;
+    std::unique_ptr<ContactManager> contact;
+    long long masslessNodes = 0;
+    std::unique_ptr<LinearSolver> solver;
+    std::vector<Probe> probes;
+    std::vector<std::string> columns;
+    std::vector<std::unique_ptr<HistoryCheck>> checks;
+    InitialFields init;
+  };
+  void readScheme();
+  void readTimeSettings();
+  RCP<Vector> assembleLoads(const Model& model) const;
+  void buildContact(Model& model);
+  void buildSolver();
+  void describe(Model& model, const StructuralOperator& op) const;
+  TransientSummary integrate(StructuralOperator& op, ObserverSet& outputs, const Model& model,
+                             Teuchos::StackedTimer* timer);
+  void recordFigures(const TransientSummary& sum, const StructuralOperator& op,
+                     const Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start);
+  void logFigures(const TransientSummary& sum, const Model& model, Teuchos::StackedTimer& timer) const;
+
+  Settings s_;
+  std::unique_ptr<Built> b_;
   Figures figures_;
 };
 

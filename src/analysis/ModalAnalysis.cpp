@@ -10,10 +10,11 @@
 
 #include "fem/Components.hpp"
 #include "fem/FieldGather.hpp"
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "input/ParameterSpec.hpp"
 #include "output/ExodusResults.hpp"
-#include "output/Log.hpp"
+#include "core/Format.hpp"
+#include "core/Log.hpp"
 #include "solvers/DenseEigenSolver.hpp"
 #include "solvers/EigenSolver.hpp"
 
@@ -51,98 +52,117 @@ double lowestShift(const CrsMatrix& K, const CrsMatrix& M) {
   return -1e-4 * ratio;
 }
 
+// f = sqrt(lambda) / 2 pi, 0 for a rigid-body mode.
+double frequencyOf(double lambda) { return lambda > 0 ? std::sqrt(lambda) / (2 * M_PI) : 0.0; }
+
 }  // namespace
 
-void ModalAnalysis::run(RunContext& ctx) {
-  Model& model = ctx.model;
-  auto K = model.stiffness();
-  auto M = model.mass();
-  EigenRequest req;
-  req.numModes = params_.get<int>("Number of Modes");
-  const long long n = model.dofs().numGlobal();
-  const bool dense = params_.get<std::string>("Method") == "dense";
-  if (!dense && req.numModes > n - 2)  // the Krylov-Schur basis needs two vectors more than the modes
-    throwInput(inputFile_, path("Number of Modes"), std::to_string(req.numModes),
+ModalAnalysis::ModalAnalysis(const std::string& name, const Teuchos::ParameterList& params,
+                             const std::string& inputFile)
+    : Analysis(name, params, inputFile) {
+  s_.numModes = params_.get<int>("Number of Modes");
+  s_.dense = params_.get<std::string>("Method") == "dense";
+  s_.nearest = params_.get<std::string>("Which") == "Nearest Shift";
+  s_.shiftFrequency = params_.get<double>("Shift Frequency");
+  s_.tolerance = params_.get<double>("Tolerance");
+  s_.residualTolerance = params_.get<double>("Residual Tolerance");
+  s_.maxRestarts = params_.get<int>("Maximum Restarts");
+  s_.directPackage = params_.get<std::string>("Direct Package");
+  s_.writeExodus = params_.get<bool>("Write Exodus");
+}
+
+void ModalAnalysis::setup(SetupContext& ctx) {
+  const long long n = ctx.model.dofs().numGlobal();
+  if (!s_.dense && s_.numModes > n - 2)  // the Krylov-Schur basis needs two vectors more than the modes
+    throwInput(inputFile_, path("Number of Modes"), std::to_string(s_.numModes),
                "more modes than the model's " + std::to_string(n) + " unknowns allow",
                "ask for at most " + std::to_string(n - 2) + ", or use 'Method' = 'dense'");
-  if (dense && req.numModes > n)
-    throwInput(inputFile_, path("Number of Modes"), std::to_string(req.numModes),
+  if (s_.dense && s_.numModes > n)
+    throwInput(inputFile_, path("Number of Modes"), std::to_string(s_.numModes),
                "more modes than the model's " + std::to_string(n) + " unknowns",
                "ask for at most " + std::to_string(n));
-  const bool nearest = params_.get<std::string>("Which") == "Nearest Shift";
-  const double fs = params_.get<double>("Shift Frequency");
-  req.shift = nearest ? std::pow(2.0 * M_PI * fs, 2) : lowestShift(*K, *M);
-  req.tolerance = params_.get<double>("Tolerance");
-  req.maxRestarts = params_.get<int>("Maximum Restarts");
-  req.directPackage = params_.get<std::string>("Direct Package");
+  ctx.modalAnalyses[name_] = s_.numModes;
+}
 
-  log() << "  " << n << " unknowns; " << req.numModes << " modes "
-        << (nearest ? "nearest " + std::to_string(fs) + " Hz" : std::string("lowest")) << "\n";
-  EigenResult res;
-  try {
-    res = dense ? solveDenseEigenproblem(K, M, req) : solveEigenproblem(K, M, req);
-  } catch (const NumericalError& e) {  // name the analysis that failed
-    throw NumericalError("modal analysis '" + name_ + "': " + e.what());
-  }
-
-  const double resTol = params_.get<double>("Residual Tolerance");
-  if (dense)
-    log() << "  dense LAPACK DSYGV on rank 0\n";
-  else
-    log() << "  Anasazi Block Krylov-Schur: " << res.restarts << " iterations, "
-          << res.operatorApplies << " shift-invert solves\n";
-  log() << "   mode   frequency [Hz]   gen. mass   residual\n";
-  int worst = 0;
-  for (int k = 0; k < req.numModes; ++k) {
-    const double f = res.eigenvalues[k] > 0 ? std::sqrt(res.eigenvalues[k]) / (2 * M_PI) : 0.0;
-    char line[128];
-    std::snprintf(line, sizeof line, "  %5d  %15.6f  %10.6f  %9.2e\n", k + 1, f,
-                  res.generalizedMass[k], res.residuals[k]);
-    log() << line;
-    if (!(res.residuals[k] <= res.residuals[worst])) worst = k;
-  }
-  if (!(res.residuals[worst] <= resTol)) {
-    char msg[160];  // %g, not std::to_string: residuals are ~1e-12 and would print as 0.000000
-    std::snprintf(msg, sizeof msg, " has residual %.3e above 'Residual Tolerance' %.3e",
-                  res.residuals[worst], resTol);
-    throw NumericalError("modal analysis '" + name_ + "': mode " + std::to_string(worst + 1) + msg);
-  }
-
-  // Outputs (rank 0 writes; every rank takes part in the gathers).
-  const std::string base = ctx.outputDir + "/" + name_;
-  std::vector<std::vector<double>> shapes;
-  for (int k = 0; k < req.numModes; ++k) shapes.push_back(gatherAll(*res.vectors, k, model.dofs()));
-  if (isRootRank()) {
-    {
-      const std::string csv = base + ".modes.csv";
-      FILE* f = std::fopen((csv + ".part").c_str(), "w");
-      if (!f) throw std::runtime_error("cannot write " + csv);
-      std::fprintf(f, "mode,frequency_hz,generalized_mass,residual\n");
-      for (int k = 0; k < req.numModes; ++k) {
-        const double l = res.eigenvalues[k];
-        std::fprintf(f, "%d,%.17g,%.17g,%.17g\n", k + 1, l > 0 ? std::sqrt(l) / (2 * M_PI) : 0.0,
-                     res.generalizedMass[k], res.residuals[k]);
-      }
-      std::fclose(f);
-      std::filesystem::rename(csv + ".part", csv);
-    }
-    if (params_.get<bool>("Write Exodus")) {
-      ExodusResultsWriter exo(base + ".exo", model.mesh(), {"DISP_X", "DISP_Y", "DISP_Z"},
-                              {"EIGENVALUE"});
-      for (int k = 0; k < req.numModes; ++k) {
-        const double l = res.eigenvalues[k];
-        std::vector<std::vector<double>> nodal;
-        for (int c : {DX, DY, DZ}) nodal.push_back(nodalComponent(shapes[k], model.dofs(), c));
-        exo.writeStep(l > 0 ? std::sqrt(l) / (2 * M_PI) : 0.0, nodal, {l});
-      }
-      exo.finish();
-    }
-  }
+void ModalAnalysis::run(RunContext& ctx) {
+  const EigenResult res = solve(ctx.model);
+  logModes(res);
+  checkResiduals(res);
+  writeResults(ctx, res);
   auto basis = std::make_shared<ModalBasis>();
   basis->name = name_;
   basis->eigenvalues = res.eigenvalues;
   basis->vectors = res.vectors;
   ctx.bases[name_] = basis;
+}
+
+EigenResult ModalAnalysis::solve(Model& model) const {
+  auto K = model.stiffness();
+  auto M = model.mass();
+  EigenRequest req;
+  req.numModes = s_.numModes;
+  req.shift = s_.nearest ? std::pow(2.0 * M_PI * s_.shiftFrequency, 2) : lowestShift(*K, *M);
+  req.tolerance = s_.tolerance;
+  req.maxRestarts = s_.maxRestarts;
+  req.directPackage = s_.directPackage;
+  log() << "  " << model.dofs().numGlobal() << " unknowns; " << req.numModes << " modes "
+        << (s_.nearest ? "nearest " + std::to_string(s_.shiftFrequency) + " Hz" : std::string("lowest"))
+        << "\n";
+  EigenResult res;
+  try {
+    res = s_.dense ? solveDenseEigenproblem(K, M, req) : solveEigenproblem(K, M, req);
+  } catch (const NumericalError& e) {  // name the analysis that failed
+    throw NumericalError("modal analysis '" + name_ + "': " + e.what());
+  }
+  if (s_.dense)
+    log() << "  dense LAPACK DSYGV on rank 0\n";
+  else
+    log() << "  Anasazi Block Krylov-Schur: " << res.restarts << " iterations, "
+          << res.operatorApplies << " shift-invert solves\n";
+  return res;
+}
+
+void ModalAnalysis::logModes(const EigenResult& res) const {
+  log() << "   mode   frequency [Hz]   gen. mass   residual\n";
+  for (int k = 0; k < s_.numModes; ++k)
+    log() << format("  %5d  %15.6f  %10.6f  %9.2e\n", k + 1, frequencyOf(res.eigenvalues[k]),
+                    res.generalizedMass[k], res.residuals[k]);
+}
+
+void ModalAnalysis::checkResiduals(const EigenResult& res) const {
+  int worst = 0;
+  for (int k = 0; k < s_.numModes; ++k)
+    if (!(res.residuals[k] <= res.residuals[worst])) worst = k;
+  // %g, not std::to_string: residuals are ~1e-12 and would print as 0.000000
+  if (!(res.residuals[worst] <= s_.residualTolerance))
+    throw NumericalError(format("modal analysis '%s': mode %d has residual %.3e above 'Residual Tolerance' %.3e",
+                                name_.c_str(), worst + 1, res.residuals[worst], s_.residualTolerance));
+}
+
+// <name>.modes.csv and <name>.exo (rank 0 writes; every rank takes part in the gathers).
+void ModalAnalysis::writeResults(const RunContext& ctx, const EigenResult& res) const {
+  const Model& model = ctx.model;
+  const std::string base = ctx.outputDir + "/" + name_;
+  std::vector<std::vector<double>> shapes;
+  for (int k = 0; k < s_.numModes; ++k) shapes.push_back(gatherAll(*res.vectors, k, model.dofs()));
+  if (!isRootRank()) return;
+  const std::string csv = base + ".modes.csv";
+  FILE* f = std::fopen((csv + ".part").c_str(), "w");
+  if (!f) throw std::runtime_error("cannot write " + csv);
+  std::fprintf(f, "mode,frequency_hz,generalized_mass,residual\n");
+  for (int k = 0; k < s_.numModes; ++k)
+    std::fprintf(f, "%d,%.17g,%.17g,%.17g\n", k + 1, frequencyOf(res.eigenvalues[k]),
+                 res.generalizedMass[k], res.residuals[k]);
+  std::fclose(f);
+  std::filesystem::rename(csv + ".part", csv);
+  if (!s_.writeExodus) return;
+  ExodusResultsWriter exo(base + ".exo", model.mesh(), {"DISP_X", "DISP_Y", "DISP_Z"}, {"EIGENVALUE"});
+  for (int k = 0; k < s_.numModes; ++k) {
+    std::vector<std::vector<double>> nodal;
+    for (int c : {DX, DY, DZ}) nodal.push_back(nodalComponent(shapes[k], model.dofs(), c));
+    exo.writeStep(frequencyOf(res.eigenvalues[k]), nodal, {res.eigenvalues[k]});
+  }
+  exo.finish();
 }
 
 }  // namespace choc

@@ -2,28 +2,14 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <memory>
 #include <sstream>
 
-#include <Tpetra_CrsMatrix.hpp>
-#include <Tpetra_MultiVector.hpp>
-#include <Tpetra_Vector.hpp>
-
-#include "analysis/EnergyBalance.hpp"
-#include "analysis/HistoryChecks.hpp"
-#include "analysis/HistoryProbes.hpp"
-#include "analysis/InitialConditions.hpp"
-#include "analysis/ModalLinks.hpp"
-#include "analysis/ModalProjection.hpp"
-#include "fem/Components.hpp"
+#include "core/Errors.hpp"
+#include "core/Format.hpp"
+#include "core/Log.hpp"
 #include "fem/FieldGather.hpp"
-#include "input/Errors.hpp"
 #include "input/ParameterSpec.hpp"
-#include "output/ExodusResults.hpp"
-#include "output/HistoryCsv.hpp"
-#include "output/Interrupt.hpp"
-#include "output/Log.hpp"
+#include "physics/ModalProjection.hpp"
 
 namespace choc {
 
@@ -52,12 +38,8 @@ Teuchos::ParameterList ModalTransient::parameters() {
                 "penalty links)");
   declareChoice(p, "Projection", "mass-weighted", {"mass-weighted", "least-squares"},
                 "projection of the initial fields on the basis");
-  declareString(p, "History", "", "history quantities '<node set>:<DX|VX|AX...>', e.g. 'A:DX A:VX'");
-  declareInt(p, "Exodus Interval", 10, "write the Exodus fields every N steps (0: never)",
-             Range::atLeast(0));
-  declareInt(p, "Progress Lines", 10, "progress lines printed during the run", Range::atLeast(0));
-  declareEnergyBalance(p);
   declareInitialConditions(p);
+  declareTransientOutput(p);
   declareShockLinks(p);
   declareChecks(p);
   return p;
@@ -65,14 +47,8 @@ Teuchos::ParameterList ModalTransient::parameters() {
 
 namespace {
 
-std::string number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
-
-std::vector<double> parseList(const std::string& text, const std::string& file,
-                              const std::string& param) {
+std::vector<double> parseDampingList(const std::string& text, const std::string& file,
+                                     const std::string& param) {
   std::vector<double> v;
   std::istringstream in(text);
   std::string tok;
@@ -87,251 +63,162 @@ std::vector<double> parseList(const std::string& text, const std::string& file,
 
 }  // namespace
 
-void ModalTransient::run(RunContext& ctx) {
-  Model& model = ctx.model;
-  const std::string& file = inputFile_;
-  const std::string basisName = params_.get<std::string>("Modal Basis");
-  auto it = ctx.bases.find(basisName);
-  if (it == ctx.bases.end())
-    throwInput(file, path("Modal Basis"), basisName, "no modal basis of that name has been computed",
-               "name a Modal analysis listed before this one in Analyses");
-  const ModalBasis& basis = *it->second;
-  const int nm = static_cast<int>(basis.eigenvalues.size());
+ModalTransient::ModalTransient(const std::string& name, const Teuchos::ParameterList& params,
+                               const std::string& inputFile)
+    : Analysis(name, params, inputFile) {
+  s_.basis = params_.get<std::string>("Modal Basis");
+  s_.damping = params_.get<double>("Modal Damping");
+  s_.dampingList = parseDampingList(params_.get<std::string>("Modal Damping List"), inputFile_,
+                                    path("Modal Damping List"));
+  s_.rigidFrequency = params_.get<double>("Rigid Body Frequency");
+  s_.projection = params_.get<std::string>("Projection");
+  s_.stability = params_.get<std::string>("Stability Check");
+  s_.scheme = parseModalScheme(params_.get<std::string>("Scheme"));
+  s_.refinement = params_.get<int>("Refinement Factor");
+  s_.output = readTransientOutput(params_);
+  readTimeGrid();
+}
 
-  // Generalized stiffness and damping.
-  std::vector<double> w2(nm), c(nm), xi(nm, params_.get<double>("Modal Damping"));
-  const std::string list = params_.get<std::string>("Modal Damping List");
-  if (!list.empty()) {
-    xi = parseList(list, file, path("Modal Damping List"));
-    if (static_cast<int>(xi.size()) != nm)
-      throwInput(file, path("Modal Damping List"), list,
-                 "has " + std::to_string(xi.size()) + " values for " + std::to_string(nm) + " modes");
-  }
-  const double fRigid = params_.get<double>("Rigid Body Frequency");
-  int rigid = 0;
-  double w2max = 0.0, ximax = 0.0;
-  for (int k = 0; k < nm; ++k) {
-    w2[k] = std::max(0.0, basis.eigenvalues[k]);
-    if (basis.frequencyHz(k) < fRigid) {
-      xi[k] = 0.0;
-      ++rigid;
-    }
-    c[k] = 2.0 * xi[k] * std::sqrt(w2[k]);
-    w2max = std::max(w2max, w2[k]);
-    ximax = std::max(ximax, xi[k]);
-  }
-
-  // Initial state.
-  const InitialFields init = buildInitialFields(params_, model, "Analyses/" + name_);
-  const std::string proj = params_.get<std::string>("Projection");
-  ModalState state;
-  state.q = projectOnBasis(*basis.vectors, *model.mass(), *init.displacement, proj);
-  state.v = projectOnBasis(*basis.vectors, *model.mass(), *init.velocity, proj);
-  const double resU = projectionResidual(*basis.vectors, *init.displacement, state.q);
-  const double resV = projectionResidual(*basis.vectors, *init.velocity, state.v);
-
-  ModalLinks links(params_, model, basis, "Analyses/" + name_);
-  const std::vector<Probe> probes =
-      parseProbes(params_.get<std::string>("History"), model, path("History"));
-  std::vector<long long> probeDofs;
-  for (const auto& p : probes) probeDofs.push_back(p.dof);
-  const std::vector<double> probeRows = gatherRows(*basis.vectors, probeDofs);
-
-  // Time grid and stability.
-  const double t0 = params_.get<double>("Start Time"), tEnd = params_.get<double>("End Time");
-  double dt = params_.get<double>("Time Step");
-  if (!(tEnd > t0)) throwInput(file, path("End Time"), number(tEnd), "must exceed the Start Time");
-  const double ratio = (tEnd - t0) / dt;
-  const long long nsteps = std::llround(ratio);
-  if (nsteps < 1 || std::abs(ratio - nsteps) > 1e-6 * std::max(1.0, ratio))
-    throwInput(file, path("Time Step"), number(dt),
+void ModalTransient::readTimeGrid() {
+  s_.startTime = params_.get<double>("Start Time");
+  s_.endTime = params_.get<double>("End Time");
+  s_.dt = params_.get<double>("Time Step");
+  if (!(s_.endTime > s_.startTime))
+    throwInput(inputFile_, path("End Time"), format("%.6g", s_.endTime), "must exceed the Start Time");
+  const double ratio = (s_.endTime - s_.startTime) / s_.dt;
+  s_.steps = std::llround(ratio);
+  if (s_.steps < 1 || std::abs(ratio - s_.steps) > 1e-6 * std::max(1.0, ratio))
+    throwInput(inputFile_, path("Time Step"), format("%.6g", s_.dt),
                "does not divide End Time - Start Time into whole steps",
                "choose dt = (End - Start) / N");
-  const double omegaMax = std::sqrt(w2max + links.linkOmega2Bound());
-  const double dtCrit = explicitCriticalStep(omegaMax, std::max(ximax, links.linkDampingRatioBound()));
-  int substeps = 1;
-  const std::string stab = params_.get<std::string>("Stability Check");
-  const ModalScheme scheme = parseModalScheme(params_.get<std::string>("Scheme"));
-  char buf[320];
-  std::snprintf(buf, sizeof buf,
-                "  %lld unknowns; basis '%s': %d modes (%d rigid), %.1f Hz to %.1f Hz; %zu link(s)\n"
-                "  projection (%s) residual: displacement %.2e, velocity %.2e\n"
-                "  critical step %.4e s (modes + link stiffness), dt = %.4e s, %lld steps\n",
-                model.dofs().numGlobal(), basisName.c_str(), nm, rigid, basis.frequencyHz(0),
-                basis.frequencyHz(nm - 1), links.links().size(), proj.c_str(), resU, resV, dtCrit,
-                dt, nsteps);
-  log() << buf;
-  if (dt > dtCrit) {
-    std::snprintf(buf, sizeof buf, "%.4e s exceeds the critical step %.4e s of the explicit scheme",
-                  dt, dtCrit);
-    if (stab == "refuse")
-      throwInput(file, path("Time Step"), number(dt), buf,
-                 "reduce dt, or set 'Stability Check' to 'substep'");
-    if (stab == "warn") log() << "  warning: " << buf << "\n";
-    if (stab == "substep") {
-      // Penalty links: the critical step is a linear-stability bound, but each closing of a
-      // stiff link is a nonlinear event that can add energy near the limit (a 1e16 N/m link
-      // doubled the energy at 0.9 of it, ~1% at 0.5): sub-step at half of it then.
-      bool penalty = false;
-      for (const auto& l : links.links()) penalty = penalty || !l.law.rigid;
-      substeps = static_cast<int>(std::ceil(dt / ((penalty ? 0.5 : 0.9) * dtCrit)));
-      log() << "  " << buf << ": " << substeps << " sub-steps per step\n";
-    }
-  }
+}
 
-  // Outputs.
-  std::vector<std::string> columns;
-  for (const auto& p : probes) columns.push_back(p.column);
-  for (const char* e : {"energy:kinetic", "energy:strain", "energy:contact", "energy:dissipated",
-                        "energy:total", "energy:balance"})
-    columns.push_back(e);
-  for (const auto& l : links.links()) {
-    columns.push_back(l.name + ":force");
-    columns.push_back(l.name + ":gap");
-    columns.push_back(l.name + ":status");
-  }
-  verifyChecks(params_, columns, tEnd, file, "Analyses/" + name_);
-  const std::string base = ctx.outputDir + "/" + name_;
-  std::unique_ptr<HistoryCsv> history;
-  std::unique_ptr<ExodusResultsWriter> exo;
-  const int exoEvery = params_.get<int>("Exodus Interval");
-  std::vector<std::string> globals = {"KINETIC_ENERGY", "STRAIN_ENERGY", "CONTACT_ENERGY",
-                                      "TOTAL_ENERGY"};
-  for (const auto& l : links.links()) {
-    globals.push_back(l.name + "_FORCE");
-    globals.push_back(l.name + "_GAP");
-    globals.push_back(l.name + "_STATUS");
-  }
-  if (isRootRank()) {
-    history = std::make_unique<HistoryCsv>(base + ".history.csv", columns);
-    if (exoEvery > 0)
-      exo = std::make_unique<ExodusResultsWriter>(
-          base + ".exo", model.mesh(),
-          std::vector<std::string>{"DISP_X", "DISP_Y", "DISP_Z", "VEL_X", "VEL_Y", "VEL_Z",
-                                   "ACC_X", "ACC_Y", "ACC_Z"},
-          globals);
-  }
+void ModalTransient::setup(SetupContext& ctx) {
+  const auto basis = ctx.modalAnalyses.find(s_.basis);
+  if (basis == ctx.modalAnalyses.end())
+    throwInput(inputFile_, path("Modal Basis"), s_.basis, "no modal basis of that name has been computed",
+               "name a Modal analysis listed before this one in Analyses");
+  if (!s_.dampingList.empty() && int(s_.dampingList.size()) != basis->second)
+    throwInput(inputFile_, path("Modal Damping List"), params_.get<std::string>("Modal Damping List"),
+               "has " + std::to_string(s_.dampingList.size()) + " values for " +
+                   std::to_string(basis->second) + " modes");
+  b_ = std::make_unique<Built>();
+  b_->links = readShockLinks(params_, ctx.model, "Analyses/" + name_);
+  b_->probes = parseProbes(s_.output.history, ctx.model, path("History"));
+  std::vector<std::string> probeColumns;
+  for (const auto& p : b_->probes) probeColumns.push_back(p.column);
+  b_->columns = historyColumns(probeColumns, shockLinkColumns(b_->links));
+  b_->checks = makeChecks(params_, ctx.model, name_);
+  for (const auto& c : b_->checks) c->verify(b_->columns, s_.endTime);
+  b_->init = buildInitialFields(params_, ctx.model, "Analyses/" + name_);
+}
 
-  ModalIntegrator integrator(scheme, w2, c, links, params_.get<int>("Refinement Factor"));
-  integrator.initialize(state, t0);
-  RecordedHistory rec;
-  // No external loads in a modal transient (obstacles are fixed): W_external = 0.
-  EnergyBalanceMonitor balance(params_, "modal transient '" + name_ + "'");
-  std::vector<double> row(columns.size() - 0);
-  Vector field(model.map());
+void ModalTransient::run(RunContext& ctx) {
+  const ModalBasis& basis = *ctx.bases.at(s_.basis);
+  const Generalized g = generalizedSystem(basis);
+  double residuals[2];
+  ModalState state = initialState(ctx.model, basis, residuals);
+  ModalLinks links(b_->links, ctx.model, basis);
+  describe(ctx.model, basis, g, links, residuals);
+  const int substeps = stepsPerStep(g, links);
+  ModalIntegrator integrator(s_.scheme, g.omega2, g.damping, links, s_.refinement);
+  integrator.initialize(state, s_.startTime);
+  std::vector<long long> probeDofs;
+  for (const auto& p : b_->probes) probeDofs.push_back(p.dof);
+  ModalStepView view(state, integrator, links, basis, g.omega2,
+                     {b_->probes, gatherRows(*basis.vectors, probeDofs)},
+                     s_.scheme == ModalScheme::SymplecticEuler);
+  ObserverSet outputs;
+  const OutputPlan plan{"modal transient '" + name_ + "'", ctx.outputDir + "/" + name_, b_->columns,
+                        s_.startTime, s_.endTime, ctx.model.comm()->getSize() > 1 ? 50 : 1};
+  const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model, params_);
+  integrate(integrator, state, view, outputs, substeps);
+  evaluateChecks(b_->checks, history.history(), ctx.checks);
+}
 
-  auto probeValue = [&](size_t i, const std::vector<double>& x) {
-    double s = 0.0;
-    const double* r = &probeRows[i * nm];
-    for (int k = 0; k < nm; ++k) s += r[k] * x[k];
-    return s;
-  };
-  auto record = [&](long long step) {
-    size_t j = 0;
-    const std::vector<double> vsync = integrator.synchronizedVelocity(state);
-    for (size_t i = 0; i < probes.size(); ++i) {
-      // Velocities: the scheme's own v for symplectic Euler (as the reference deck reports
-      // it), the synchronized one (with the constraint impulse) for the other schemes.
-      const auto& x = probes[i].field == ProbeField::Displacement ? state.q
-                      : probes[i].field == ProbeField::Velocity
-                          ? (scheme == ModalScheme::SymplecticEuler ? state.v : vsync)
-                          : state.a;
-      row[j++] = probeValue(i, x);
+ModalTransient::Generalized ModalTransient::generalizedSystem(const ModalBasis& basis) const {
+  const int nm = static_cast<int>(basis.eigenvalues.size());
+  Generalized g;
+  g.omega2.assign(nm, 0.0);
+  g.damping.assign(nm, 0.0);
+  std::vector<double> xi = s_.dampingList.empty() ? std::vector<double>(nm, s_.damping) : s_.dampingList;
+  for (int k = 0; k < nm; ++k) {
+    g.omega2[k] = std::max(0.0, basis.eigenvalues[k]);
+    if (basis.frequencyHz(k) < s_.rigidFrequency) {
+      xi[k] = 0.0;
+      ++g.rigid;
     }
-    double ek = 0.0, es = 0.0;
-    const std::vector<double> vs = integrator.synchronizedVelocity(state);
-    for (int k = 0; k < nm; ++k) {
-      ek += 0.5 * vs[k] * vs[k];
-      es += 0.5 * w2[k] * state.q[k] * state.q[k];
-    }
-    const double ec = links.springEnergy();
-    const double ed = integrator.modalDissipation() + links.dissipatedEnergy();
-    row[j++] = ek;
-    row[j++] = es;
-    row[j++] = ec;
-    row[j++] = ed;
-    row[j++] = ek + es + ec;
-    row[j++] = balance.update(state.t, ek + es + ec, ed, 0.0);
-    for (const auto& l : links.links()) {
-      row[j++] = l.last.normalForce;
-      row[j++] = l.last.gap;
-      row[j++] = l.last.closed ? 1.0 : 0.0;
-    }
-    for (size_t i = 0; i < row.size(); ++i)
-      if (!std::isfinite(row[i])) {
-        std::snprintf(buf, sizeof buf, "%.6e s (%s = %g; unstable time step?)", state.t,
-                      columns[i].c_str(), row[i]);
-        throw NumericalError("modal transient '" + name_ + "': the solution is not finite at t = " + buf);
-      }
-    rec.times.push_back(state.t);
-    for (size_t i = 0; i < columns.size(); ++i) rec.columns[columns[i]].push_back(row[i]);
-    if (history) history->appendRow(state.t, row);
-    if (exoEvery > 0 && step % exoEvery == 0) {
-      std::vector<std::vector<double>> nodal;
-      for (const auto* x : {&state.q, &state.v, &state.a}) {
-        field.putScalar(0.0);
-        for (int k = 0; k < nm; ++k) field.update((*x)[k], *basis.vectors->getVector(k), 1.0);
-        const auto all = gatherAll(field, 0, model.dofs());
-        for (int cpt : {DX, DY, DZ}) nodal.push_back(nodalComponent(all, model.dofs(), cpt));
-      }
-      std::vector<double> g = {row[probes.size()], row[probes.size() + 1], row[probes.size() + 2],
-                               row[probes.size() + 4]};
-      for (const auto& l : links.links()) {
-        g.push_back(l.last.normalForce);
-        g.push_back(l.last.gap);
-        g.push_back(l.last.closed ? 1.0 : 0.0);
-      }
-      if (exo) exo->writeStep(state.t, nodal, g);
-    }
-  };
-
-  const int progressLines = params_.get<int>("Progress Lines");
-  const long long progressEvery = progressLines > 0 ? std::max(1LL, nsteps / progressLines) : 0;
-  const auto loopStart = std::chrono::steady_clock::now();
-  // SIGINT/SIGTERM stop the run at a step boundary (every step on one rank; on several, every
-  // 50 steps, since the check is then a reduction).
-  const long long interruptEvery = model.comm()->getSize() > 1 ? 50 : 1;
-  const std::string what = "modal transient '" + name_ + "'";
-  try {
-    record(0);
-    for (long long n = 1; n <= nsteps; ++n) {
-      if (n % interruptEvery == 0) throwIfInterrupted(what, state.t, model.rawComm());
-      integrator.advance(state, dt, substeps);
-      state.t = t0 + n * dt;
-      record(n);
-      if (progressEvery && n % progressEvery == 0) {
-        std::snprintf(buf, sizeof buf, "  step %7lld/%lld  t = %.4e s", n, nsteps, state.t);
-        log() << buf;
-        for (const auto& l : links.links())
-          log() << "  " << l.name << (l.last.closed ? " closed" : " open") << " F = " << l.last.normalForce;
-        log() << "\n";
-      }
-    }
-  } catch (...) {
-    std::string kept;
-    if (history && history->open()) kept += " " + incompletePath(history->path());
-    if (exo) kept += " " + exo->incompletePath();
-    if (history) history->abandon();
-    if (exo) exo->abandon();
-    log() << "  run stopped at t = " << state.t << " s; partial results (complete up to that time)"
-          << (kept.empty() ? std::string(": none") : ":" + kept) << "\n";
-    throw;
+    g.damping[k] = 2.0 * xi[k] * std::sqrt(g.omega2[k]);
+    g.omega2Max = std::max(g.omega2Max, g.omega2[k]);
+    g.xiMax = std::max(g.xiMax, xi[k]);
   }
-  if (history) history->finish();
-  if (exo) exo->finish();
-  const double loop =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count();
-  std::snprintf(buf, sizeof buf,
-                "  %lld steps, %lld sub-steps in %.4f s (%.2f us per step, output included); "
-                "history %s.history.csv\n",
-                nsteps, integrator.subStepsTaken(), loop, 1e6 * loop / nsteps, base.c_str());
-  log() << buf;
-  log() << balance.summary();
+  return g;
+}
 
-  auto results = evaluateDeclaredChecks(params_, rec, name_);
-  auto exact = compareWithExact(params_, rec, model, name_, "Analyses/" + name_);
-  results.insert(results.end(), exact.begin(), exact.end());
-  ctx.checks.insert(ctx.checks.end(), results.begin(), results.end());
+// The initial fields projected on the basis; residuals[0, 1]: of the displacement, velocity.
+ModalState ModalTransient::initialState(Model& m, const ModalBasis& basis,
+                                        double residuals[2]) const {
+  ModalState state;
+  state.q = projectOnBasis(*basis.vectors, *m.mass(), *b_->init.displacement, s_.projection);
+  state.v = projectOnBasis(*basis.vectors, *m.mass(), *b_->init.velocity, s_.projection);
+  residuals[0] = projectionResidual(*basis.vectors, *b_->init.displacement, state.q);
+  residuals[1] = projectionResidual(*basis.vectors, *b_->init.velocity, state.v);
+  return state;
+}
+
+void ModalTransient::describe(const Model& model, const ModalBasis& basis, const Generalized& g,
+                              const ModalLinks& links, const double residuals[2]) const {
+  const int nm = static_cast<int>(basis.eigenvalues.size());
+  const double dtCrit = explicitCriticalStep(std::sqrt(g.omega2Max + links.linkOmega2Bound()),
+                                             std::max(g.xiMax, links.linkDampingRatioBound()));
+  log() << format("  %lld unknowns; basis '%s': %d modes (%d rigid), %.1f Hz to %.1f Hz; %zu link(s)\n"
+                  "  projection (%s) residual: displacement %.2e, velocity %.2e\n"
+                  "  critical step %.4e s (modes + link stiffness), dt = %.4e s, %lld steps\n",
+                  model.dofs().numGlobal(), s_.basis.c_str(), nm, g.rigid, basis.frequencyHz(0),
+                  basis.frequencyHz(nm - 1), links.links().size(), s_.projection.c_str(),
+                  residuals[0], residuals[1], dtCrit, s_.dt, s_.steps);
+}
+
+// Sub-steps per step from the stability check (1 when dt is below the critical step).
+int ModalTransient::stepsPerStep(const Generalized& g, const ModalLinks& links) const {
+  const double dtCrit = explicitCriticalStep(std::sqrt(g.omega2Max + links.linkOmega2Bound()),
+                                             std::max(g.xiMax, links.linkDampingRatioBound()));
+  if (!(s_.dt > dtCrit)) return 1;
+  const std::string what =
+      format("%.4e s exceeds the critical step %.4e s of the explicit scheme", s_.dt, dtCrit);
+  if (s_.stability == "refuse")
+    throwInput(inputFile_, path("Time Step"), format("%.6g", s_.dt), what,
+               "reduce dt, or set 'Stability Check' to 'substep'");
+  if (s_.stability == "warn") {
+    log() << "  warning: " << what << "\n";
+    return 1;
+  }
+  // Penalty links: the critical step is a linear-stability bound, but each closing of a
+  // stiff link is a nonlinear event that can add energy near the limit (a 1e16 N/m link
+  // doubled the energy at 0.9 of it, ~1% at 0.5): sub-step at half of it then.
+  bool penalty = false;
+  for (const auto& l : links.links()) penalty = penalty || !l.law.rigid;
+  const int substeps = static_cast<int>(std::ceil(s_.dt / ((penalty ? 0.5 : 0.9) * dtCrit)));
+  log() << "  " << what << ": " << substeps << " sub-steps per step\n";
+  return substeps;
+}
+
+void ModalTransient::integrate(ModalIntegrator& integrator, ModalState& state, ModalStepView& view,
+                               ObserverSet& outputs, int substeps) const {
+  const auto start = std::chrono::steady_clock::now();
+  outputs.run(view, [&] {
+    view.at(0, 0.0, false);
+    outputs.step(view);
+    for (long long n = 1; n <= s_.steps; ++n) {
+      integrator.advance(state, s_.dt, substeps);
+      state.t = s_.startTime + n * s_.dt;
+      view.at(n, s_.dt, n == s_.steps);
+      outputs.step(view);
+    }
+  });
+  const double loop = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  log() << format("  %lld steps, %lld sub-steps in %.4f s (%.2f us per step, output included)\n",
+                  s_.steps, integrator.subStepsTaken(), loop, 1e6 * loop / s_.steps);
 }
 
 }  // namespace choc

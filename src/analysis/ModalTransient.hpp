@@ -3,15 +3,59 @@
 // initial fields projected on the basis, nonlinear shock links evaluated at their nodes,
 // explicit integration with a critical-step check that includes the link stiffness.
 #pragma once
+#include <memory>
+
 #include "analysis/Analysis.hpp"
+#include "analysis/ModalStepView.hpp"
+#include "checks/HistoryCheck.hpp"
+#include "observers/TransientOutputs.hpp"
+#include "physics/InitialConditions.hpp"
 
 namespace choc {
 
 class ModalTransient : public Analysis {
  public:
-  using Analysis::Analysis;
+  ModalTransient(const std::string& name, const Teuchos::ParameterList& params,
+                 const std::string& inputFile);
   static Teuchos::ParameterList parameters();
+  void setup(SetupContext& ctx) override;
   void run(RunContext& ctx) override;
+
+ private:
+  struct Settings {
+    std::string basis, projection, stability;
+    double damping = 0, rigidFrequency = 0;
+    std::vector<double> dampingList;  // empty: 'Modal Damping' for every mode
+    double startTime = 0, endTime = 0, dt = 0;
+    long long steps = 0;
+    ModalScheme scheme = ModalScheme::SymplecticEuler;
+    int refinement = 1;
+    TransientOutputSettings output;
+  };
+  struct Built {
+    std::vector<ModalLink> links;
+    std::vector<Probe> probes;
+    std::vector<std::string> columns;
+    std::vector<std::unique_ptr<HistoryCheck>> checks;
+    InitialFields init;
+  };
+  // The diagonal generalized system of the basis.
+  struct Generalized {
+    std::vector<double> omega2, damping;
+    int rigid = 0;
+    double omega2Max = 0, xiMax = 0;
+  };
+  void readTimeGrid();
+  Generalized generalizedSystem(const ModalBasis& basis) const;
+  ModalState initialState(Model& model, const ModalBasis& basis, double residuals[2]) const;
+  int stepsPerStep(const Generalized& g, const ModalLinks& links) const;
+  void describe(const Model& model, const ModalBasis& basis, const Generalized& g,
+                const ModalLinks& links, const double residuals[2]) const;
+  void integrate(ModalIntegrator& integrator, ModalState& state, ModalStepView& view,
+                 ObserverSet& outputs, int substeps) const;
+
+  Settings s_;
+  std::unique_ptr<Built> b_;
 };
 
 }  // namespace choc

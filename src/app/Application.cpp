@@ -8,9 +8,9 @@
 
 #include "app/Commands.hpp"
 #include "app/MeshCommand.hpp"
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "output/Interrupt.hpp"
-#include "output/Log.hpp"
+#include "core/Log.hpp"
 
 namespace choc {
 
@@ -83,7 +83,7 @@ int runApplication(int argc, char** argv) {
     std::string m = e.what();
     m = m.substr(0, m.find('\n'));
     reportError("internal error", m);
-    return 4;
+    return kExitInternalError;
   }
 }
 

@@ -1,7 +1,7 @@
 #include "app/InputDeck.hpp"
 
 #include "analysis/AnalysisRegistry.hpp"
-#include "analysis/ModelInput.hpp"
+#include "physics/ModelInput.hpp"
 #include "input/Validation.hpp"
 #include "input/XmlInput.hpp"
 

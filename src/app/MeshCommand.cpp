@@ -9,7 +9,7 @@
 #include <limits>
 #include <sstream>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "mesh/BarImpactMesh.hpp"
 #include "mesh/ExodusMeshWriter.hpp"
 

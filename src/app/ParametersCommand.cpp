@@ -1,11 +1,12 @@
 #include <iostream>
 
 #include "analysis/AnalysisRegistry.hpp"
-#include "analysis/ModelInput.hpp"
+#include "checks/HistoryCheck.hpp"
+#include "physics/ModelInput.hpp"
 #include "app/Commands.hpp"
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "input/Validation.hpp"
-#include "output/Log.hpp"
+#include "core/Log.hpp"
 
 namespace choc {
 
@@ -18,6 +19,8 @@ int runParametersCommand(const std::vector<std::string>& args) {
     out << "\nAnalyses/<name> with Type = '" << t.type << "': " << t.doc << "\n";
     printValidParameters(out, t.parameters(), "  ");
   }
+  out << "\nThe checks of a transient (Analyses/<name>/Checks/<name>):\n";
+  printCheckKinds(out, "  ");
   return kExitOk;
 }
 

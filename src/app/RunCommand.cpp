@@ -15,10 +15,10 @@
 #include "analysis/AnalysisRegistry.hpp"
 #include "app/Commands.hpp"
 #include "app/InputDeck.hpp"
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "output/Checks.hpp"
 #include "output/Interrupt.hpp"
-#include "output/Log.hpp"
+#include "core/Log.hpp"
 
 namespace choc {
 
@@ -105,6 +105,7 @@ int runRunCommand(const std::vector<std::string>& args) {
         << " elements, " << model.dofs().numGlobal() << " unknowns on " << comm->getSize()
         << " rank(s)\n";
   auto analyses = createAnalyses(input->sublist("Analyses"), a.input);
+  setupAnalyses(analyses, model);
   if (isRootRank()) {
     std::error_code ec;
     std::filesystem::create_directories(a.outputDir, ec);
@@ -177,7 +178,8 @@ int runCheckCommand(const std::vector<std::string>& args) {
   auto input = readAndValidateInput(a.input);
   auto comm = Tpetra::getDefaultComm();
   Model model(*input, a.input, comm);
-  createAnalyses(input->sublist("Analyses"), a.input);  // checks the analyses' references
+  // Settings and setup of every analysis: every reference error `choc run` would report.
+  setupAnalyses(createAnalyses(input->sublist("Analyses"), a.input), model);
   log() << "# " << a.input << " is valid: " << model.mesh().numNodes() << " nodes, "
         << model.dofs().numGlobal() << " unknowns\n";
   input->print(log(), Teuchos::ParameterList::PrintOptions().indent(2).showTypes(true).showDoc(false));

@@ -9,6 +9,17 @@
 
 namespace choc {
 
+std::vector<char> ContactManager::surfaceNodes(const Mesh& mesh) const {
+  std::vector<char> flags(mesh.numNodes(), 0);
+  for (const auto& pair : pairs_)
+    for (const std::string& name : {pair.masterSideSet, pair.slaveSideSet}) {
+      const SideSet* ss = mesh.findSideSet(name);  // checked by the pairing
+      for (size_t k = 0; ss && k < ss->elements.size(); ++k)
+        for (int n : mesh.sideNodes(ss->elements[k], ss->sides[k])) flags[n] = 1;
+    }
+  return flags;
+}
+
 ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const Map> map,
                                const std::vector<PairDefinition>& pairs,
                                std::unique_ptr<ContactMethod> method)

@@ -15,7 +15,7 @@
 #include "contact/ContactMethod.hpp"
 #include "contact/ContactPairing.hpp"
 #include "fem/DofMap.hpp"
-#include "fem/TpetraTypes.hpp"
+#include "core/TpetraTypes.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace choc {
@@ -43,6 +43,8 @@ class ContactManager {
   int numPairs() const { return static_cast<int>(pairs_.size()); }
   const PairDefinition& pair(int p) const { return pairs_[p]; }
   int unpairedNodes() const { return unpaired_; }
+  // Per mesh node: 1 for the nodes of every pair's master and slave side sets.
+  std::vector<char> surfaceNodes(const Mesh& mesh) const;
 
   // Gaps at u (the same array on every rank).
   std::vector<double> gaps(const Vector& u) const;

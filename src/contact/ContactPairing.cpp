@@ -9,11 +9,6 @@ namespace choc {
 
 namespace {
 
-Point3 sub(const Point3& a, const Point3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Point3 cross(const Point3& a, const Point3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 struct Face {
   std::array<int, 4> nodes;
@@ -65,7 +60,7 @@ bool projectOnQuad(const std::array<Point3, 4>& c, const Point3& x, double& xi, 
   xi = eta = 0.0;
   for (int it = 0; it < 30; ++it) {
     const QuadPoint q = evaluateQuad(c, xi, eta);
-    const Point3 d = sub(q.x, x);
+    const Point3 d = (q.x - x);
     const double r1 = dot(q.dxi, d), r2 = dot(q.deta, d);
     const double a = dot(q.dxi, q.dxi), b = dot(q.dxi, q.deta), e = dot(q.deta, q.deta);
     const double det = a * e - b * b;
@@ -103,7 +98,7 @@ PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pa
       if (!projectOnQuad(master[k].x, xs, xi, eta)) continue;
       if (std::abs(xi) > inside || std::abs(eta) > inside) continue;
       const QuadPoint q = evaluateQuad(master[k].x, xi, eta);
-      const Point3 d = sub(xs, q.x);
+      const Point3 d = (xs - q.x);
       const double dist = std::sqrt(dot(d, d));
       if (!(dist < bestDist - 1e-15)) continue;
       Point3 n = cross(q.dxi, q.deta);

@@ -4,15 +4,27 @@
 #include <map>
 #include <set>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsGraph.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 
 namespace choc {
 
-ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
-                             const ContactManager* contact)
+namespace {
+
+double maxDiagonal(const CrsMatrix& A) {
+  Vector d(A.getRowMap());
+  A.getLocalDiagCopy(d);
+  return d.normInf();
+}
+
+}  // namespace
+
+ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, ContactManager* contact)
     : K_(std::move(K)), M_(std::move(M)), contact_(contact) {
+  maxDiagK_ = maxDiagonal(*K_);
+  maxDiagM_ = maxDiagonal(*M_);
   auto dofMap = K_->getRowMap();
   auto comm = dofMap->getComm();
   const int rank = comm->getRank();
@@ -85,6 +97,7 @@ ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
 }
 
 void ContactSystem::fill(double aM, double aK) {
+  if (contact_) contact_->setScale(std::max(aM * maxDiagM_ + aK * maxDiagK_, 1e-300));
   A_->resumeFill();
   A_->setAllToScalar(0.0);
   auto dofMap = K_->getRowMap();
@@ -144,6 +157,35 @@ void ContactSystem::fill(double aM, double aK) {
     }
   }
   A_->fillComplete(map_, map_);
+}
+
+std::vector<char> ContactSystem::statusKey() const {
+  return contact_ ? contact_->status() : std::vector<char>();
+}
+
+void ContactSystem::rightHandSide(const Vector& r, const Vector& u, MultiVector& b) const {
+  auto rd = r.getData();
+  auto bd = b.getDataNonConst(0);
+  for (size_t i = 0; i < nLocalDofs_; ++i) bd[i] = -rd[i];
+  if (!extended_) return;
+  const std::vector<double> g = contact_->gaps(u);
+  for (int s = 0; s < contact_->numConstraints(); ++s)
+    if (rowOfConstraint_[s] >= 0) bd[rowOfConstraint_[s]] = -contact_->rowResidual(s, g[s]);
+}
+
+void ContactSystem::takeSolution(const MultiVector& x, Vector& du) const {
+  auto xd = x.getData(0);
+  {
+    auto d = du.getDataNonConst();
+    for (size_t i = 0; i < nLocalDofs_; ++i) d[i] = xd[i];
+  }
+  if (!extended_) return;
+  const int nS = contact_->numConstraints();
+  std::vector<double> mine(nS, 0.0), all(nS, 0.0);
+  for (int s = 0; s < nS; ++s)
+    if (rowOfConstraint_[s] >= 0) mine[s] = xd[rowOfConstraint_[s]];
+  Teuchos::reduceAll<int, double>(*K_->getComm(), Teuchos::REDUCE_SUM, nS, mine.data(), all.data());
+  contact_->applyCorrection(all);
 }
 
 }  // namespace choc

@@ -9,26 +9,35 @@
 // of active set keeps the sparsity (the direct solver reuses its symbolic factorisation).
 #pragma once
 #include "contact/ContactManager.hpp"
-#include "fem/TpetraTypes.hpp"
+#include "core/TpetraTypes.hpp"
 
 namespace choc {
 
 class ContactSystem {
  public:
   // contact may be null (no contact).
-  ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, const ContactManager* contact);
+  ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, ContactManager* contact);
   RCP<const Map> map() const { return map_; }  // DOF map, or extended by the multiplier rows
   bool extended() const { return extended_; }
   size_t numLocalDofs() const { return nLocalDofs_; }  // leading local entries are the DOFs
   // Local row of constraint s on this rank, or -1.
   LO multiplierRow(int s) const { return rowOfConstraint_[s]; }
-  // Refills the values: W = aM M + aK K plus the contact block for the current statuses.
+  // Refills the values: W = aM M + aK K plus the contact block for the current statuses,
+  // the multiplier rows scaled by the largest diagonal of aM M + aK K (a balanced system).
   void fill(double aM, double aK);
   RCP<const CrsMatrix> matrix() const { return A_; }
+  // What the factored matrix depends on besides (aM, aK): the contact statuses.
+  std::vector<char> statusKey() const;
+
+  // b = -r on the DOF rows and, on a multiplier row, the constraint's residual at u.
+  void rightHandSide(const Vector& r, const Vector& u, MultiVector& b) const;
+  // du = the DOF rows of x; the multiplier rows of x correct the contact pressures.
+  void takeSolution(const MultiVector& x, Vector& du) const;
 
  private:
   RCP<const CrsMatrix> K_, M_;
-  const ContactManager* contact_;
+  ContactManager* contact_;
+  double maxDiagK_ = 0, maxDiagM_ = 0;
   bool extended_ = false;
   size_t nLocalDofs_ = 0;
   RCP<const Map> map_;

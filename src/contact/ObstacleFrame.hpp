@@ -3,11 +3,9 @@
 // with alpha, beta the azimuth and elevation of n and gamma a twist about n (ANGL_VRIL):
 // n = x gives the global frame; n = y gives e2 = -x; n = z gives e3 = -x.
 #pragma once
-#include <array>
+#include "core/Vec3.hpp"
 
 namespace choc {
-
-using Vec3 = std::array<double, 3>;
 
 struct ObstacleFrame {
   Vec3 e1, e2, e3;
@@ -15,7 +13,5 @@ struct ObstacleFrame {
 
 // Throws std::invalid_argument when the axis is zero.
 ObstacleFrame obstacleFrame(const Vec3& axis, double twistRadians = 0.0);
-
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 }  // namespace choc

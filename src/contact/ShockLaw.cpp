@@ -23,7 +23,6 @@ namespace {
 Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
 Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 }  // namespace
 
 ShockGeometry shockGeometry(const ShockLawParameters& p, const Vec3& d) {

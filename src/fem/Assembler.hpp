@@ -9,7 +9,7 @@
 
 #include "fem/DofMap.hpp"
 #include "fem/ElementKernel.hpp"
-#include "fem/TpetraTypes.hpp"
+#include "core/TpetraTypes.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace choc {

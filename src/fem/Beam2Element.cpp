@@ -28,11 +28,6 @@ namespace choc {
 
 namespace {
 
-double dot(const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm(const Point3& a) { return std::sqrt(dot(a, a)); }
-Point3 cross(const Point3& a, const Point3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 // Part of v orthogonal to the unit vector e.
 Point3 orthogonalPart(const Point3& v, const Point3& e) {
   const double p = dot(v, e);

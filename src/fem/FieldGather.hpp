@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "fem/DofMap.hpp"
-#include "fem/TpetraTypes.hpp"
+#include "core/TpetraTypes.hpp"
 
 namespace choc {
 

@@ -1,6 +1,6 @@
 // Sparse matrix combinations used by solvers and integrators.
 #pragma once
-#include "fem/TpetraTypes.hpp"
+#include "core/TpetraTypes.hpp"
 
 namespace choc {
 

@@ -5,18 +5,14 @@
 
 #include <Teuchos_RCP.hpp>
 
+#include "core/Format.hpp"
+
 namespace choc {
 
 namespace {
 const char* kTemplate = "*";
 const char* kOpenMarker = "*open*";
 
-std::string number(double v) {
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 void attach(ParameterList& pl, const std::string& name, const Teuchos::ParameterEntry& value,
             const std::string& doc, Teuchos::RCP<SpecValidator> validator) {
@@ -42,7 +38,7 @@ bool Range::contains(double v) const {
 
 std::string Range::describe() const {
   // An infinite end is never attained: always an open bracket.
-  return std::string(loOpen || std::isinf(lo) ? "(" : "[") + number(lo) + ", " + number(hi) +
+  return std::string(loOpen || std::isinf(lo) ? "(" : "[") + shortNumber(lo) + ", " + shortNumber(hi) +
          (hiOpen || std::isinf(hi) ? ")" : "]");
 }
 

@@ -6,29 +6,13 @@
 #include <ostream>
 #include <sstream>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "input/ParameterSpec.hpp"
 
 namespace choc {
 
 namespace {
 
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j)
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
-}
 
 std::vector<std::string> visibleNames(const ParameterList& valid) {
   std::vector<std::string> names;
@@ -101,9 +85,8 @@ void checkValue(ParameterList& user, const std::string& name, const SpecValidato
       const std::string v = Teuchos::getValue<std::string>(e);
       const auto& c = spec.choices();
       if (std::find(c.begin(), c.end(), v) == c.end()) {
-        const std::string near = closestName(v, c);
         throwInput(where.file, param, v, "is not a valid choice",
-                   (near.empty() ? std::string() : "did you mean '" + near + "'? ") +
+                   didYouMean(v, c) +
                        "valid: " + spec.describe());
       }
       break;
@@ -113,21 +96,6 @@ void checkValue(ParameterList& user, const std::string& name, const SpecValidato
 
 }  // namespace
 
-std::string closestName(const std::string& key, const std::vector<std::string>& candidates) {
-  std::string best;
-  size_t bestDist = std::string::npos;
-  const std::string k = lower(key);
-  for (const auto& c : candidates) {
-    size_t d = editDistance(k, lower(c));
-    if (d < bestDist) {
-      bestDist = d;
-      best = c;
-    }
-  }
-  // Only suggest a name that is reasonably close.
-  if (best.empty() || bestDist > std::max<size_t>(3, best.size() / 2)) return "";
-  return best;
-}
 
 std::string entryToString(const Teuchos::ParameterEntry& e) {
   if (e.isList()) return "<sublist>";

@@ -5,6 +5,8 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "core/DidYouMean.hpp"
+
 namespace choc {
 
 // Where a sublist came from, for error messages: the input file and the path of the sublist.
@@ -24,9 +26,6 @@ struct InputLocation {
 // not offered, or a missing required key. Integers are accepted where a double is expected.
 void validate(Teuchos::ParameterList& user, const Teuchos::ParameterList& valid,
               const InputLocation& where);
-
-// The candidate closest to `key` by edit distance (case-insensitive); "" when none is close.
-std::string closestName(const std::string& key, const std::vector<std::string>& candidates);
 
 // Prints every parameter of `valid` with type, default and documentation, indented.
 void printValidParameters(std::ostream& out, const Teuchos::ParameterList& valid,

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 
 namespace choc {
 

@@ -13,7 +13,7 @@
 #include <Teuchos_XMLObject.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 
 namespace choc {
 

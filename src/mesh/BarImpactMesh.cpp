@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 
 namespace choc {
 

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <string>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 
 namespace choc {
 

@@ -11,7 +11,7 @@
 #include <unordered_set>
 #include <vector>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "mesh/ChildProcess.hpp"
 #include "mesh/MeshBytes.hpp"
 #include "mesh/NetcdfHeader.hpp"

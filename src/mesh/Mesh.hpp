@@ -6,9 +6,11 @@
 #include <utility>
 #include <vector>
 
+#include "core/Vec3.hpp"
+
 namespace choc {
 
-using Point3 = std::array<double, 3>;
+using Point3 = Vec3;
 
 // Exodus topology names as choc knows them: "BEAM2" (two-node beam/bar, also read from
 // "BAR2", "BEAM", "TRUSS2", "BAR"), "HEX8" (also "HEX"), "QUAD4" (faces, not elements).

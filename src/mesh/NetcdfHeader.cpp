@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 
 namespace choc {
 

@@ -8,7 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "output/HistoryCsv.hpp"
 
 namespace choc {

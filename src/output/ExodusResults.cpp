@@ -9,7 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "mesh/ExodusMeshWriter.hpp"
 
 namespace choc {

@@ -8,7 +8,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 
 namespace choc {
 namespace {

@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/Errors.hpp"
+
 namespace choc {
 
 // A run stopped on request. Not a NumericalError: it has its own exit code.
@@ -18,7 +20,7 @@ class Interrupted : public std::runtime_error {
   Interrupted(int signal, const std::string& message)
       : std::runtime_error(message), signal_(signal) {}
   int signal() const { return signal_; }
-  int exitCode() const { return 128 + signal_; }
+  int exitCode() const { return kExitInterruptBase + signal_; }
 
  private:
   int signal_;

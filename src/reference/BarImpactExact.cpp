@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 
 namespace choc {
 namespace {

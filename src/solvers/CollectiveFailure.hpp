@@ -4,7 +4,7 @@
 #pragma once
 #include <string>
 
-#include "fem/TpetraTypes.hpp"
+#include "core/TpetraTypes.hpp"
 
 namespace choc {
 

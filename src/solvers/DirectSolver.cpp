@@ -9,7 +9,7 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_MultiVector.hpp>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "solvers/CollectiveFailure.hpp"
 
 namespace choc {

@@ -11,7 +11,7 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include "fem/MatrixOps.hpp"
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "solvers/DirectSolver.hpp"
 
 namespace choc {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "fem/TpetraTypes.hpp"
+#include "core/TpetraTypes.hpp"
 
 namespace choc {
 

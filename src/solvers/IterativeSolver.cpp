@@ -9,7 +9,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 
 namespace choc {
 

@@ -8,7 +8,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "fem/TpetraTypes.hpp"
+#include "core/TpetraTypes.hpp"
 
 namespace choc {
 

@@ -6,17 +6,9 @@
 
 #include <Tpetra_Vector.hpp>
 
+#include "core/Format.hpp"
+
 namespace choc {
-
-namespace {
-
-std::string fmt(const char* f, double a, double b) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, f, a, b);
-  return buf;
-}
-
-}  // namespace
 
 NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoefficients& c,
                                    const ResidualFunction& residual, Vector& u,
@@ -49,7 +41,7 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
       if (it >= s.maxIterations) {
         out.message = "Newton did not converge in " + std::to_string(s.maxIterations) +
                       " iterations (" +
-                      fmt("residual %.3e for a reference %.3e", n.residual, n.reference) + ")";
+                      format("residual %.3e for a reference %.3e", n.residual, n.reference) + ")";
         return out;
       }
       const CorrectionStatus cs = op.solveCorrection(c, u, r, du);

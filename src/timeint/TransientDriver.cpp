@@ -7,7 +7,7 @@
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 
 namespace choc {
 

@@ -11,8 +11,8 @@
 #include <Tpetra_Core.hpp>
 
 #include "analysis/AnalysisRegistry.hpp"
-#include "analysis/Model.hpp"
-#include "analysis/ModelInput.hpp"
+#include "physics/Model.hpp"
+#include "physics/ModelInput.hpp"
 #include "input/Validation.hpp"
 #include "input/XmlInput.hpp"
 #include "mesh/BarImpactMesh.hpp"

@@ -12,7 +12,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "analysis/ImplicitTransient.hpp"
-#include "analysis/StructuralOperator.hpp"
+#include "physics/StructuralOperator.hpp"
 #include "contact/ContactManager.hpp"
 #include "reference/BarImpactExact.hpp"
 #include "test_analysis_contact_helpers.hpp"
@@ -39,7 +39,7 @@ std::string transient(const std::string& name, const std::string& method, const 
     << "<Parameter name=\"Alpha\" type=\"double\" value=\"" << alpha << "\"/>\n"
     << "<Parameter name=\"Time Step\" type=\"double\" value=\"" << dt << "\"/>\n"
     << "<Parameter name=\"End Time\" type=\"double\" value=\"" << end << "\"/>\n"
-    << "<Parameter name=\"Write Exodus\" type=\"bool\" value=\"false\"/>\n"
+    << "<Parameter name=\"Exodus Interval\" type=\"int\" value=\"0\"/>\n"
     << "<ParameterList name=\"Contact\"><Parameter name=\"Method\" type=\"string\" value=\"" << method
     << "\"/><ParameterList name=\"Pairs\"><ParameterList name=\"ifc\">"
     << "<Parameter name=\"Master Side Set\" type=\"string\" value=\"" << master << "\"/>"
@@ -65,6 +65,7 @@ RunResult runDeck(const std::string& dir, const std::string& text, const std::st
   auto d = readDeck(dir, text, comm);
   Model model(*d.input, d.file, comm);
   auto analyses = createAnalyses(d.input->sublist("Analyses"), d.file);
+  setupAnalyses(analyses, model);
   RunContext ctx{model, dir, {}, {}};
   RunResult r;
   for (auto& a : analyses) {
@@ -193,15 +194,17 @@ TEST(ContactImpact, BlockDroppedOnAnotherBlockFollowsTheExactSolution) {
       const double L = 0.1, dt = 2e-7, T = 2 * L / kCp;
       const std::string mesh = writeScene(dir, L, 20, 1, L, 20, across2, 1e-5, comm);
       const std::string exact =
-          "<ParameterList name=\"Exact Solution\"><Parameter name=\"Enabled\" type=\"bool\" value=\"true\"/>"
+          "<ParameterList name=\"Checks\"><ParameterList name=\"exact\">"
+          "<Parameter name=\"Type\" type=\"string\" value=\"Bar Impact Exact Solution\"/>"
           "<Parameter name=\"Node Set\" type=\"string\" value=\"N1\"/><Parameter name=\"Component\" type=\"string\" value=\"DZ\"/>"
           "<Parameter name=\"Wave Speed\" type=\"string\" value=\"oedometric\"/>"
           "<Parameter name=\"Length\" type=\"double\" value=\"0.1\"/>"
           "<Parameter name=\"Contact Start\" type=\"double\" value=\"1e-5\"/>"
-          "<Parameter name=\"Max Error Tolerance\" type=\"double\" value=\"0.05\"/></ParameterList>";
+          "<Parameter name=\"Max Error Tolerance\" type=\"double\" value=\"0.05\"/></ParameterList></ParameterList>";
       auto d = readDeck(dir, deck(mesh, "CL_POU2", transient("b", method, "modified average acceleration", -0.3, dt, 1e-5 + 2.5 * T, exact)), comm);
       Model model(*d.input, d.file, comm);
       auto analyses = createAnalyses(d.input->sublist("Analyses"), d.file);
+      setupAnalyses(analyses, model);
       RunContext ctx{model, dir, {}, {}};
       analyses[0]->run(ctx);
       ASSERT_EQ(ctx.checks.size(), 1u);
@@ -285,6 +288,7 @@ TEST(ContactImpact, ThreeMethodsAgreeOnTheBenchmarkWithinThePenaltyCompliance) {
   auto d = readDeck(dir, deck(mesh, "CL_POU2", an), comm);
   Model model(*d.input, d.file, comm);
   auto analyses = createAnalyses(d.input->sublist("Analyses"), d.file);
+  setupAnalyses(analyses, model);
   RunContext ctx{model, dir, {}, {}};
   for (auto& a : analyses) a->run(ctx);
   const HistoryTable lag = readHistoryCsv(dir + "/Lagrange.history.csv");

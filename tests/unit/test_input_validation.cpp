@@ -4,7 +4,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "input/ParameterSpec.hpp"
 #include "input/Validation.hpp"
 #include "input/Vector3.hpp"

@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "mesh/BarImpactMesh.hpp"
 
 namespace {

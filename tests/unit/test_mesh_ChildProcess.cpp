@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "mesh/ChildProcess.hpp"
 
 namespace {

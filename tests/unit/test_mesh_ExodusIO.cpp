@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "mesh/BarImpactMesh.hpp"
 #include "mesh/ExodusMeshWriter.hpp"
 #include "mesh/ExodusReader.hpp"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "mesh/BarImpactMesh.hpp"
 #include "mesh/ExodusReader.hpp"
 #include "output/ExodusResults.hpp"

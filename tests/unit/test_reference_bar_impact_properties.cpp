@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "reference/BarImpactExact.hpp"
 
 namespace {

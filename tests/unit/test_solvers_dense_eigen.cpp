@@ -9,7 +9,7 @@
 
 #include "fem/Assembler.hpp"
 #include "fem/Beam2Element.hpp"
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "mesh/BarImpactMesh.hpp"
 #include "solvers/DenseEigenSolver.hpp"
 

@@ -11,7 +11,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "input/Validation.hpp"
 #include "solvers/LinearSolver.hpp"
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "fuzz_input_file.hpp"
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "mesh/ExodusReader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "analysis/ModelInput.hpp"
+#include "physics/ModelInput.hpp"
 #include "fuzz_input_file.hpp"
-#include "input/Errors.hpp"
+#include "core/Errors.hpp"
 #include "input/Validation.hpp"
 #include "input/XmlInput.hpp"
 

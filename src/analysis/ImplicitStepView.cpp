@@ -1,0 +1,80 @@
+#include "analysis/ImplicitStepView.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "core/Format.hpp"
+#include "core/TimerScope.hpp"
+
+namespace choc {
+
+ImplicitStepView::ImplicitStepView(const StructuralOperator& op, ContactReport* contact,
+                                   std::vector<Probe> probes, ObserverSet& outputs,
+                                   Teuchos::StackedTimer* timer)
+    : op_(op), contact_(contact), probes_(std::move(probes)), outputs_(outputs), timer_(timer) {}
+
+void ImplicitStepView::stepAccepted(const StepInfo& info, const Vector& u, const Vector& v,
+                                    const Vector& a) {
+  TimerScope ts(timer_, "Transient: output");
+  info_ = info;
+  u_ = &u;
+  v_ = &v;
+  a_ = &a;
+  if (contact_) contact_->update(u);
+  outputs_.step(*this);
+}
+
+StepPoint ImplicitStepView::point() const {
+  StepPoint p;
+  p.step = info_.step;
+  p.time = info_.time;
+  p.dt = info_.dt;
+  p.last = info_.last;
+  return p;
+}
+
+// Owned values summed across ranks.
+std::vector<double> ImplicitStepView::probeValues() const {
+  std::vector<double> mine(probes_.size(), 0.0), vals(probes_.size(), 0.0);
+  auto map = u_->getMap();
+  for (size_t k = 0; k < probes_.size(); ++k) {
+    if (probes_[k].dof < 0) continue;
+    const LO l = map->getLocalElement(GO(probes_[k].dof));
+    if (l == Teuchos::OrdinalTraits<LO>::invalid()) continue;
+    const Vector& f = probes_[k].field == ProbeField::Displacement ? *u_
+                      : probes_[k].field == ProbeField::Velocity   ? *v_
+                                                                   : *a_;
+    mine[k] = f.getData()[l];
+  }
+  if (!mine.empty())
+    Teuchos::reduceAll<int, double>(*map->getComm(), Teuchos::REDUCE_SUM, int(mine.size()),
+                                    mine.data(), vals.data());
+  return vals;
+}
+
+EnergyTerms ImplicitStepView::energies() {
+  EnergyTerms e;
+  e.kinetic = op_.kineticEnergy(*v_);
+  e.strain = op_.strainEnergy(*u_);
+  e.contact = op_.contactEnergy(*u_);
+  const double power = op_.dampingPower(*v_, e.kinetic);
+  if (info_.step == 0) u0_ = rcp(new Vector(*u_, Teuchos::Copy));
+  dissipated_ += 0.5 * info_.dt * (lastPower_ + power);
+  lastPower_ = power;
+  e.dissipated = dissipated_;
+  e.external = op_.loadWork(*u_, *u0_);
+  return e;
+}
+
+void ImplicitStepView::fields(Vector& u, Vector& v, Vector& a) const {
+  u.assign(*u_);
+  v.assign(*v_);
+  a.assign(*a_);
+}
+
+std::string ImplicitStepView::stepNote() const {
+  return format("Newton %d, active-set passes %d", info_.newton.iterations,
+                info_.newton.activeSetIterations);
+}
+
+}  // namespace choc

@@ -1,0 +1,60 @@
+#include "checks/ValueCheck.hpp"
+
+#include "core/Errors.hpp"
+#include "input/ParameterSpec.hpp"
+
+namespace choc {
+
+Teuchos::ParameterList ValueCheck::parameters() {
+  Teuchos::ParameterList c;
+  declareChoice(c, "Type", "Value", {"Value"}, "check type");
+  declareRequiredString(c, "Quantity", "history column, e.g. 'A:DX'");
+  declareRequiredDouble(c, "Time", "time of the check [s]", Range::nonNegative());
+  declareRequiredDouble(c, "Reference", "reference value");
+  declareChoice(c, "Criterion", "relative", {"relative", "absolute"},
+                "relative: |computed-reference|/|reference|; absolute: |computed-reference|");
+  declareRequiredDouble(c, "Tolerance", "largest accepted error (a fraction when relative)",
+                        Range::positive());
+  declareChoice(c, "Kind", "analytic", {"analytic", "exact", "regression"},
+                "where the reference comes from");
+  declareString(c, "Note", "", "remark printed with the row (e.g. a known inconsistency)");
+  return c;
+}
+
+std::unique_ptr<HistoryCheck> ValueCheck::create(const Teuchos::ParameterList& row, const Model&,
+                                                 const CheckSite& site) {
+  auto c = std::make_unique<ValueCheck>();
+  CheckSpec& s = c->spec_;
+  s.name = site.name;
+  s.analysis = site.analysis;
+  s.quantity = row.get<std::string>("Quantity");
+  s.time = row.get<double>("Time");
+  s.reference = row.get<double>("Reference");
+  s.criterion = *parseCriterion(row.get<std::string>("Criterion"));
+  s.kind = *parseReferenceKind(row.get<std::string>("Kind"));
+  s.tolerance = row.get<double>("Tolerance");
+  s.note = row.get<std::string>("Note");
+  c->site_ = site;
+  return c;
+}
+
+void ValueCheck::verify(const std::vector<std::string>& columns, double endTime) const {
+  bool found = false;
+  std::string all;
+  for (const auto& col : columns) {
+    found = found || col == spec_.quantity;
+    all += (all.empty() ? "" : " ") + col;
+  }
+  if (!found)
+    throwInput(site_.file, site_.path + "/Quantity", spec_.quantity, "not a recorded history column",
+               "add it to 'History' (recorded: " + all + ")");
+  if (spec_.time > endTime * (1 + 1e-12))
+    throwInput(site_.file, site_.path + "/Time", std::to_string(spec_.time), "after the end of the run",
+               "the run ends at " + std::to_string(endTime));
+}
+
+std::vector<CheckResult> ValueCheck::evaluate(const RecordedHistory& h) const {
+  return {evaluateCheck(spec_, valueAtTime(h.times, h.columns.at(spec_.quantity), spec_.time))};
+}
+
+}  // namespace choc

@@ -1,0 +1,40 @@
+// The contact part of an analysis' input: its parameters ('Contact' and 'Contact Mass'), the
+// settings read from them, and the factory from settings to a contact manager with its
+// enforcement method. The analysis never picks a method or reads a contact key itself.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "contact/ContactManager.hpp"
+
+namespace choc {
+
+// Declares 'Contact' (method, pairs, tolerances) and 'Contact Mass' in an analysis' list.
+void declareContactParameters(Teuchos::ParameterList& analysis);
+
+struct ContactSettings {
+  std::string method = "None";  // None, Lagrange, Penalty, Continuous
+  double penaltyStiffness = 0, augmentation = 0, gapTolerance = 0;
+  int maxActiveSetIterations = 20;
+  std::vector<PairDefinition> pairs;
+  bool redistributeMass = false;  // 'Contact Mass' = redistributed
+  std::string path;               // "Analyses/<name>", for messages
+  bool enabled() const { return method != "None"; }
+  bool hasMultipliers() const { return method == "Lagrange" || method == "Continuous"; }
+};
+
+// Reads the validated analysis list; throws InputError for a method without pairs or a
+// redistributed mass without contact.
+ContactSettings readContactSettings(const Teuchos::ParameterList& analysis, const std::string& file,
+                                    const std::string& analysisPath);
+
+// The manager of the settings' pairs on the model (null when the method is None). Throws
+// InputError naming the pair's parameter for a side set the mesh lacks or a pairing failure.
+std::unique_ptr<ContactManager> makeContactManager(const ContactSettings& s, const Mesh& mesh,
+                                                   const DofMap& dofs, RCP<const Map> map,
+                                                   const std::string& file);
+
+}  // namespace choc

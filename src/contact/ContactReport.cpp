@@ -1,0 +1,68 @@
+#include "contact/ContactReport.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace choc {
+
+void ContactReport::update(const Vector& u) {
+  forces_ = contact_.forces(u);
+  gaps_ = contact_.gaps(u);
+}
+
+std::vector<std::string> ContactReport::historyColumns() const {
+  std::vector<std::string> c;
+  for (int p = 0; p < contact_.numPairs(); ++p) {
+    c.push_back(contact_.pair(p).name + ":force");
+    c.push_back(contact_.pair(p).name + ":gap");
+  }
+  return c;
+}
+
+std::vector<double> ContactReport::historyValues() const {
+  std::vector<double> vals;
+  for (int p = 0; p < contact_.numPairs(); ++p) {
+    double force = 0.0, gap = std::numeric_limits<double>::infinity();
+    for (int s = 0; s < contact_.numConstraints(); ++s)
+      if (contact_.constraints()[s].geometry.pair == p) {
+        force += forces_[s];
+        gap = std::min(gap, gaps_[s]);
+      }
+    vals.push_back(force);
+    vals.push_back(gap);
+  }
+  return vals;
+}
+
+std::vector<std::string> ContactReport::nodalFieldNames() const {
+  return {"CONTACT_FORCE", "CONTACT_PRESSURE", "CONTACT_GAP", "CONTACT_STATUS"};
+}
+
+std::vector<std::vector<double>> ContactReport::nodalFields() const {
+  std::vector<double> force(numNodes_, 0.0), pressure(numNodes_, 0.0), gap(numNodes_, 0.0),
+      status(numNodes_, 0.0);
+  for (int s = 0; s < contact_.numConstraints(); ++s) {
+    const auto& geo = contact_.constraints()[s].geometry;
+    force[geo.slaveNode] = forces_[s];
+    pressure[geo.slaveNode] = geo.area > 0 ? forces_[s] / geo.area : 0.0;
+    gap[geo.slaveNode] = gaps_[s];
+    status[geo.slaveNode] = contact_.status()[s] ? 1.0 : 0.0;
+  }
+  return {force, pressure, gap, status};
+}
+
+std::vector<std::string> ContactReport::globalNames() const {
+  return {"CONTACT_FORCE_TOTAL", "CONTACT_ACTIVE_NODES"};
+}
+
+std::vector<double> ContactReport::globalValues() const {
+  double total = 0.0;
+  for (double f : forces_) total += f;
+  return {total, double(contact_.activeCount())};
+}
+
+std::string ContactReport::progressNote() const {
+  return std::to_string(contact_.activeCount()) + " contact nodes active";
+}
+
+}  // namespace choc

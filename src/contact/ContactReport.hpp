@@ -1,0 +1,32 @@
+// What the contact of a direct transient reports at a recorded state: per pair the total
+// normal force and the smallest gap (history '<pair>:force', '<pair>:gap'), per slave node
+// the force, pressure, gap and status (Exodus CONTACT_FORCE, CONTACT_PRESSURE, CONTACT_GAP,
+// CONTACT_STATUS) and in total the force and the number of active nodes (Exodus globals).
+// update(u) evaluates the forces and gaps once (collective); the rest reads them.
+#pragma once
+#include "contact/ContactManager.hpp"
+#include "output/InteractionOutput.hpp"
+
+namespace choc {
+
+class ContactReport : public InteractionOutput {
+ public:
+  ContactReport(const ContactManager& contact, int numMeshNodes)
+      : contact_(contact), numNodes_(numMeshNodes) {}
+  void update(const Vector& u);
+
+  std::vector<std::string> historyColumns() const override;
+  std::vector<double> historyValues() const override;
+  std::vector<std::string> nodalFieldNames() const override;
+  std::vector<std::vector<double>> nodalFields() const override;
+  std::vector<std::string> globalNames() const override;
+  std::vector<double> globalValues() const override;
+  std::string progressNote() const override;
+
+ private:
+  const ContactManager& contact_;
+  int numNodes_;
+  std::vector<double> forces_, gaps_;
+};
+
+}  // namespace choc

@@ -1,0 +1,38 @@
+// Error kinds and the exit codes they map to (BRIEF §3).
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace choc {
+
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitInputError = 1,       // bad input: file, parameter, value
+  kExitNumericalFailure = 2, // a solver, Newton or the active set failed
+  kExitCheckFailed = 3,      // a declared check is NOOK
+  kExitInternalError = 4,    // an unexpected exception (a bug): please report it
+  kExitInterruptBase = 128,  // + the signal: 130 after SIGINT, 143 after SIGTERM
+};
+
+// Bad input. The message is one line naming the file, the parameter, the value and the fix.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A solver did not converge, a matrix is singular, a result is not finite (exit 2).
+class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// "<file>: parameter '<path>' = '<value>': <problem>; <fix>" (parts left out when empty).
+std::string inputMessage(const std::string& file, const std::string& parameter,
+                         const std::string& value, const std::string& problem,
+                         const std::string& fix = "");
+
+[[noreturn]] void throwInput(const std::string& file, const std::string& parameter,
+                             const std::string& value, const std::string& problem,
+                             const std::string& fix = "");
+
+}  // namespace choc

@@ -1,0 +1,103 @@
+// Energy balance of a transient run, shared by the modal and the implicit transients.
+//
+//   energy:balance(t) = E_total(t) + W_dissipated(t) - E_total(t0) - W_external(t)
+//
+// E_total = kinetic + strain + contact, W_dissipated the work of the modelled dampers
+// (modal or Rayleigh damping, link dashpots), W_external the work of the applied loads. An
+// exact integration of the model keeps the balance at zero; what remains is the scheme's own
+// (numerical) energy error: negative for schemes dissipative by design (HHT alpha < 0,
+// modified average acceleration, generalized-alpha, the dissipation of an impact under
+// exactly enforced contact), positive when the scheme adds energy (a step above the stability
+// limit, a stiff penalty released in one step, ...).
+//
+// The analysis warns once, in the log, when the balance leaves the band set by
+// 'Energy Balance Tolerance' (relative to the reference energy E_ref = E_total(t0), or the
+// largest |W_external| if larger; a run starting at rest without loads uses the largest
+// E_total so far) in the direction chosen by 'Energy Balance Warning':
+//   growth  (default): balance > +tol E_ref (energy created: the dangerous direction);
+//   drift:             |balance| > tol E_ref (also reports the numerical dissipation);
+//   off:               never.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "input/ParameterSpec.hpp"
+#include "core/Log.hpp"
+
+namespace choc {
+
+inline void declareEnergyBalance(Teuchos::ParameterList& p) {
+  declareDouble(p, "Energy Balance Tolerance", 0.05,
+                "tolerance of the energy balance E_total(t) + W_dissipated(t) - E_total(0) - "
+                "W_external(t) (history column energy:balance), relative to the initial total "
+                "energy (or the largest |W_external| if larger); a warning is logged once when "
+                "it is exceeded",
+                Range::positive());
+  declareChoice(p, "Energy Balance Warning", "growth", {"growth", "drift", "off"},
+                "growth: warn when the balance exceeds +tol E0 (the scheme created energy); "
+                "drift: warn when |balance| exceeds tol E0 (also the numerical dissipation of "
+                "HHT, modified average acceleration or generalized-alpha, which makes the "
+                "balance negative by design); off: no warning");
+}
+
+class EnergyBalanceMonitor {
+ public:
+  EnergyBalanceMonitor(const Teuchos::ParameterList& p, std::string what)
+      : what_(std::move(what)), tol_(p.get<double>("Energy Balance Tolerance")),
+        mode_(p.get<std::string>("Energy Balance Warning")) {}
+
+  // Called once per recorded state, in time order; the first call fixes E_total(t0).
+  // Returns energy:balance.
+  double update(double t, double total, double dissipated, double external) {
+    if (first_) {
+      e0_ = total;
+      first_ = false;
+    }
+    maxExternal_ = std::max(maxExternal_, std::abs(external));
+    maxTotal_ = std::max(maxTotal_, total);
+    const double balance = total + dissipated - e0_ - external;
+    double ref = std::max(e0_, maxExternal_);
+    if (!(ref > 0)) ref = maxTotal_;
+    const bool over = mode_ == "growth" ? balance > tol_ * ref
+                      : mode_ == "drift" ? std::abs(balance) > tol_ * ref
+                                         : false;
+    if (over && !warned_) {
+      warned_ = true;
+      char b[400];
+      std::snprintf(b, sizeof b,
+                    "  warning: %s: energy balance %+.4e J at t = %.6e s exceeds %s%.3g x %.4e J "
+                    "(%s; 'Energy Balance Tolerance'): %s\n",
+                    what_.c_str(), balance, t, mode_ == "growth" ? "+" : "+/-", tol_, ref,
+                    e0_ > 0 ? "initial total energy" : "reference energy",
+                    balance > 0 ? "the scheme creates energy (time step, contact stiffness?)"
+                                : "numerical dissipation of the scheme");
+      log() << b;
+    }
+    lowest_ = std::min(lowest_, balance);
+    highest_ = std::max(highest_, balance);
+    return balance;
+  }
+
+  // One summary line for the end of the run.
+  std::string summary() const {
+    char b[240];
+    std::snprintf(b, sizeof b, "  energy balance: E0 = %.6e J, balance in [%+.4e, %+.4e] J%s\n", e0_,
+                  first_ ? 0.0 : lowest_, first_ ? 0.0 : highest_, warned_ ? " (warned)" : "");
+    return b;
+  }
+  bool warned() const { return warned_; }
+
+ private:
+  std::string what_;
+  double tol_;
+  std::string mode_;
+  bool first_ = true, warned_ = false;
+  double e0_ = 0.0, maxExternal_ = 0.0, maxTotal_ = 0.0;
+  double lowest_ = INFINITY, highest_ = -INFINITY;
+};
+
+}  // namespace choc

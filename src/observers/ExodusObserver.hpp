@@ -1,0 +1,31 @@
+// Exodus results of a transient: DISP_X/Y/Z, VEL_X/Y/Z, ACC_X/Y/Z and the interactions' nodal
+// variables; the energies (read from the history) and the interactions' global variables;
+// every `interval` recorded states and the last one. Rank 0 writes, every rank gathers.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "observers/HistoryObserver.hpp"
+#include "output/ExodusResults.hpp"
+#include "physics/Model.hpp"
+
+namespace choc {
+
+class ExodusObserver : public TransientObserver {
+ public:
+  ExodusObserver(const std::string& path, const Model& model, const HistoryObserver& history,
+                 int interval);
+  void begin(TransientView& view) override;
+  void step(TransientView& view) override;
+  void end(bool ok) override;
+
+ private:
+  std::string path_;
+  const Model& model_;
+  const HistoryObserver& history_;
+  int interval_;
+  std::unique_ptr<ExodusResultsWriter> exo_;
+  RCP<Vector> u_, v_, a_;
+};
+
+}  // namespace choc

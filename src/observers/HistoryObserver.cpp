@@ -1,0 +1,58 @@
+#include "observers/HistoryObserver.hpp"
+
+#include <cmath>
+
+#include "core/Errors.hpp"
+#include "core/Format.hpp"
+#include "core/Log.hpp"
+
+namespace choc {
+
+const std::vector<std::string>& energyColumns() {
+  static const std::vector<std::string> names = {"energy:kinetic", "energy:strain",
+                                                 "energy:contact", "energy:dissipated",
+                                                 "energy:total",   "energy:balance"};
+  return names;
+}
+
+std::vector<std::string> historyColumns(const std::vector<std::string>& probeColumns,
+                                        const std::vector<std::string>& interactionColumns) {
+  std::vector<std::string> c = probeColumns;
+  c.insert(c.end(), energyColumns().begin(), energyColumns().end());
+  c.insert(c.end(), interactionColumns.begin(), interactionColumns.end());
+  return c;
+}
+
+HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> columns,
+                                 const std::string& csvPath, const Teuchos::ParameterList& analysis)
+    : what_(std::move(what)), columns_(std::move(columns)), balance_(analysis, what_) {
+  if (!csvPath.empty() && isRootRank()) csv_ = std::make_unique<HistoryCsv>(csvPath, columns_);
+}
+
+void HistoryObserver::step(TransientView& view) {
+  const StepPoint pt = view.point();
+  std::vector<double> row = view.probeValues();
+  energies_ = view.energies();
+  const EnergyTerms& e = energies_;
+  for (double x : {e.kinetic, e.strain, e.contact, e.dissipated, e.total()}) row.push_back(x);
+  row.push_back(balance_.update(pt.time, e.total(), e.dissipated, e.external));
+  if (const InteractionOutput* io = view.interactions()) {
+    const std::vector<double> v = io->historyValues();
+    row.insert(row.end(), v.begin(), v.end());
+  }
+  for (size_t k = 0; k < row.size(); ++k)  // never a non-finite value in an output
+    if (!std::isfinite(row[k]))
+      throw NumericalError(format("%s: the solution is not finite at t = %.6e s (%s = %g; unstable time step?)",
+                                  what_.c_str(), pt.time, columns_[k].c_str(), row[k]));
+  history_.times.push_back(pt.time);
+  for (size_t k = 0; k < columns_.size(); ++k) history_.columns[columns_[k]].push_back(row[k]);
+  if (csv_) csv_->appendRow(pt.time, row);
+}
+
+void HistoryObserver::end(bool ok) {
+  if (csv_ && ok) csv_->finish();
+  if (csv_ && !ok) csv_->abandon();
+  if (ok) log() << balance_.summary();
+}
+
+}  // namespace choc

@@ -1,0 +1,48 @@
+// The history of a transient: probes, energies (with the energy balance) and the
+// interactions' columns at every recorded state, kept in memory for the checks and written
+// to <analysis>.history.csv by rank 0. A value that is not finite stops the run with a
+// NumericalError naming the column and the time.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "observers/EnergyBalance.hpp"
+#include "observers/TransientObserver.hpp"
+#include "output/HistoryCsv.hpp"
+#include "output/RecordedHistory.hpp"
+
+namespace choc {
+
+// energy:kinetic, energy:strain, energy:contact, energy:dissipated, energy:total, energy:balance.
+const std::vector<std::string>& energyColumns();
+
+// The history's columns after "time": probes, energies, interactions.
+std::vector<std::string> historyColumns(const std::vector<std::string>& probeColumns,
+                                        const std::vector<std::string>& interactionColumns);
+
+class HistoryObserver : public TransientObserver {
+ public:
+  // what: "transient 'c1'" for messages; csvPath "" writes no file; `analysis` holds the
+  // energy balance settings.
+  HistoryObserver(std::string what, std::vector<std::string> columns, const std::string& csvPath,
+                  const Teuchos::ParameterList& analysis);
+  void step(TransientView& view) override;
+  void end(bool ok) override;
+
+  const RecordedHistory& history() const { return history_; }
+  const EnergyTerms& lastEnergies() const { return energies_; }
+  const EnergyBalanceMonitor& balance() const { return balance_; }
+
+ private:
+  std::string what_;
+  std::vector<std::string> columns_;
+  std::unique_ptr<HistoryCsv> csv_;
+  EnergyBalanceMonitor balance_;
+  RecordedHistory history_;
+  EnergyTerms energies_;
+};
+
+}  // namespace choc

@@ -1,0 +1,49 @@
+// Output of a transient through observers: begin before the first recorded state, step at
+// every recorded state (the initial one included), end(ok) once, where files are finished
+// (ok) or abandoned as *.incomplete.* (a failure or an interruption). ObserverSet::run wraps
+// a time loop so that end(false) is called on every way out by an exception.
+#pragma once
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "observers/TransientView.hpp"
+
+namespace choc {
+
+class TransientObserver {
+ public:
+  virtual ~TransientObserver() = default;
+  virtual void begin(TransientView&) {}
+  virtual void step(TransientView& view) = 0;
+  virtual void end(bool /*ok*/) {}
+};
+
+class ObserverSet {
+ public:
+  // Observers are called in the order they were added (the history first: the others
+  // read the energies it recorded).
+  void add(std::unique_ptr<TransientObserver> o) { observers_.push_back(std::move(o)); }
+  void begin(TransientView& view) {
+    for (auto& o : observers_) o->begin(view);
+  }
+  void step(TransientView& view) {
+    for (auto& o : observers_) o->step(view);
+  }
+  // begin, the loop, end(true); end(false) and rethrow if anything throws.
+  void run(TransientView& view, const std::function<void()>& loop) {
+    try {
+      begin(view);
+      loop();
+    } catch (...) {
+      for (auto& o : observers_) o->end(false);
+      throw;
+    }
+    for (auto& o : observers_) o->end(true);
+  }
+
+ private:
+  std::vector<std::unique_ptr<TransientObserver>> observers_;
+};
+
+}  // namespace choc

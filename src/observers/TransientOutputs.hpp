@@ -1,0 +1,46 @@
+// The output parameters both transients share and the standard set of observers built from
+// them: history (memory and <name>.history.csv), Exodus (<name>.exo every 'Exodus Interval'
+// states and the last), progress lines every 'Progress Interval' seconds of wall time, and
+// the interrupt test. Keys of earlier releases ('Write Exodus' and 'Log Interval' of the
+// direct transient, 'Progress Lines' of the modal transient) still work for this release,
+// with a deprecation warning.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "observers/HistoryObserver.hpp"
+#include "physics/Model.hpp"
+
+namespace choc {
+
+// History, Exodus Interval, Progress Interval and the energy balance settings.
+void declareTransientOutput(Teuchos::ParameterList& analysis);
+
+// Rewrites the deprecated keys of an analysis list (before validation) into the current
+// ones, logging one warning per key.
+void translateDeprecatedOutputKeys(Teuchos::ParameterList& analysis, const std::string& file,
+                                   const std::string& path);
+
+struct TransientOutputSettings {
+  std::string history;          // 'History': "A:DX A:VX"
+  int exodusInterval = 10;      // 0: no Exodus file
+  double progressInterval = 10; // seconds of wall time; 0: no progress lines
+};
+TransientOutputSettings readTransientOutput(const Teuchos::ParameterList& analysis);
+
+struct OutputPlan {
+  std::string what;                  // "transient 'c1'", for messages
+  std::string base;                  // "<output dir>/<analysis>"
+  std::vector<std::string> columns;  // the history's columns after "time"
+  double startTime = 0, endTime = 0;
+  long long interruptEvery = 1;      // recorded states between two interrupt tests
+};
+
+// Adds history, Exodus, progress and interrupt observers, in that order; returns the history.
+const HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSettings& s,
+                                             const OutputPlan& plan, const Model& model,
+                                             const Teuchos::ParameterList& analysis);
+
+}  // namespace choc

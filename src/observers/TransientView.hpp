@@ -1,0 +1,41 @@
+// What a transient analysis shows its output observers at a recorded state (the initial
+// state and every accepted step). The direct and the modal transient each implement it; the
+// observers (history, Exodus, progress, interrupt) are shared and know neither.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/TpetraTypes.hpp"
+#include "output/InteractionOutput.hpp"
+
+namespace choc {
+
+struct StepPoint {
+  long long step = 0;  // 0: the initial state
+  double time = 0.0;
+  double dt = 0.0;     // of the step just taken (0 for the initial state)
+  bool last = false;   // the final state of the run
+};
+
+// Energies of the state [J]; dissipated and external are the work done since the start.
+struct EnergyTerms {
+  double kinetic = 0, strain = 0, contact = 0, dissipated = 0, external = 0;
+  double total() const { return kinetic + strain + contact; }
+};
+
+class TransientView {
+ public:
+  virtual ~TransientView() = default;
+  virtual StepPoint point() const = 0;
+  // The probes' values (history columns before the energies), the same on every rank.
+  virtual std::vector<double> probeValues() const = 0;
+  // Called once per recorded state, in time order (integrates the damping work).
+  virtual EnergyTerms energies() = 0;
+  virtual const InteractionOutput* interactions() const = 0;  // null: none
+  // Displacement, velocity and acceleration on the model's map (collective).
+  virtual void fields(Vector& u, Vector& v, Vector& a) const = 0;
+  // Solver figures of the last step for the progress line ("" when none).
+  virtual std::string stepNote() const = 0;
+};
+
+}  // namespace choc

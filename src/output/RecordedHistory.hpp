@@ -1,0 +1,14 @@
+// The history of a transient kept in memory for the checks: times and one series per column.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+namespace choc {
+
+struct RecordedHistory {
+  std::vector<double> times;
+  std::map<std::string, std::vector<double>> columns;
+};
+
+}  // namespace choc

@@ -1,0 +1,60 @@
+// The discrete model of one input: mesh, element physics per block, the DOF map (only the
+// components the scene needs are unknowns) and the assembled stiffness and mass.
+#pragma once
+#include <mpi.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "fem/Assembler.hpp"
+#include "fem/DofMap.hpp"
+#include "fem/Material.hpp"
+#include "core/TpetraTypes.hpp"
+#include "mesh/Mesh.hpp"
+
+namespace choc {
+
+class Model {
+ public:
+  // `input` is the validated top-level list; `inputFile` is used for messages and to
+  // resolve the mesh path.
+  Model(const Teuchos::ParameterList& input, const std::string& inputFile, RCP<const Comm> comm);
+  // The assembler holds references into the model: neither copied nor moved.
+  Model(const Model&) = delete;
+  Model& operator=(const Model&) = delete;
+
+  const Mesh& mesh() const { return mesh_; }
+  const DofMap& dofs() const { return *dofs_; }
+  RCP<const Map> map() const { return assembler_->map(); }
+  RCP<const Comm> comm() const { return comm_; }
+  // The raw MPI communicator of comm() (MPI_COMM_WORLD unless the model was built on another).
+  MPI_Comm rawComm() const;
+  const std::string& inputFile() const { return inputFile_; }
+  RCP<const CrsMatrix> stiffness();  // assembled once, cached
+  RCP<const CrsMatrix> mass();
+  // The mass with the flagged nodes (one entry per mesh node) massless and their elements' mass
+  // redistributed onto the other nodes (Assembler::mass(massless)); not cached. Throws
+  // std::invalid_argument when an element has every node flagged.
+  RCP<const CrsMatrix> mass(const std::vector<char>& massless) const;
+  // Material of the block containing the node set's first node (for reference solutions).
+  const Material& materialOfBlock(int block) const { return blockMaterial_[block]; }
+
+  // The node set named `name`, or an InputError naming `parameter` and the valid names.
+  const NodeSet& nodeSet(const std::string& name, const std::string& parameter) const;
+  // Global DOF of (node, comp); -1 when that component is fixed or not carried.
+  long long dof(int node, int comp) const { return dofs_->dof(node, comp); }
+
+ private:
+  std::string inputFile_;
+  RCP<const Comm> comm_;
+  Mesh mesh_;
+  std::vector<Material> blockMaterial_;
+  std::unique_ptr<DofMap> dofs_;
+  std::unique_ptr<Assembler> assembler_;
+  RCP<const CrsMatrix> K_, M_;
+};
+
+}  // namespace choc

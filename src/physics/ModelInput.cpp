@@ -1,0 +1,54 @@
+#include "physics/ModelInput.hpp"
+
+#include "input/ParameterSpec.hpp"
+
+namespace choc {
+
+Teuchos::ParameterList topLevelParameters() {
+  Teuchos::ParameterList top;
+  declareString(top, "Title", "", "one line describing the input, printed in the log");
+  ParameterList& mesh = declareSublist(top, "Mesh", "the Exodus II mesh");
+  declareRequiredString(mesh, "File",
+                        "Exodus II mesh file, relative to the input file (see 'choc mesh')");
+
+  ParameterList& model = declareSublist(top, "Model", "materials, element blocks, supports");
+  declareString(model, "Active Components", "all",
+                "nodal components that may be unknowns; every other component is fixed to zero "
+                "on every node (e.g. 'DX' for an axial 1D model, 'DZ' for the 3D bars): names DX "
+                "DY DZ DRX DRY DRZ, or 'all', 'translations', 'rotations'");
+  ParameterList& mat = declareNamedSublists(model, "Materials", "isotropic elastic materials, by name");
+  declareRequiredDouble(mat, "Young's Modulus", "E [Pa]", Range::positive());
+  declareDouble(mat, "Poisson's Ratio", 0.0, "nu [-]", {-1.0, 0.5, true, true});
+  declareRequiredDouble(mat, "Density", "rho [kg/m^3]", Range::positive());
+
+  ParameterList& blk = declareNamedSublists(model, "Blocks",
+                                            "one entry per element block of the mesh, by name");
+  declareRequiredString(blk, "Material", "name of an entry of Model/Materials");
+  declareChoice(blk, "Mass", "consistent", {"consistent", "lumped"}, "mass matrix of the block");
+  ParameterList& sec = declareSublist(blk, "Section", "beam section (BEAM2 blocks only)");
+  declareDouble(sec, "Square Side", 0.0,
+                "side of a square section; when > 0 it sets Area, Iy, Iz and the torsion "
+                "constant (0.1406 a^4)",
+                Range::nonNegative());
+  declareDouble(sec, "Area", 0.0, "section area [m^2]", Range::nonNegative());
+  declareDouble(sec, "Iy", 0.0, "second moment about the local y axis [m^4]", Range::nonNegative());
+  declareDouble(sec, "Iz", 0.0, "second moment about the local z axis [m^4]", Range::nonNegative());
+  declareDouble(sec, "Torsion Constant", 0.0, "Saint-Venant torsion constant J [m^4]",
+                Range::nonNegative());
+  declareDouble(sec, "Shear Coefficient", 5.0 / 6.0, "Timoshenko shear coefficient",
+                {0.0, 1.0, true, false});
+  declareString(sec, "Orientation", "0 0 0",
+                "local y axis direction 'x y z'; '0 0 0' chooses global y (global z for beams "
+                "along y)");
+
+  ParameterList& dir = declareNamedSublists(model, "Dirichlet",
+                                            "homogeneous supports: components fixed to zero");
+  declareRequiredString(dir, "Node Set", "node set of the mesh");
+  declareRequiredString(dir, "Components", "fixed components, e.g. 'DX' or 'DX DY DZ' or 'all'");
+
+  declareOpenSublist(top, "Analyses",
+                     "the analyses to run, in order; each sublist has a 'Type' (see below)");
+  return top;
+}
+
+}  // namespace choc

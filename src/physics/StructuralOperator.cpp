@@ -1,0 +1,253 @@
+#include "physics/StructuralOperator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
+
+namespace choc {
+
+StructuralOperator::StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
+                                       double rayleighK, double rayleighM, RCP<const Vector> load,
+                                       ContactManager* contact, std::unique_ptr<LinearSolver> solver,
+                                       Teuchos::StackedTimer* timer)
+    : K_(std::move(K)), M_(std::move(M)), aK_(rayleighK), aM_(rayleighM), load_(std::move(load)),
+      contact_(contact), solver_(std::move(solver)), timer_(timer) {
+  system_ = std::make_unique<ContactSystem>(K_, M_, contact_);
+  tmp_ = rcp(new Vector(K_->getRowMap()));
+  energyTmp_ = rcp(new Vector(K_->getRowMap()));
+  rhs_ = rcp(new MultiVector(system_->map(), 1));
+  x_ = rcp(new MultiVector(system_->map(), 1));
+  // Massless DOFs: rows of M without a non-zero entry.
+  const size_t nLocal = M_->getNodeNumRows();
+  massless_.assign(nLocal, 0);
+  long long mine = 0;
+  Teuchos::Array<GO> ci;
+  Teuchos::Array<double> cv;
+  for (size_t i = 0; i < nLocal; ++i) {
+    const GO g = M_->getRowMap()->getGlobalElement(LO(i));
+    const size_t n = M_->getNumEntriesInGlobalRow(g);
+    ci.resize(n);
+    cv.resize(n);
+    size_t got = 0;
+    M_->getGlobalRowCopy(g, ci(), cv(), got);
+    bool zero = true;
+    for (size_t k = 0; k < got; ++k) zero = zero && cv[k] == 0.0;
+    massless_[i] = zero;
+    mine += zero;
+  }
+  Teuchos::reduceAll<int, long long>(*M_->getComm(), Teuchos::REDUCE_SUM, mine,
+                                     Teuchos::outArg(masslessGlobal_));
+}
+
+int StructuralOperator::unknowns() const { return int(system_->map()->getGlobalNumElements()); }
+
+double StructuralOperator::kineticEnergy(const Vector& v) const {
+  M_->apply(v, *energyTmp_);
+  return 0.5 * v.dot(*energyTmp_);
+}
+
+double StructuralOperator::strainEnergy(const Vector& u) const {
+  K_->apply(u, *energyTmp_);
+  return 0.5 * u.dot(*energyTmp_);
+}
+
+// v^T C v = aK v^T K v + aM v^T M v.
+double StructuralOperator::dampingPower(const Vector& v, double kinetic) const {
+  double power = aM_ * 2.0 * kinetic;
+  if (aK_ != 0.0) {
+    K_->apply(v, *energyTmp_);
+    power += aK_ * v.dot(*energyTmp_);
+  }
+  return power;
+}
+
+double StructuralOperator::loadWork(const Vector& u, const Vector& u0) const {
+  if (load_.is_null()) return 0.0;
+  energyTmp_->update(1.0, u, -1.0, u0, 0.0);
+  return load_->dot(*energyTmp_);
+}
+
+void StructuralOperator::applyMass(const Vector& a, Vector& out) {
+  TimerScope ts(timer_, "Transient: assembly");
+  M_->apply(a, out);
+}
+
+void StructuralOperator::applyForces(const Vector& u, const Vector& v, double, Vector& out) {
+  TimerScope ts(timer_, "Transient: assembly");
+  K_->apply(u, out);
+  if (aK_ != 0.0) {
+    K_->apply(v, *tmp_);
+    out.update(aK_, *tmp_, 1.0);
+  }
+  if (aM_ != 0.0) {
+    M_->apply(v, *tmp_);
+    out.update(aM_, *tmp_, 1.0);
+  }
+  if (!load_.is_null()) out.update(-1.0, *load_, 1.0);
+}
+
+double StructuralOperator::addConstraintForces(const Vector& u, Vector& out) {
+  if (!contact_) return 0.0;
+  TimerScope ts(timer_, "Transient: contact");
+  return contact_->addForces(u, out);
+}
+
+CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients& c,
+                                                     const Vector& u, const Vector& r, Vector& du) {
+  CorrectionStatus st;
+  const std::vector<char> status = system_->statusKey();
+  if (!haveKey_ || !(keyCoefficients_ == c) || keyStatus_ != status) {
+    {
+      TimerScope ts(timer_, "Transient: assembly");
+      system_->fill(c.ca + c.cv * aM_, c.cd + c.cv * aK_);
+    }
+    TimerScope ts(timer_, "Transient: linear solve");
+    solver_->setMatrix(system_->matrix());  // throws NumericalError when singular
+    haveKey_ = true;
+    keyCoefficients_ = c;
+    keyStatus_ = status;
+    st.refactored = true;
+  }
+  {
+    TimerScope ts(timer_, "Transient: contact");
+    system_->rightHandSide(r, u, *rhs_);
+  }
+  x_->putScalar(0.0);
+  LinearSolveStatus ls;
+  {
+    TimerScope ts(timer_, "Transient: linear solve");
+    ls = solver_->solve(*rhs_, *x_);
+  }
+  st.ok = ls.converged;
+  st.iterations = ls.iterations;
+  st.message = ls.message;
+  if (!st.ok) return st;
+  TimerScope ts(timer_, "Transient: contact");
+  system_->takeSolution(*x_, du);
+  return st;
+}
+
+// Initial acceleration with massless DOFs (redistributed contact mass). M = [M_mm 0; 0 0]
+// (z: the DOFs whose mass row is zero, the nodes of the contact surfaces). Rows m give a_m
+// from M_mm a_m = -r_m: the contact forces act on contact-surface DOFs only, so they do not
+// enter r_m. Rows z carry no inertia: they are the static equilibrium K_zm u_m + K_zz u_z
+// + f_c,z = f_z, which holds at t0 and which every step re-imposes at t_{n+1} whatever a_z
+// (u_z is found statically; a_z only feeds v_z through the Newmark relations, and v_z acts
+// only through Rayleigh damping). The consistent value is the second time derivative of that
+// equilibrium with the contact status and pressures frozen and constant loads:
+// K_zz a_z = -K_zm a_m. Both come from A0 = [M_mm 0; 0 K_zz] (symmetric, non-singular: a
+// contact-surface node is tied elastically to the massive nodes): a first solve with
+// b = (-r_m, 0) gives a_m, a second with b = (-r_m, -(K [a_m; 0])_z) gives (a_m, a_z). The
+// contact pressures keep their initial values (the reactions of the static rows, found by the
+// first step). The factorisation of A0 is dropped afterwards (haveKey_ = false).
+CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, const Vector& r,
+                                                              Vector& a) {
+  if (masslessGlobal_ == 0) return SecondOrderOperator::solveInitialAcceleration(u, r, a);
+  CorrectionStatus st;
+  auto rowMap = K_->getRowMap();
+  const size_t nLocal = rowMap->getNodeNumElements();
+  RCP<CrsMatrix> A0;
+  {
+    TimerScope ts(timer_, "Transient: assembly");
+    Vector zRow(rowMap);
+    {
+      auto z = zRow.getDataNonConst();
+      for (size_t i = 0; i < nLocal; ++i) z[i] = massless_[i] ? 1.0 : 0.0;
+    }
+    Vector zCol(K_->getColMap());
+    zCol.doImport(zRow, Tpetra::Import<LO, GO>(rowMap, K_->getColMap()), Tpetra::INSERT);
+    auto zc = zCol.getData();
+    auto colMap = K_->getColMap();
+    std::vector<std::vector<std::pair<GO, double>>> rows(nLocal);
+    Teuchos::Array<GO> ci;
+    Teuchos::Array<double> cv;
+    for (size_t i = 0; i < nLocal; ++i) {
+      const GO g = rowMap->getGlobalElement(LO(i));
+      const CrsMatrix& X = massless_[i] ? *K_ : *M_;
+      const size_t n = X.getNumEntriesInGlobalRow(g);
+      ci.resize(n);
+      cv.resize(n);
+      size_t got = 0;
+      X.getGlobalRowCopy(g, ci(), cv(), got);
+      for (size_t k = 0; k < got; ++k)
+        if (!massless_[i] || zc[colMap->getLocalElement(ci[k])] != 0.0) rows[i].emplace_back(ci[k], cv[k]);
+    }
+    std::vector<size_t> counts(nLocal);
+    for (size_t i = 0; i < nLocal; ++i) counts[i] = rows[i].size();
+    A0 = rcp(new CrsMatrix(rowMap, Teuchos::ArrayView<const size_t>(counts)));
+    for (size_t i = 0; i < nLocal; ++i) {
+      std::vector<GO> c;
+      std::vector<double> v;
+      for (const auto& [cc, vv] : rows[i]) {
+        c.push_back(cc);
+        v.push_back(vv);
+      }
+      A0->insertGlobalValues(rowMap->getGlobalElement(LO(i)), Teuchos::ArrayView<const GO>(c),
+                             Teuchos::ArrayView<const double>(v));
+    }
+    A0->fillComplete(rowMap, rowMap);
+  }
+  TimerScope ts(timer_, "Transient: linear solve");
+  haveKey_ = false;  // the next correction refactors the effective matrix
+  solver_->setMatrix(A0);
+  st.refactored = true;
+  MultiVector b(rowMap, 1), x(rowMap, 1);
+  {
+    auto rd = r.getData();
+    auto bd = b.getDataNonConst(0);
+    for (size_t i = 0; i < nLocal; ++i) bd[i] = massless_[i] ? 0.0 : -rd[i];
+  }
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) {  // b_z = -(K [a_m; 0])_z
+      {
+        auto xd = x.getDataNonConst(0);
+        for (size_t i = 0; i < nLocal; ++i)
+          if (massless_[i]) xd[i] = 0.0;
+      }
+      Vector y(rowMap);
+      K_->apply(*x.getVector(0), y);
+      auto yd = y.getData();
+      auto bd = b.getDataNonConst(0);
+      for (size_t i = 0; i < nLocal; ++i)
+        if (massless_[i]) bd[i] = -yd[i];
+    }
+    x.putScalar(0.0);
+    const LinearSolveStatus ls = solver_->solve(b, x);
+    st.ok = ls.converged;
+    st.iterations += ls.iterations;
+    st.message = ls.message;
+    if (!st.ok) return st;
+  }
+  (void)u;
+  a.assign(*x.getVector(0));
+  return st;
+}
+
+ConstraintUpdate StructuralOperator::updateConstraints(const Vector& u) {
+  ConstraintUpdate up;
+  if (!contact_) return up;
+  TimerScope ts(timer_, "Transient: contact");
+  const StatusUpdate s = contact_->updateStatus(u);
+  up.changed = s.changed;
+  up.active = s.active;
+  up.summary = std::to_string(s.entered) + " entered, " + std::to_string(s.left) + " left, " +
+               std::to_string(s.active) + " active";
+  return up;
+}
+
+void StructuralOperator::initializeConstraints(const Vector& u) {
+  if (contact_) contact_->initialize(u);
+}
+void StructuralOperator::saveState() {
+  if (contact_) contact_->save();
+}
+void StructuralOperator::restoreState() {
+  if (contact_) contact_->restore();
+}
+
+}  // namespace choc

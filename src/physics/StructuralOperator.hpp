@@ -1,0 +1,76 @@
+// The second-order operator of a linear elastic model with Rayleigh damping, constant nodal
+// loads and contact: what ImplicitTransient gives its integrator.
+//   M a + C v + K u + f_c(u) = f,   C = a_K K + a_M M.
+// Newton corrections solve with the effective matrix W = ca M + cv C + cd K plus the contact
+// block (ContactSystem), factored by the linear solver only when the key (ca, cv, cd, the
+// statuses of the contact nodes) changes; the key is compared in full, so a stale matrix is
+// impossible. Timings go to the analysis' stacked timer under "Transient: assembly",
+// "Transient: linear solve" and "Transient: contact".
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_StackedTimer.hpp>
+
+#include "core/TimerScope.hpp"
+#include "contact/ContactManager.hpp"
+#include "contact/ContactSystem.hpp"
+#include "solvers/LinearSolver.hpp"
+#include "timeint/SecondOrderOperator.hpp"
+
+namespace choc {
+
+class StructuralOperator : public SecondOrderOperator {
+ public:
+  // load and contact may be null. The solver is owned; the contact manager is not.
+  StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, double rayleighK,
+                     double rayleighM, RCP<const Vector> load, ContactManager* contact,
+                     std::unique_ptr<LinearSolver> solver, Teuchos::StackedTimer* timer);
+
+  RCP<const Map> map() const override { return K_->getRowMap(); }
+  void applyMass(const Vector& a, Vector& out) override;
+  void applyForces(const Vector& u, const Vector& v, double t, Vector& out) override;
+  double addConstraintForces(const Vector& u, Vector& out) override;
+  CorrectionStatus solveCorrection(const EffectiveCoefficients& c, const Vector& u,
+                                   const Vector& r, Vector& du) override;
+  // With massless DOFs (rows of M that are zero: redistributed contact mass) the initial
+  // acceleration is solved by blocks; see the .cpp. Otherwise the default (W = M).
+  CorrectionStatus solveInitialAcceleration(const Vector& u, const Vector& r, Vector& a) override;
+  ConstraintUpdate updateConstraints(const Vector& u) override;
+  void initializeConstraints(const Vector& u) override;
+  void saveState() override;
+  void restoreState() override;
+
+  // Energies of a state, for the output: 1/2 v.M v, 1/2 u.K u, the contact springs' energy,
+  // the damping power v.C v (given the kinetic energy), the loads' work f.(u - u0).
+  double kineticEnergy(const Vector& v) const;
+  double strainEnergy(const Vector& u) const;
+  double contactEnergy(const Vector& u) const { return contact_ ? contact_->energy(u) : 0.0; }
+  double dampingPower(const Vector& v, double kinetic) const;
+  double loadWork(const Vector& u, const Vector& u0) const;
+
+  int factorizations() const { return solver_->factorizations(); }
+  const LinearSolver& solver() const { return *solver_; }
+  int unknowns() const;  // global rows of the solved system (DOFs + pressure unknowns)
+  long long masslessDofs() const { return masslessGlobal_; }  // DOFs whose mass row is zero
+
+ private:
+  RCP<const CrsMatrix> K_, M_;
+  double aK_, aM_;
+  RCP<const Vector> load_;
+  ContactManager* contact_;
+  std::unique_ptr<LinearSolver> solver_;
+  Teuchos::StackedTimer* timer_;
+  std::unique_ptr<ContactSystem> system_;
+  RCP<Vector> tmp_, energyTmp_;
+  RCP<MultiVector> rhs_, x_;
+  std::vector<char> massless_;  // per local DOF: its row of M is zero
+  long long masslessGlobal_ = 0;
+  // Cache key of the factored matrix.
+  bool haveKey_ = false;
+  EffectiveCoefficients keyCoefficients_;
+  std::vector<char> keyStatus_;
+};
+
+}  // namespace choc
