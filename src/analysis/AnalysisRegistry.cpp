@@ -57,7 +57,10 @@ void validateAnalyses(Teuchos::ParameterList& analyses, const std::string& input
     Teuchos::ParameterList& a = analyses.sublist(name);
     const AnalysisType& t = typeOf(a, name, inputFile);
     const InputLocation where{inputFile, "Analyses/" + name};
-    if (t.type != "Modal") translateDeprecatedOutputKeys(a, inputFile, where.path);
+    if (t.type != "Modal") {
+      translateDeprecatedOutputKeys(a, inputFile, where.path);
+      translateDeprecatedExactSolution(a, inputFile, where.path);
+    }
     validate(a, t.parameters(), where);
     if (a.isSublist("Checks")) validateChecks(a.sublist("Checks"), where.child("Checks"));
   }

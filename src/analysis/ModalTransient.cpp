@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/DidYouMean.hpp"
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
 #include "core/Log.hpp"
@@ -95,9 +96,13 @@ void ModalTransient::readTimeGrid() {
 
 void ModalTransient::setup(SetupContext& ctx) {
   const auto basis = ctx.modalAnalyses.find(s_.basis);
-  if (basis == ctx.modalAnalyses.end())
+  if (basis == ctx.modalAnalyses.end()) {
+    std::vector<std::string> names;
+    for (const auto& m : ctx.modalAnalyses) names.push_back(m.first);
     throwInput(inputFile_, path("Modal Basis"), s_.basis, "no modal basis of that name has been computed",
-               "name a Modal analysis listed before this one in Analyses");
+               didYouMean(s_.basis, names) + "name a Modal analysis listed before this one in "
+               "Analyses (listed before: " + joinNames(names) + ")");
+  }
   if (!s_.dampingList.empty() && int(s_.dampingList.size()) != basis->second)
     throwInput(inputFile_, path("Modal Damping List"), params_.get<std::string>("Modal Damping List"),
                "has " + std::to_string(s_.dampingList.size()) + " values for " +

@@ -1,6 +1,7 @@
 #include "checks/BarImpactCheck.hpp"
 
 #include "core/Errors.hpp"
+#include "reference/BarImpactExact.hpp"
 #include "core/Format.hpp"
 #include "core/Log.hpp"
 #include "input/ParameterSpec.hpp"
@@ -8,7 +9,24 @@
 
 namespace choc {
 
-Teuchos::ParameterList BarImpactCheck::parameters() {
+namespace {
+
+class BarImpactCheck : public HistoryCheck {
+ public:
+  BarImpactCheck(const Teuchos::ParameterList& row, const Model& model, const CheckSite& site);
+  void verify(const std::vector<std::string>& columns, double endTime) const override;
+  std::vector<CheckResult> evaluate(const RecordedHistory& h) const override;
+
+ private:
+  BarImpactParameters bar_;
+  CheckSite site_;
+  std::string set_, ucol_, vcol_, fcol_;
+  double maxTol_ = 0, rmsTol_ = 0;
+};
+
+}  // namespace
+
+Teuchos::ParameterList barImpactCheckParameters() {
   Teuchos::ParameterList e;
   declareRequiredChoice(e, "Type", {"Bar Impact Exact Solution"}, "check type");
   declareString(e, "Node Set", "A", "node set of point A (its first node)");
@@ -64,20 +82,24 @@ void report(const std::string& col, const HistoryError& err) {
 
 }  // namespace
 
-std::unique_ptr<HistoryCheck> BarImpactCheck::create(const Teuchos::ParameterList& e,
-                                                     const Model& model, const CheckSite& site) {
-  auto c = std::make_unique<BarImpactCheck>();
-  c->site_ = site;
-  c->set_ = e.get<std::string>("Node Set");
+std::unique_ptr<HistoryCheck> makeBarImpactCheck(const Teuchos::ParameterList& row,
+                                                 const Model& model, const CheckSite& site) {
+  return std::make_unique<BarImpactCheck>(row, model, site);
+}
+
+BarImpactCheck::BarImpactCheck(const Teuchos::ParameterList& e, const Model& model,
+                               const CheckSite& site)
+    : site_(site) {
+  set_ = e.get<std::string>("Node Set");
   const std::string comp = e.get<std::string>("Component");
-  c->ucol_ = c->set_ + ":" + comp;
-  c->vcol_ = c->set_ + ":V" + comp.substr(1);
-  c->fcol_ = e.get<std::string>("Force Column");
-  c->maxTol_ = e.get<double>("Max Error Tolerance");
-  c->rmsTol_ = e.get<double>("RMS Error Tolerance");
-  const NodeSet& ns = model.nodeSet(c->set_, site.path + "/Node Set");
+  ucol_ = set_ + ":" + comp;
+  vcol_ = set_ + ":V" + comp.substr(1);
+  fcol_ = e.get<std::string>("Force Column");
+  maxTol_ = e.get<double>("Max Error Tolerance");
+  rmsTol_ = e.get<double>("RMS Error Tolerance");
+  const NodeSet& ns = model.nodeSet(set_, site.path + "/Node Set");
   const Material& m = model.materialOfBlock(blockOfNode(model.mesh(), ns.nodes.front()));
-  BarImpactParameters& bp = c->bar_;
+  BarImpactParameters& bp = bar_;
   const std::string ws = e.get<std::string>("Wave Speed");
   bp.waveSpeed = ws == "bar"          ? BarImpactExact::barWaveSpeed(m.youngsModulus, m.density)
                  : ws == "oedometric" ? BarImpactExact::oedometricWaveSpeed(
@@ -88,7 +110,6 @@ std::unique_ptr<HistoryCheck> BarImpactCheck::create(const Teuchos::ParameterLis
   bp.impactVelocity = e.get<double>("Impact Velocity");
   bp.contactStart = e.get<double>("Contact Start");
   bp.bilateral = e.get<bool>("Bilateral");
-  return c;
 }
 
 void BarImpactCheck::verify(const std::vector<std::string>& columns, double) const {

@@ -4,23 +4,11 @@
 // the max and RMS errors relative to the peak; gives checks.csv rows for the tolerances set.
 #pragma once
 #include "checks/HistoryCheck.hpp"
-#include "reference/BarImpactExact.hpp"
 
 namespace choc {
 
-class BarImpactCheck : public HistoryCheck {
- public:
-  static Teuchos::ParameterList parameters();
-  static std::unique_ptr<HistoryCheck> create(const Teuchos::ParameterList& row, const Model& model,
-                                              const CheckSite& site);
-  void verify(const std::vector<std::string>& columns, double endTime) const override;
-  std::vector<CheckResult> evaluate(const RecordedHistory& h) const override;
-
- private:
-  BarImpactParameters bar_;
-  CheckSite site_;
-  std::string set_, ucol_, vcol_, fcol_;
-  double maxTol_ = 0, rmsTol_ = 0;
-};
+Teuchos::ParameterList barImpactCheckParameters();
+std::unique_ptr<HistoryCheck> makeBarImpactCheck(const Teuchos::ParameterList& row,
+                                                 const Model& model, const CheckSite& site);
 
 }  // namespace choc

@@ -4,6 +4,7 @@
 #include "checks/ValueCheck.hpp"
 #include "core/DidYouMean.hpp"
 #include "core/Errors.hpp"
+#include "core/Log.hpp"
 #include "input/ParameterSpec.hpp"
 
 namespace choc {
@@ -11,11 +12,11 @@ namespace choc {
 const std::vector<CheckKind>& checkKinds() {
   static const std::vector<CheckKind> kinds = {
       {"Value", "a history value at a time against a reference, with a tolerance (the default)",
-       &ValueCheck::parameters, &ValueCheck::create},
+       &valueCheckParameters, &makeValueCheck},
       {"Bar Impact Exact Solution",
        "the whole history of point A against the d'Alembert solution of the two-bar impact "
        "(BRIEF section 1): max and RMS error relative to the peak",
-       &BarImpactCheck::parameters, &BarImpactCheck::create},
+       &barImpactCheckParameters, &makeBarImpactCheck},
   };
   return kinds;
 }
@@ -39,6 +40,22 @@ const CheckKind& kindOf(const Teuchos::ParameterList& row, const InputLocation& 
 }
 
 }  // namespace
+
+void translateDeprecatedExactSolution(Teuchos::ParameterList& a, const std::string& file,
+                                      const std::string& path) {
+  if (!a.isSublist("Exact Solution")) return;
+  log() << "choc: warning: " << file << ": parameter '" << path
+        << "/Exact Solution' is deprecated and will be removed in the next release; write it as "
+           "'Checks/<name>' with 'Type' = 'Bar Impact Exact Solution' (without 'Enabled')\n";
+  Teuchos::ParameterList old = a.sublist("Exact Solution");
+  a.remove("Exact Solution");
+  const bool enabled = old.isType<bool>("Enabled") && old.get<bool>("Enabled");
+  if (!enabled) return;
+  old.remove("Enabled");
+  Teuchos::ParameterList& row = a.sublist("Checks").sublist("exact solution");
+  row.set("Type", std::string("Bar Impact Exact Solution"));
+  row.setParameters(old);
+}
 
 void validateChecks(Teuchos::ParameterList& checks, const InputLocation& where) {
   for (auto it = checks.begin(); it != checks.end(); ++it) {

@@ -46,6 +46,11 @@ const std::vector<CheckKind>& checkKinds();
 
 // Declares the (open) 'Checks' list of an analysis.
 void declareChecks(Teuchos::ParameterList& analysis);
+// The 'Exact Solution' sublist of earlier releases becomes the check 'exact solution' of type
+// 'Bar Impact Exact Solution' at the end of 'Checks' (dropped when not 'Enabled'), with a
+// deprecation warning on the log. Called before validation.
+void translateDeprecatedExactSolution(Teuchos::ParameterList& analysis, const std::string& file,
+                                      const std::string& path);
 // Validates each entry of 'Checks' against its Type's parameters ('Value' when absent).
 void validateChecks(Teuchos::ParameterList& checks, const InputLocation& where);
 

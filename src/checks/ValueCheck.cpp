@@ -5,7 +5,22 @@
 
 namespace choc {
 
-Teuchos::ParameterList ValueCheck::parameters() {
+namespace {
+
+class ValueCheck : public HistoryCheck {
+ public:
+  ValueCheck(const Teuchos::ParameterList& row, const CheckSite& site);
+  void verify(const std::vector<std::string>& columns, double endTime) const override;
+  std::vector<CheckResult> evaluate(const RecordedHistory& h) const override;
+
+ private:
+  CheckSpec spec_;
+  CheckSite site_;
+};
+
+}  // namespace
+
+Teuchos::ParameterList valueCheckParameters() {
   Teuchos::ParameterList c;
   declareChoice(c, "Type", "Value", {"Value"}, "check type");
   declareRequiredString(c, "Quantity", "history column, e.g. 'A:DX'");
@@ -21,10 +36,13 @@ Teuchos::ParameterList ValueCheck::parameters() {
   return c;
 }
 
-std::unique_ptr<HistoryCheck> ValueCheck::create(const Teuchos::ParameterList& row, const Model&,
-                                                 const CheckSite& site) {
-  auto c = std::make_unique<ValueCheck>();
-  CheckSpec& s = c->spec_;
+std::unique_ptr<HistoryCheck> makeValueCheck(const Teuchos::ParameterList& row, const Model&,
+                                             const CheckSite& site) {
+  return std::make_unique<ValueCheck>(row, site);
+}
+
+ValueCheck::ValueCheck(const Teuchos::ParameterList& row, const CheckSite& site) : site_(site) {
+  CheckSpec& s = spec_;
   s.name = site.name;
   s.analysis = site.analysis;
   s.quantity = row.get<std::string>("Quantity");
@@ -34,8 +52,6 @@ std::unique_ptr<HistoryCheck> ValueCheck::create(const Teuchos::ParameterList& r
   s.kind = *parseReferenceKind(row.get<std::string>("Kind"));
   s.tolerance = row.get<double>("Tolerance");
   s.note = row.get<std::string>("Note");
-  c->site_ = site;
-  return c;
 }
 
 void ValueCheck::verify(const std::vector<std::string>& columns, double endTime) const {

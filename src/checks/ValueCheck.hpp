@@ -5,17 +5,8 @@
 
 namespace choc {
 
-class ValueCheck : public HistoryCheck {
- public:
-  static Teuchos::ParameterList parameters();
-  static std::unique_ptr<HistoryCheck> create(const Teuchos::ParameterList& row, const Model& model,
-                                              const CheckSite& site);
-  void verify(const std::vector<std::string>& columns, double endTime) const override;
-  std::vector<CheckResult> evaluate(const RecordedHistory& h) const override;
-
- private:
-  CheckSpec spec_;
-  CheckSite site_;
-};
+Teuchos::ParameterList valueCheckParameters();
+std::unique_ptr<HistoryCheck> makeValueCheck(const Teuchos::ParameterList& row, const Model& model,
+                                             const CheckSite& site);
 
 }  // namespace choc

@@ -114,9 +114,27 @@ choc_cli_input_error(bad_active_component check bad_active_component.xml
   "parameter 'Model/Active Components' = 'DX DW': unknown component 'DW'")
 choc_cli_input_error(no_unknowns check bad_no_unknowns.xml
   "parameter 'Model/Active Components' = 'DX': the model has no unknowns")
-# Known only once the model is built: `choc run` (101 unknowns, at most 99 modes).
-choc_cli_input_error(too_many_modes run bad_too_many_modes.xml
+
+# --- references resolved by the analyses' setup: `choc check` gives the line `choc run` gives,
+# and the run writes no result (setup comes before any analysis runs) ----------------------
+function(choc_cli_reference_error name input tail)
+  add_test(NAME cli.error.${name}
+           COMMAND ${CMAKE_COMMAND} -DCHOC=$<TARGET_FILE:choc> -DINPUT=${CLI_INPUTS}/${input}
+                   "-DSTDERR_REGEX=^choc: input error: .*${input}: ${tail}"
+                   -DWORKDIR=${CLI_WORK}/${name} -P ${CLI_SCRIPTS}/check_equals_run.cmake)
+  set_tests_properties(cli.error.${name} PROPERTIES TIMEOUT 120 LABELS cli)
+endfunction()
+# 101 unknowns, at most 99 modes.
+choc_cli_reference_error(too_many_modes bad_too_many_modes.xml
   "parameter 'Analyses/modes/Number of Modes' = '100': more modes than the model's 101 unknowns allow. ask for at most 99")
+choc_cli_reference_error(history_node_set_not_in_mesh bad_history_node_set.xml
+  "parameter 'Analyses/shock/History' = 'AA': no node set of that name in the mesh. did you mean 'A'. node sets: A, B, C, D, POU1, POU2")
+choc_cli_reference_error(modal_basis_not_computed bad_modal_basis.xml
+  "parameter 'Analyses/shock/Modal Basis' = 'mode': no modal basis of that name has been computed. did you mean 'modes'. name a Modal analysis listed before this one in Analyses .listed before: modes.")
+choc_cli_reference_error(contact_side_set_not_in_mesh bad_contact_side_set.xml
+  "parameter 'Analyses/impact/Contact/Pairs/interface/Master Side Set' = 'CNT_POU3': no side set of that name in the mesh. did you mean 'CNT_POU1'. side sets: ")
+choc_cli_reference_error(cg_with_contact_multipliers bad_cg_multiplier.xml
+  "parameter 'Analyses/impact/Linear Solver/Method' = 'CG': the saddle-point system of contact method 'Lagrange' is indefinite. use Direct, GMRES or MINRES")
 
 # --- the command line -------------------------------------------------------------------
 choc_cli_command_error(mesh_zero_length
@@ -167,6 +185,16 @@ choc_cli_test(check_sdnl111a RC 0
                      "Residual Tolerance : double = 1e-06"
                      "Direct Package : string = KLU2"
               ARGS check ${CMAKE_SOURCE_DIR}/input/sdnl111a.xml)
+# Keys of the previous release still work, translated, with one deprecation warning each.
+choc_cli_test(deprecated_keys RC 0
+              STDOUT "parameter 'Analyses/impact/Write Exodus' is deprecated .*use 'Exodus Interval'"
+                     "parameter 'Analyses/impact/Log Interval' is deprecated"
+                     "parameter 'Analyses/impact/Exact Solution' is deprecated"
+                     "parameter 'Analyses/shock/Progress Lines' is deprecated"
+                     "Exodus Interval : int = 0"
+                     "Type : string = Bar Impact Exact Solution"
+                     "Progress Interval : double = 0"
+              ARGS check ${CLI_INPUTS}/deprecated_keys.xml)
 choc_cli_test(parameters RC 0
               STDOUT "Young's Modulus \\(double, required. a number in \\(0, inf.\\)"
                      "Density \\(double, required"
@@ -174,6 +202,8 @@ choc_cli_test(parameters RC 0
                      "Node Set \\(string, required"
                      "Number of Modes \\(int, default 10"
                      "Analyses/<name> with Type = 'Modal'"
+                     "Checks/<name> with Type = 'Bar Impact Exact Solution'"
+                     "Progress Interval \\(double, default 10"
               ARGS parameters)
 add_test(NAME cli.parameters_documented
          COMMAND sh ${CLI_SCRIPTS}/parameters_documented.sh $<TARGET_FILE:choc>
