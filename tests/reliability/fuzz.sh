@@ -9,7 +9,7 @@
 set -uo pipefail
 src="$(cd "$1" && pwd)"; mkdir -p "$2"; bdir="$(cd "$2" && pwd)"; target="$3"; secs="$4"
 here="$src/tests/reliability"
-if [ ! -f "$bdir/CMakeCache.txt" ]; then
+if [ ! -f "$bdir/Makefile" ]; then  # also after a configure that failed
   cmake -S "$here/fuzz" -B "$bdir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang \
         > "$bdir.configure.log" 2>&1 || { cat "$bdir.configure.log"; exit 1; }
 fi
