@@ -17,6 +17,9 @@ class MeshFileWriter {
   MeshFileWriter(const Mesh& mesh, const std::string& path, bool netcdf4)
       : mesh_(mesh), path_(path), netcdf4_(netcdf4) {}
 
+  // 2D meshes (planar elements) are written as 2D, so that ParaView shows them as such.
+  int dimension() const { return mesh_.dimension == 2 ? 2 : 3; }
+
   int create() {
     validateNames();
     ex_opts(EX_DEFAULT);  // no library messages: failures become exceptions
@@ -26,7 +29,7 @@ class MeshFileWriter {
     if (id_ < 0) throw std::runtime_error(exodusFailure("creating the Exodus file", path_));
     try {
       check(ex_set_max_name_length(id_, kExodusMaxNameLength), "setting the name length");
-      check(ex_put_init(id_, mesh_.title.substr(0, MAX_LINE_LENGTH).c_str(), 3, mesh_.numNodes(),
+      check(ex_put_init(id_, mesh_.title.substr(0, MAX_LINE_LENGTH).c_str(), dimension(), mesh_.numNodes(),
                         mesh_.numElements(), static_cast<int64_t>(mesh_.blocks.size()),
                         static_cast<int64_t>(mesh_.nodeSets.size()),
                         static_cast<int64_t>(mesh_.sideSets.size())),
@@ -94,7 +97,10 @@ class MeshFileWriter {
       c[d].resize(n);
       for (int i = 0; i < n; ++i) c[d][i] = mesh_.coords[i][d];
     }
-    if (n > 0) check(ex_put_coord(id_, c[0].data(), c[1].data(), c[2].data()), "writing coordinates");
+    const int dim = dimension();
+    if (n > 0)
+      check(ex_put_coord(id_, c[0].data(), dim > 1 ? c[1].data() : nullptr, dim > 2 ? c[2].data() : nullptr),
+            "writing coordinates");
     char x[] = "x", y[] = "y", z[] = "z";
     char* names[3] = {x, y, z};
     check(ex_put_coord_names(id_, names), "writing coordinate names");

@@ -15,14 +15,12 @@
 #include "mesh/ChildProcess.hpp"
 #include "mesh/MeshBytes.hpp"
 #include "mesh/NetcdfHeader.hpp"
+#include "mesh/Topology.hpp"
 
 namespace choc {
 
 namespace {
 
-const char* const kSupported =
-    "supported: BEAM2 (also read from BAR2, BAR, BEAM, TRUSS, TRUSS2; 2 nodes), "
-    "HEX8 (also read from HEX; 8 nodes)";
 
 [[noreturn]] void badFile(const std::string& path, const std::string& problem) {
   throwInput(path, "", "", problem, "check that the file is a complete Exodus II mesh");
@@ -74,7 +72,7 @@ class Reader {
     Mesh mesh;
     p.title[MAX_LINE_LENGTH] = '\0';
     mesh.title = trimRight(p.title);
-    mesh.dimension = 3;
+    mesh.dimension = static_cast<int>(p.num_dim);
     readCoordinates(mesh, static_cast<int>(p.num_dim), static_cast<int>(p.num_nodes));
     readBlocks(mesh, static_cast<int>(p.num_elem_blk));
     if (mesh.numElements() != p.num_elem)
@@ -233,7 +231,7 @@ class Reader {
       if (block.topology.empty())
         throwInput(path_, "element block '" + block.name + "' topology",
                    type + " with " + std::to_string(nodes) + " nodes",
-                   "unsupported element topology", kSupported);
+                   "unsupported element topology", supportedTopologiesText());
       // Each connectivity entry takes at least 4 bytes: more than the file holds is corrupt.
       if (info.num_entry < 0 || info.num_entry * nodes > fileBytes_ / 4)
         badFile(path_, "element block '" + block.name + "' has an invalid element count");
@@ -298,7 +296,8 @@ class Reader {
       toZeroBased(set.elements, mesh.numElements(), what);
       for (int i = 0; i < n; ++i) {
         const ElementBlock& block = mesh.blocks[mesh.locateElement(set.elements[i]).first];
-        const int maxSide = block.topology == "HEX8" ? 6 : 2;
+        const Topology* topo = findTopology(block.topology);
+        const int maxSide = topo ? topo->numSides() : 0;
         if (set.sides[i] < 1 || set.sides[i] > maxSide)
           badFile(path_, what + " has side " + std::to_string(set.sides[i]) + " on a " +
                              block.topology + " element (valid: 1.." + std::to_string(maxSide) +
@@ -315,15 +314,6 @@ class Reader {
 };
 
 }  // namespace
-
-std::string canonicalTopology(const std::string& exodusType, int nodesPerElement) {
-  const std::string t = upper(exodusType);
-  if (nodesPerElement == 2 && (t == "BAR2" || t == "BAR" || t == "BEAM" || t == "BEAM2" ||
-                               t == "TRUSS" || t == "TRUSS2"))
-    return "BEAM2";
-  if (nodesPerElement == 8 && (t == "HEX" || t == "HEX8")) return "HEX8";
-  return "";
-}
 
 Mesh readExodusMesh(const std::string& path) { return Reader(path).read(); }
 

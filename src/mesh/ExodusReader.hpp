@@ -3,6 +3,7 @@
 #include <string>
 
 #include "mesh/Mesh.hpp"
+#include "mesh/Topology.hpp"
 
 namespace choc {
 
@@ -16,8 +17,5 @@ namespace choc {
 // process (ChildProcess.hpp); this process only runs choc's header check (NetcdfHeader.hpp).
 Mesh readExodusMesh(const std::string& path);
 
-// The canonical topology ("BEAM2", "HEX8") of an Exodus element type name with the given
-// number of nodes, or "" when choc does not support it.
-std::string canonicalTopology(const std::string& exodusType, int nodesPerElement);
 
 }  // namespace choc

@@ -3,13 +3,11 @@
 
 #include <stdexcept>
 
+#include "mesh/Topology.hpp"
+
 namespace choc {
 
 namespace {
-
-// Exodus side → 1-based node positions, HEX8 (outward normal by the right-hand rule).
-constexpr int kHex8Sides[6][4] = {{1, 2, 6, 5}, {2, 3, 7, 6}, {3, 4, 8, 7},
-                                  {1, 5, 8, 4}, {1, 4, 3, 2}, {5, 6, 7, 8}};
 
 template <class T>
 const T* findByName(const std::vector<T>& items, const std::string& name) {
@@ -65,12 +63,12 @@ std::vector<int> Mesh::sideNodes(int globalElement, int side) const {
   const ElementBlock& block = blocks[b];
   const int* conn = block.connectivity.data() +
                     static_cast<std::size_t>(e) * static_cast<std::size_t>(block.nodesPerElement);
-  if (block.topology == "HEX8" && side >= 1 && side <= 6) {
-    std::vector<int> nodes(4);
-    for (int k = 0; k < 4; ++k) nodes[k] = conn[kHex8Sides[side - 1][k] - 1];
+  const Topology* topo = findTopology(block.topology);
+  if (topo && side >= 1 && side <= topo->numSides()) {
+    std::vector<int> nodes;
+    for (int k : topo->sides[side - 1]) nodes.push_back(conn[k]);
     return nodes;
   }
-  if (block.topology == "BEAM2" && side >= 1 && side <= 2) return {conn[side - 1]};
   throw std::out_of_range("mesh: side " + std::to_string(side) + " of element " +
                           std::to_string(globalElement) + " (block '" + block.name +
                           "', topology " + block.topology + ") does not exist");

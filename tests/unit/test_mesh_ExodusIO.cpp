@@ -147,7 +147,15 @@ TEST(ExodusTopology, CanonicalNames) {
   for (const char* t : {"HEX", "HEX8", "hex8"}) EXPECT_EQ(choc::canonicalTopology(t, 8), "HEX8");
   EXPECT_EQ(choc::canonicalTopology("HEX", 27), "");
   EXPECT_EQ(choc::canonicalTopology("BAR", 3), "");
-  EXPECT_EQ(choc::canonicalTopology("TETRA", 4), "");
+  EXPECT_EQ(choc::canonicalTopology("TETRA", 4), "TET4");
+  EXPECT_EQ(choc::canonicalTopology("TETRA", 10), "TET10");
+  EXPECT_EQ(choc::canonicalTopology("tetra10", 10), "TET10");
+  EXPECT_EQ(choc::canonicalTopology("HEX", 20), "HEX20");
+  EXPECT_EQ(choc::canonicalTopology("TRIANGLE", 6), "TRI6");
+  EXPECT_EQ(choc::canonicalTopology("QUAD", 8), "QUAD8");
+  EXPECT_EQ(choc::canonicalTopology("SHELL4", 4), "");  // shells are not solids
+  EXPECT_EQ(choc::canonicalTopology("WEDGE", 6), "");
+  EXPECT_EQ(choc::canonicalTopology("TETRA", 8), "");
 }
 
 // Reads path expecting an InputError; the message must be one line naming the path, and
