@@ -176,6 +176,7 @@ Topology solidTopology(const std::string& name) {
 int nodeCount(Topology t) { return info(t).nodes(); }
 int parametricDimension(Topology t) { return info(t).dim; }
 bool isQuadratic(Topology t) { return !info(t).edges.empty(); }
+int cornerCount(Topology t) { return info(t).corners; }
 
 const std::vector<Point3>& nodeNaturalCoordinates(Topology t) {
   static const std::vector<std::vector<Point3>> coords = [] {

@@ -62,6 +62,7 @@ Topology solidTopology(const std::string& name);
 int nodeCount(Topology t);
 int parametricDimension(Topology t);  // 3 for TET/HEX, 2 for TRI/QUAD
 bool isQuadratic(Topology t);         // TET10 HEX20 TRI6 QUAD8
+int cornerCount(Topology t);          // the vertices: nodes 1..cornerCount(t)
 
 // Natural coordinates of the nodes (unused coordinates zero).
 const std::vector<Point3>& nodeNaturalCoordinates(Topology t);
