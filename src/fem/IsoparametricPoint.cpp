@@ -36,13 +36,12 @@ void inverse(int dim, const Matrix3 J, double det, Matrix3 Ji) {
 }
 
 // Fills p.N, p.x, dN/dxi and J; returns det J.
-double jacobian(Topology t, const std::vector<Point3>& x, const Point3& xi,
-                IsoparametricPoint& p, std::vector<Point3>& dN, Matrix3 J) {
+double jacobian(Topology t, const std::vector<Point3>& x, const Point3& xi, IsoparametricPoint& p,
+                std::vector<Point3>& dN, Matrix3 J) {
   const int n = nodeCount(t), dim = parametricDimension(t);
   if (static_cast<int>(x.size()) != n)
-    throw std::invalid_argument(std::string(topologyName(t)) + ": expected " +
-                                std::to_string(n) + " node coordinates, got " +
-                                std::to_string(x.size()));
+    throw std::invalid_argument(std::string(topologyName(t)) + ": expected " + std::to_string(n) +
+                                " node coordinates, got " + std::to_string(x.size()));
   shapeFunctions(t, xi, p.N, dN);
   p.x = {0, 0, 0};
   for (int a = 0; a < n; ++a)
@@ -57,8 +56,8 @@ double jacobian(Topology t, const std::vector<Point3>& x, const Point3& xi,
 
 void throwInverted(Topology t, double det, const Point3& xi) {
   std::ostringstream msg;
-  msg << "inverted or degenerate " << topologyName(t) << " element: Jacobian determinant "
-      << det << " <= 0 at natural point " << naturalPointText(t, xi)
+  msg << "inverted or degenerate " << topologyName(t) << " element: Jacobian determinant " << det
+      << " <= 0 at natural point " << naturalPointText(t, xi)
       << "; check the node order against the Exodus II convention";
   throw std::invalid_argument(msg.str());
 }

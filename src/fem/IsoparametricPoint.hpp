@@ -13,7 +13,7 @@ struct IsoparametricPoint {
   std::vector<double> N;     // N_a
   std::vector<Point3> dNdx;  // dN_a/dx_i for i < parametric dimension, others zero
   double detJ = 0.0;
-  Point3 x = {0, 0, 0};      // sum N_a x_a (z = 0 for 2D topologies)
+  Point3 x = {0, 0, 0};  // sum N_a x_a (z = 0 for 2D topologies)
 };
 
 // Evaluates the map of the element with nodes x (nodeCount(t) points) at the natural point

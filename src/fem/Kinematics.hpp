@@ -8,9 +8,12 @@ enum class Kinematics { ThreeD, PlaneStrain, Axisymmetric };
 
 inline const char* toString(Kinematics k) {
   switch (k) {
-    case Kinematics::ThreeD: return "3D";
-    case Kinematics::PlaneStrain: return "plane strain";
-    case Kinematics::Axisymmetric: return "axisymmetric";
+    case Kinematics::ThreeD:
+      return "3D";
+    case Kinematics::PlaneStrain:
+      return "plane strain";
+    case Kinematics::Axisymmetric:
+      return "axisymmetric";
   }
   return "?";
 }

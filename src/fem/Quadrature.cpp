@@ -24,8 +24,14 @@ void add(QuadratureRule& q, const Point3& p, double w) {
 // The 1D n-point Gauss-Legendre abscissae and weights on [-1, 1].
 void gaussLegendre(int n, std::vector<double>& x, std::vector<double>& w) {
   switch (n) {
-    case 1: x = {0.0}; w = {2.0}; return;
-    case 2: x = {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)}; w = {1.0, 1.0}; return;
+    case 1:
+      x = {0.0};
+      w = {2.0};
+      return;
+    case 2:
+      x = {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)};
+      w = {1.0, 1.0};
+      return;
     case 3:
       x = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
       w = {5.0 / 9, 8.0 / 9, 5.0 / 9};

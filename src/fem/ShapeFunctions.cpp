@@ -149,11 +149,11 @@ const char* topologyName(Topology t) { return info(t).name; }
 
 bool findSolidTopology(const std::string& name, Topology& topology) {
   static const std::vector<std::pair<const char*, Topology>> aliases = {
-      {"TETRA", Topology::Tet4},    {"TETRA4", Topology::Tet4},    {"TET4", Topology::Tet4},
-      {"TETRA10", Topology::Tet10}, {"TET10", Topology::Tet10},    {"HEX", Topology::Hex8},
-      {"HEX8", Topology::Hex8},     {"HEX20", Topology::Hex20},    {"TRI", Topology::Tri3},
-      {"TRI3", Topology::Tri3},     {"TRIANGLE", Topology::Tri3},  {"TRI6", Topology::Tri6},
-      {"QUAD", Topology::Quad4},    {"QUAD4", Topology::Quad4},    {"QUAD8", Topology::Quad8}};
+      {"TETRA", Topology::Tet4},    {"TETRA4", Topology::Tet4},   {"TET4", Topology::Tet4},
+      {"TETRA10", Topology::Tet10}, {"TET10", Topology::Tet10},   {"HEX", Topology::Hex8},
+      {"HEX8", Topology::Hex8},     {"HEX20", Topology::Hex20},   {"TRI", Topology::Tri3},
+      {"TRI3", Topology::Tri3},     {"TRIANGLE", Topology::Tri3}, {"TRI6", Topology::Tri6},
+      {"QUAD", Topology::Quad4},    {"QUAD4", Topology::Quad4},   {"QUAD8", Topology::Quad8}};
   const std::string key = upper(name);
   for (const auto& [alias, t] : aliases)
     if (key == alias) {
@@ -168,9 +168,9 @@ Topology solidTopology(const std::string& name) {
   if (findSolidTopology(name, t)) return t;
   std::string list;
   for (const std::string& s : solidTopologies()) list += (list.empty() ? "" : ", ") + s;
-  throw std::invalid_argument("element topology '" + name +
-                              "' is not a supported continuum (solid) topology; supported: " +
-                              list);
+  throw std::invalid_argument(
+      "element topology '" + name +
+      "' is not a supported continuum (solid) topology; supported: " + list);
 }
 
 int nodeCount(Topology t) { return info(t).nodes(); }
@@ -187,8 +187,7 @@ const std::vector<Point3>& nodeNaturalCoordinates(Topology t) {
   return coords.at(static_cast<size_t>(t));
 }
 
-void shapeFunctions(Topology t, const Point3& xi, std::vector<double>& N,
-                    std::vector<Point3>& dN) {
+void shapeFunctions(Topology t, const Point3& xi, std::vector<double>& N, std::vector<Point3>& dN) {
   const TopologyInfo& ti = info(t);
   N.resize(ti.nodes());
   dN.resize(ti.nodes());
@@ -201,24 +200,36 @@ void shapeFunctions(Topology t, const Point3& xi, std::vector<double>& N,
 const QuadratureRule& stiffnessRule(Topology t, Kinematics kinematics) {
   const bool axi = kinematics == Kinematics::Axisymmetric;
   switch (t) {
-    case Topology::Tet4: return tetrahedronRule(1);
-    case Topology::Tet10: return tetrahedronRule(4);
-    case Topology::Tri3: return axi ? triangleRule(7) : triangleRule(1);
-    case Topology::Tri6: return axi ? triangleRule(7) : triangleRule(3);
-    default: return massRule(t);  // the boxes use the same Gauss product for both
+    case Topology::Tet4:
+      return tetrahedronRule(1);
+    case Topology::Tet10:
+      return tetrahedronRule(4);
+    case Topology::Tri3:
+      return axi ? triangleRule(7) : triangleRule(1);
+    case Topology::Tri6:
+      return axi ? triangleRule(7) : triangleRule(3);
+    default:
+      return massRule(t);  // the boxes use the same Gauss product for both
   }
 }
 
 const QuadratureRule& massRule(Topology t) {
   switch (t) {
-    case Topology::Tet4: return tetrahedronRule(4);
-    case Topology::Tet10: return tetrahedronRule(14);
-    case Topology::Hex8: return gaussBoxRule(3, 2);
-    case Topology::Hex20: return gaussBoxRule(3, 3);
+    case Topology::Tet4:
+      return tetrahedronRule(4);
+    case Topology::Tet10:
+      return tetrahedronRule(14);
+    case Topology::Hex8:
+      return gaussBoxRule(3, 2);
+    case Topology::Hex20:
+      return gaussBoxRule(3, 3);
     case Topology::Tri3:
-    case Topology::Tri6: return triangleRule(7);
-    case Topology::Quad4: return gaussBoxRule(2, 2);
-    case Topology::Quad8: return gaussBoxRule(2, 3);
+    case Topology::Tri6:
+      return triangleRule(7);
+    case Topology::Quad4:
+      return gaussBoxRule(2, 2);
+    case Topology::Quad8:
+      return gaussBoxRule(2, 3);
   }
   throw std::invalid_argument("massRule: unknown topology");
 }

@@ -69,8 +69,7 @@ const std::vector<Point3>& nodeNaturalCoordinates(Topology t);
 
 // Shape functions N[a] and their derivatives dN[a][i] = dN_a/dxi_i at the natural point xi
 // (components beyond the parametric dimension are zero). Resizes N and dN to nodeCount(t).
-void shapeFunctions(Topology t, const Point3& xi, std::vector<double>& N,
-                    std::vector<Point3>& dN);
+void shapeFunctions(Topology t, const Point3& xi, std::vector<double>& N, std::vector<Point3>& dN);
 
 const QuadratureRule& stiffnessRule(Topology t, Kinematics kinematics);
 const QuadratureRule& massRule(Topology t);

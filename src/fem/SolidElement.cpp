@@ -29,24 +29,23 @@ void checkKinematics(Topology t, Kinematics k) {
 }
 
 void checkMaterial(Topology t, const Material& m) {
-  const std::string what = std::string(topologyName(t)) + " element: ";
-  if (!(m.youngsModulus > 0))
-    throw std::invalid_argument(what + "Young's modulus must be > 0, got " +
-                                std::to_string(m.youngsModulus));
+  auto fail = [t](const char* what, double value) {
+    std::ostringstream msg;
+    msg << topologyName(t) << " element: " << what << ", got " << value;
+    throw std::invalid_argument(msg.str());
+  };
+  if (!(m.youngsModulus > 0)) fail("Young's modulus must be > 0", m.youngsModulus);
   if (!(m.poissonsRatio > -1.0 && m.poissonsRatio < 0.5))
-    throw std::invalid_argument(what + "Poisson ratio must be in (-1, 0.5), got " +
-                                std::to_string(m.poissonsRatio));
-  if (!(m.density >= 0))
-    throw std::invalid_argument(what + "density must be >= 0, got " +
-                                std::to_string(m.density));
+    fail("Poisson ratio must be in (-1, 0.5)", m.poissonsRatio);
+  if (!(m.density >= 0)) fail("density must be >= 0", m.density);
 }
 
 void checkAxisymmetricNodes(Topology t, const std::vector<Point3>& x) {
   for (size_t a = 0; a < x.size(); ++a)
     if (!(x[a][0] >= 0.0)) {
       std::ostringstream msg;
-      msg << "axisymmetric elements need x = r >= 0: node " << a + 1 << " of a "
-          << topologyName(t) << " element has r = " << x[a][0];
+      msg << "axisymmetric elements need x = r >= 0: node " << a + 1 << " of a " << topologyName(t)
+          << " element has r = " << x[a][0];
       throw std::invalid_argument(msg.str());
     }
 }
@@ -213,8 +212,7 @@ void SolidElement::mass(const std::vector<Point3>& x, MassKind kind, DenseMatrix
 
 }  // namespace
 
-std::unique_ptr<ElementKernel> makeSolidElement(const std::string& topology,
-                                                Kinematics kinematics,
+std::unique_ptr<ElementKernel> makeSolidElement(const std::string& topology, Kinematics kinematics,
                                                 const Material& material) {
   const Topology t = solidTopology(topology);
   checkKinematics(t, kinematics);

@@ -30,8 +30,7 @@ namespace choc {
 // det J <= 0 at a quadrature point or (quadratic topologies) det J < 0 at a corner node
 // ("inverted or degenerate <TOPO> element: ..."), and, when axisymmetric, for a node with
 // r < 0 or a quadrature point with r <= 0 ("axisymmetric elements need x = r >= 0 ...").
-std::unique_ptr<ElementKernel> makeSolidElement(const std::string& topology,
-                                                Kinematics kinematics,
+std::unique_ptr<ElementKernel> makeSolidElement(const std::string& topology, Kinematics kinematics,
                                                 const Material& material);
 
 // The element's measure by the mass quadrature: volume (ThreeD), area = volume per unit

@@ -2,6 +2,7 @@
 // computed here in closed form (independent of the element code): volume (3D), area
 // (plane strain), 2 pi int r dA (axisymmetric).
 #pragma once
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,8 +33,12 @@ inline Point3 midpoint(const Point3& a, const Point3& b) {
   return {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
 }
 
-inline Point3 add3(const Point3& a, const Point3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-inline Point3 sub3(const Point3& a, const Point3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline Point3 add3(const Point3& a, const Point3& b) {
+  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+}
+inline Point3 sub3(const Point3& a, const Point3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 
 // Corner nodes plus straight mid-edge nodes for a quadratic topology.
 inline std::vector<Point3> withMidEdgeNodes(const std::string& topology, std::vector<Point3> x) {
@@ -49,6 +54,10 @@ struct ElementCase {
   std::vector<Point3> x;
   double measure;  // exact volume / area / ring volume
 };
+
+// gtest prints a parameter by this; ctest then names the test .../<label> (the gtest name is
+// .../<index>).
+inline void PrintTo(const ElementCase& c, std::ostream* os) { *os << c.label; }
 
 // ---- 2D: straight-sided polygons, exact area and int r dA by Green's theorem ----
 
@@ -99,8 +108,8 @@ inline std::vector<ElementCase> planeCases(Kinematics k, const char* kin) {
   for (const char* topo : {"QUAD4", "QUAD8"}) {
     c.push_back({std::string(topo) + "_" + s + "_affine", topo, k, withMidEdgeNodes(topo, par),
                  planeMeasure(k, par)});
-    c.push_back({std::string(topo) + "_" + s + "_distorted", topo, k,
-                 withMidEdgeNodes(topo, quad), planeMeasure(k, quad)});
+    c.push_back({std::string(topo) + "_" + s + "_distorted", topo, k, withMidEdgeNodes(topo, quad),
+                 planeMeasure(k, quad)});
   }
   return c;
 }
@@ -121,8 +130,8 @@ inline std::vector<ElementCase> axisymmetricExtraCases() {
   for (const char* topo : {"QUAD4", "QUAD8"}) {
     c.push_back({std::string(topo) + "_axi_on_axis", topo, k, withMidEdgeNodes(topo, quad),
                  planeMeasure(k, quad)});
-    c.push_back({std::string(topo) + "_axi_rectangle", topo, k, withMidEdgeNodes(topo, rect),
-                 ring});
+    c.push_back(
+        {std::string(topo) + "_axi_rectangle", topo, k, withMidEdgeNodes(topo, rect), ring});
   }
   return c;
 }
@@ -239,8 +248,7 @@ inline std::vector<ElementCase> solidCases3D() {
 inline std::vector<ElementCase> allElementCases() {
   std::vector<ElementCase> c = solidCases3D();
   for (const auto& group : {planeCases(Kinematics::PlaneStrain, "plane"), curvedPlaneCases(),
-                            planeCases(Kinematics::Axisymmetric, "axi"),
-                            axisymmetricExtraCases()})
+                            planeCases(Kinematics::Axisymmetric, "axi"), axisymmetricExtraCases()})
     c.insert(c.end(), group.begin(), group.end());
   return c;
 }

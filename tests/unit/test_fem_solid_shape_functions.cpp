@@ -37,8 +37,18 @@ std::map<std::string, ExodusLayout> exodusLayouts() {
           {"HEX8", {hex, {}}},
           {"HEX20",
            {hex,
-            {{1, 2}, {2, 3}, {3, 4}, {4, 1}, {1, 5}, {2, 6}, {3, 7}, {4, 8}, {5, 6}, {6, 7},
-             {7, 8}, {8, 5}}}},
+            {{1, 2},
+             {2, 3},
+             {3, 4},
+             {4, 1},
+             {1, 5},
+             {2, 6},
+             {3, 7},
+             {4, 8},
+             {5, 6},
+             {6, 7},
+             {7, 8},
+             {8, 5}}}},
           {"TRI3", {tri, {}}},
           {"TRI6", {tri, {{1, 2}, {2, 3}, {3, 1}}}},
           {"QUAD4", {quad, {}}},
@@ -57,13 +67,12 @@ std::vector<Point3> expectedNodes(const ExodusLayout& l) {
 
 // A few interior natural points of the reference cell of t.
 std::vector<Point3> samplePoints(Topology t) {
-  const bool simplex = t == Topology::Tet4 || t == Topology::Tet10 || t == Topology::Tri3 ||
-                       t == Topology::Tri6;
+  const bool simplex =
+      t == Topology::Tet4 || t == Topology::Tet10 || t == Topology::Tri3 || t == Topology::Tri6;
   const int dim = parametricDimension(t);
-  std::vector<Point3> p = simplex ? std::vector<Point3>{{0.2, 0.3, 0.1}, {0.05, 0.6, 0.25},
-                                                        {0.7, 0.1, 0.15}}
-                                  : std::vector<Point3>{{0.3, -0.7, 0.45}, {-0.9, 0.2, -0.35},
-                                                        {0.65, 0.8, -0.1}};
+  std::vector<Point3> p =
+      simplex ? std::vector<Point3>{{0.2, 0.3, 0.1}, {0.05, 0.6, 0.25}, {0.7, 0.1, 0.15}}
+              : std::vector<Point3>{{0.3, -0.7, 0.45}, {-0.9, 0.2, -0.35}, {0.65, 0.8, -0.1}};
   if (dim == 2)
     for (Point3& q : p) q[2] = 0.0;
   return p;
@@ -74,9 +83,12 @@ std::vector<Point3> samplePoints(Topology t) {
 // the boxes).
 double poly(int which, const Point3& x) {
   switch (which) {
-    case 0: return 1.0;
-    case 1: return 0.3 * x[0] - 1.2 * x[1] + 0.7 * x[2] + 0.4;
-    default: return x[0] * x[0] - 0.5 * x[0] * x[1] + 0.8 * x[1] * x[2] + 0.3 * x[2] * x[2];
+    case 0:
+      return 1.0;
+    case 1:
+      return 0.3 * x[0] - 1.2 * x[1] + 0.7 * x[2] + 0.4;
+    default:
+      return x[0] * x[0] - 0.5 * x[0] * x[1] + 0.8 * x[1] * x[2] + 0.3 * x[2] * x[2];
   }
 }
 
@@ -134,8 +146,8 @@ TEST(SolidShapeFunctions, TopologyTable) {
   EXPECT_EQ(names, (std::vector<std::string>{"TET4", "TET10", "HEX8", "HEX20", "TRI3", "TRI6",
                                              "QUAD4", "QUAD8"}));
   const std::map<std::string, std::pair<int, int>> sizes = {
-      {"TET4", {4, 3}},  {"TET10", {10, 3}}, {"HEX8", {8, 3}},   {"HEX20", {20, 3}},
-      {"TRI3", {3, 2}},  {"TRI6", {6, 2}},   {"QUAD4", {4, 2}},  {"QUAD8", {8, 2}}};
+      {"TET4", {4, 3}}, {"TET10", {10, 3}}, {"HEX8", {8, 3}},  {"HEX20", {20, 3}},
+      {"TRI3", {3, 2}}, {"TRI6", {6, 2}},   {"QUAD4", {4, 2}}, {"QUAD8", {8, 2}}};
   for (const std::string& n : names) {
     const Topology t = solidTopology(n);
     EXPECT_EQ(topologyName(t), n);
@@ -147,10 +159,10 @@ TEST(SolidShapeFunctions, TopologyTable) {
 
 TEST(SolidShapeFunctions, ExodusAliasesCaseInsensitive) {
   const std::map<std::string, std::string> aliases = {
-      {"tetra", "TET4"},    {"TETRA4", "TET4"}, {"Tet4", "TET4"},      {"tetra10", "TET10"},
-      {"TET10", "TET10"},   {"hex", "HEX8"},    {"HEX8", "HEX8"},      {"hex20", "HEX20"},
-      {"tri", "TRI3"},      {"TRI3", "TRI3"},   {"Triangle", "TRI3"},  {"tri6", "TRI6"},
-      {"quad", "QUAD4"},    {"QUAD4", "QUAD4"}, {"quad8", "QUAD8"}};
+      {"tetra", "TET4"},  {"TETRA4", "TET4"}, {"Tet4", "TET4"},     {"tetra10", "TET10"},
+      {"TET10", "TET10"}, {"hex", "HEX8"},    {"HEX8", "HEX8"},     {"hex20", "HEX20"},
+      {"tri", "TRI3"},    {"TRI3", "TRI3"},   {"Triangle", "TRI3"}, {"tri6", "TRI6"},
+      {"quad", "QUAD4"},  {"QUAD4", "QUAD4"}, {"quad8", "QUAD8"}};
   for (const auto& [alias, name] : aliases) EXPECT_EQ(topologyName(solidTopology(alias)), name);
   for (const char* bad : {"SHELL4", "shell", "BEAM2", "BAR2", "HEX27", "TET", ""}) {
     Topology t;
