@@ -92,10 +92,8 @@ std::string thrownMessage(const std::function<void()>& f) {
 
 class SolidElementCase : public ::testing::TestWithParam<ElementCase> {};
 
-}  // namespace
-
-TEST_P(SolidElementCase, StiffnessSymmetricWithOnlyRigidZeroEnergyModes) {
-  const ElementCase& c = GetParam();
+// Symmetric; K r = 0 for the rigid modes; no other zero-energy mode.
+void checkStiffnessRigidModesAndRank(const ElementCase& c) {
   DenseMatrix K;
   makeSolidElement(c.topology, c.kinematics, kSteel)->stiffness(c.x, K);
   const int nd = static_cast<int>(c.x.size()) * componentsOf(c.kinematics);
@@ -113,8 +111,8 @@ TEST_P(SolidElementCase, StiffnessSymmetricWithOnlyRigidZeroEnergyModes) {
   EXPECT_EQ(zeros, static_cast<int>(modes.size()));
 }
 
-TEST_P(SolidElementCase, ConstantStrainEnergyMatchesClosedForm) {
-  const ElementCase& c = GetParam();
+// 1/2 u^T K u of a constant-strain field equals 1/2 sigma : eps times the measure.
+void checkConstantStrainEnergy(const ElementCase& c) {
   DenseMatrix K;
   makeSolidElement(c.topology, c.kinematics, kSteel)->stiffness(c.x, K);
   double energy = 0.0;
@@ -122,8 +120,8 @@ TEST_P(SolidElementCase, ConstantStrainEnergyMatchesClosedForm) {
   EXPECT_NEAR(0.5 * quadratic(K, u), energy, kTol * energy);
 }
 
-TEST_P(SolidElementCase, MassTotalsEqualDensityTimesMeasure) {
-  const ElementCase& c = GetParam();
+// 1_c^T M 1_c = rho * measure for each component c, consistent and lumped.
+void checkMassTotals(const ElementCase& c) {
   EXPECT_NEAR(solidElementMeasure(c.topology, c.kinematics, c.x), c.measure, kTol * c.measure);
   auto el = makeSolidElement(c.topology, c.kinematics, kSteel);
   const int nc = componentsOf(c.kinematics);
@@ -141,8 +139,8 @@ TEST_P(SolidElementCase, MassTotalsEqualDensityTimesMeasure) {
   }
 }
 
-TEST_P(SolidElementCase, ConsistentMassSymmetricPositiveDefiniteUncoupled) {
-  const ElementCase& c = GetParam();
+// Symmetric, block-diagonal by component, positive definite.
+void checkConsistentMass(const ElementCase& c) {
   DenseMatrix M;
   makeSolidElement(c.topology, c.kinematics, kSteel)->mass(c.x, MassKind::Consistent, M);
   EXPECT_LE(asymmetry(M), kTol * maxAbs(M));
@@ -159,8 +157,7 @@ TEST_P(SolidElementCase, ConsistentMassSymmetricPositiveDefiniteUncoupled) {
 
 // Lumped: diagonal, strictly positive; row sums of the consistent mass for linear
 // topologies, the consistent diagonal scaled (HRZ) for quadratic ones.
-TEST_P(SolidElementCase, LumpedMassPositiveDiagonalByTheTopologysRule) {
-  const ElementCase& c = GetParam();
+void checkLumpedMass(const ElementCase& c) {
   auto el = makeSolidElement(c.topology, c.kinematics, kSteel);
   DenseMatrix L, M;
   el->mass(c.x, MassKind::Lumped, L);
@@ -187,8 +184,8 @@ TEST_P(SolidElementCase, LumpedMassPositiveDiagonalByTheTopologysRule) {
   }
 }
 
-TEST_P(SolidElementCase, InvertedOrDegenerateElementThrows) {
-  const ElementCase& c = GetParam();
+// Two nodes swapped, or all nodes in a plane (3D) / on a line (2D).
+void checkInvertedOrDegenerateThrows(const ElementCase& c) {
   auto el = makeSolidElement(c.topology, c.kinematics, kSteel);
   std::vector<Point3> swapped = c.x;
   std::swap(swapped[0], swapped[1]);
@@ -203,6 +200,22 @@ TEST_P(SolidElementCase, InvertedOrDegenerateElementThrows) {
     EXPECT_NE(mass.find("inverted or degenerate " + c.topology + " element"), std::string::npos)
         << mass;
   }
+}
+
+}  // namespace
+
+TEST_P(SolidElementCase, StiffnessRigidModesRankEnergyAndInversion) {
+  const ElementCase& c = GetParam();
+  checkStiffnessRigidModesAndRank(c);
+  checkConstantStrainEnergy(c);
+  checkInvertedOrDegenerateThrows(c);
+}
+
+TEST_P(SolidElementCase, MassTotalsDefinitenessAndLumping) {
+  const ElementCase& c = GetParam();
+  checkMassTotals(c);
+  checkConsistentMass(c);
+  checkLumpedMass(c);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllTopologies, SolidElementCase, ::testing::ValuesIn(allElementCases()));
