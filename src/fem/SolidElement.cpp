@@ -1,0 +1,235 @@
+// Isoparametric continuum kernel: K = sum_q w_q B^T D B dV_q, m_ab = sum_q w_q rho N_a N_b dV_q
+// with dV_q = det J (times 2 pi r when axisymmetric).
+#include "fem/SolidElement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "fem/Components.hpp"
+#include "fem/IsoparametricPoint.hpp"
+#include "fem/MassLumping.hpp"
+#include "fem/ShapeFunctions.hpp"
+
+namespace choc {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+void checkKinematics(Topology t, Kinematics k) {
+  const bool threeD = parametricDimension(t) == 3;
+  if (threeD == (k == Kinematics::ThreeD)) return;
+  std::ostringstream msg;
+  msg << "element topology " << topologyName(t) << " is " << (threeD ? "3D" : "2D")
+      << " and cannot be used with " << toString(k) << " kinematics; "
+      << (threeD ? "use 3D kinematics" : "use plane strain or axisymmetric kinematics");
+  throw std::invalid_argument(msg.str());
+}
+
+void checkMaterial(Topology t, const Material& m) {
+  auto fail = [t](const char* what, double value) {
+    std::ostringstream msg;
+    msg << topologyName(t) << " element: " << what << ", got " << value;
+    throw std::invalid_argument(msg.str());
+  };
+  if (!(m.youngsModulus > 0)) fail("Young's modulus must be > 0", m.youngsModulus);
+  if (!(m.poissonsRatio > -1.0 && m.poissonsRatio < 0.5))
+    fail("Poisson ratio must be in (-1, 0.5)", m.poissonsRatio);
+  if (!(m.density >= 0)) fail("density must be >= 0", m.density);
+}
+
+void checkAxisymmetricNodes(Topology t, const std::vector<Point3>& x) {
+  for (size_t a = 0; a < x.size(); ++a)
+    if (!(x[a][0] >= 0.0)) {
+      std::ostringstream msg;
+      msg << "axisymmetric elements need x = r >= 0: node " << a + 1 << " of a " << topologyName(t)
+          << " element has r = " << x[a][0];
+      throw std::invalid_argument(msg.str());
+    }
+}
+
+// Checks the nodes before any integration: axisymmetric radii, and for the quadratic
+// topologies det J at the corner nodes. A folded quadratic element (two corners swapped, say)
+// can have det J > 0 at every quadrature point but not at its corners. det J = 0 at a corner
+// (collapsed or quarter-point elements) is accepted up to round-off.
+void validateNodes(Topology t, Kinematics k, const std::vector<Point3>& x) {
+  if (k == Kinematics::Axisymmetric) checkAxisymmetricNodes(t, x);
+  if (!isQuadratic(t)) return;
+  const std::vector<Point3>& xi = nodeNaturalCoordinates(t);
+  std::vector<double> det(cornerCount(t));
+  double scale = 0.0;
+  for (int a = 0; a < cornerCount(t); ++a) {
+    det[a] = jacobianDeterminant(t, x, xi[a]);
+    scale = std::max(scale, std::fabs(det[a]));
+  }
+  for (int a = 0; a < cornerCount(t); ++a)
+    if (det[a] < -1e-10 * scale) throwInverted(t, det[a], xi[a]);
+}
+
+// Evaluates the map at quadrature point q of `rule` and returns w_q dV_q.
+double volumeWeight(Topology t, Kinematics k, const std::vector<Point3>& x,
+                    const QuadratureRule& rule, int q, IsoparametricPoint& p) {
+  evaluateIsoparametric(t, x, rule.points[q], p);
+  double w = rule.weights[q] * p.detJ;
+  if (k != Kinematics::Axisymmetric) return w;
+  const double r = p.x[0];
+  if (!(r > 0.0)) {
+    std::ostringstream msg;
+    msg << "axisymmetric elements need x = r >= 0: radius " << r << " at natural point "
+        << naturalPointText(t, rule.points[q]) << " of a " << topologyName(t)
+        << " element (r must be positive inside the element)";
+    throw std::invalid_argument(msg.str());
+  }
+  return w * 2 * kPi * r;
+}
+
+// Strain-displacement matrix B (strains x element DOFs). Strain order: ThreeD (xx, yy, zz,
+// 2xy, 2yz, 2zx); PlaneStrain (xx, yy, 2xy); Axisymmetric (rr, zz, thetatheta, 2rz). The
+// normal strains come first, then the engineering shear strains.
+void strainDisplacement(Kinematics k, const IsoparametricPoint& p, DenseMatrix& B) {
+  const int n = static_cast<int>(p.N.size());
+  if (k == Kinematics::ThreeD) {
+    B.resize(6, 3 * n);
+    for (int a = 0; a < n; ++a) {
+      const Point3& g = p.dNdx[a];
+      for (int i = 0; i < 3; ++i) B(i, 3 * a + i) = g[i];
+      for (int s = 0; s < 3; ++s) {  // shear s couples directions i = s, j = s + 1
+        const int i = s, j = (s + 1) % 3;
+        B(3 + s, 3 * a + i) = g[j];
+        B(3 + s, 3 * a + j) = g[i];
+      }
+    }
+    return;
+  }
+  const bool axi = k == Kinematics::Axisymmetric;
+  B.resize(axi ? 4 : 3, 2 * n);
+  const int shear = axi ? 3 : 2;
+  for (int a = 0; a < n; ++a) {
+    const Point3& g = p.dNdx[a];
+    B(0, 2 * a) = g[0];
+    B(1, 2 * a + 1) = g[1];
+    if (axi) B(2, 2 * a) = p.N[a] / p.x[0];
+    B(shear, 2 * a) = g[1];
+    B(shear, 2 * a + 1) = g[0];
+  }
+}
+
+// Isotropic elasticity in the strain order of strainDisplacement: lambda + 2 mu on the normal
+// diagonal, lambda between normal strains, mu on the shear diagonal.
+DenseMatrix elasticity(Kinematics k, const Material& m) {
+  const double E = m.youngsModulus, nu = m.poissonsRatio;
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = m.shearModulus();
+  const int normal = k == Kinematics::PlaneStrain ? 2 : 3;
+  const int size = k == Kinematics::ThreeD ? 6 : (k == Kinematics::PlaneStrain ? 3 : 4);
+  DenseMatrix D(size, size);
+  for (int i = 0; i < size; ++i) {
+    for (int j = 0; j < normal && i < normal; ++j) D(i, j) = lambda;
+    D(i, i) = i < normal ? lambda + 2 * mu : mu;
+  }
+  return D;
+}
+
+class SolidElement : public ElementKernel {
+ public:
+  SolidElement(Topology t, Kinematics k, const Material& m)
+      : topo_(t), kin_(k), mat_(m), D_(elasticity(k, m)) {
+    if (k == Kinematics::ThreeD)
+      comps_ = {DX, DY, DZ};
+    else
+      comps_ = {DX, DY};
+  }
+  int numNodes() const override { return nodeCount(topo_); }
+  const std::vector<int>& components() const override { return comps_; }
+  void stiffness(const std::vector<Point3>& x, DenseMatrix& K) const override;
+  void mass(const std::vector<Point3>& x, MassKind kind, DenseMatrix& M) const override;
+
+ private:
+  DenseMatrix scalarMass(const std::vector<Point3>& x) const;
+
+  Topology topo_;
+  Kinematics kin_;
+  Material mat_;
+  DenseMatrix D_;
+  std::vector<int> comps_;
+};
+
+void SolidElement::stiffness(const std::vector<Point3>& x, DenseMatrix& K) const {
+  validateNodes(topo_, kin_, x);
+  const QuadratureRule& rule = stiffnessRule(topo_, kin_);
+  const int nd = numNodes() * static_cast<int>(comps_.size()), ns = D_.rows();
+  K.resize(nd, nd);
+  IsoparametricPoint p;
+  DenseMatrix B;
+  std::vector<double> DB(size_t(ns) * nd);
+  for (int q = 0; q < rule.size(); ++q) {
+    const double w = volumeWeight(topo_, kin_, x, rule, q, p);
+    strainDisplacement(kin_, p, B);
+    for (int s = 0; s < ns; ++s)
+      for (int j = 0; j < nd; ++j) {
+        double v = 0.0;
+        for (int t = 0; t < ns; ++t) v += D_(s, t) * B(t, j);
+        DB[size_t(s) * nd + j] = v;
+      }
+    for (int i = 0; i < nd; ++i)
+      for (int s = 0; s < ns; ++s) {
+        const double bw = B(s, i) * w;
+        if (bw == 0.0) continue;
+        for (int j = 0; j < nd; ++j) K(i, j) += bw * DB[size_t(s) * nd + j];
+      }
+  }
+}
+
+DenseMatrix SolidElement::scalarMass(const std::vector<Point3>& x) const {
+  validateNodes(topo_, kin_, x);
+  const QuadratureRule& rule = massRule(topo_);
+  const int n = numNodes();
+  DenseMatrix m(n, n);
+  IsoparametricPoint p;
+  for (int q = 0; q < rule.size(); ++q) {
+    const double w = mat_.density * volumeWeight(topo_, kin_, x, rule, q, p);
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) m(a, b) += w * p.N[a] * p.N[b];
+  }
+  return m;
+}
+
+void SolidElement::mass(const std::vector<Point3>& x, MassKind kind, DenseMatrix& M) const {
+  const DenseMatrix m = scalarMass(x);
+  const int n = numNodes(), nc = static_cast<int>(comps_.size());
+  M.resize(n * nc, n * nc);
+  if (kind == MassKind::Consistent) {
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b)
+        for (int i = 0; i < nc; ++i) M(a * nc + i, b * nc + i) = m(a, b);
+    return;
+  }
+  const std::vector<double> l = isQuadratic(topo_) ? hrzLumping(m) : rowSumLumping(m);
+  for (int a = 0; a < n; ++a)
+    for (int i = 0; i < nc; ++i) M(a * nc + i, a * nc + i) = l[a];
+}
+
+}  // namespace
+
+std::unique_ptr<ElementKernel> makeSolidElement(const std::string& topology, Kinematics kinematics,
+                                                const Material& material) {
+  const Topology t = solidTopology(topology);
+  checkKinematics(t, kinematics);
+  checkMaterial(t, material);
+  return std::make_unique<SolidElement>(t, kinematics, material);
+}
+
+double solidElementMeasure(const std::string& topology, Kinematics kinematics,
+                           const std::vector<Point3>& x) {
+  const Topology t = solidTopology(topology);
+  checkKinematics(t, kinematics);
+  validateNodes(t, kinematics, x);
+  const QuadratureRule& rule = massRule(t);
+  IsoparametricPoint p;
+  double v = 0.0;
+  for (int q = 0; q < rule.size(); ++q) v += volumeWeight(t, kinematics, x, rule, q, p);
+  return v;
+}
+
+}  // namespace choc
