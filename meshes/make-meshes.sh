@@ -17,3 +17,5 @@ choc="${1:-$here/../build/choc}"
 # Beyond the reference (input/sdnl111c_accurate.xml): the 3D bars with 400 HEX8 along each.
 "$choc" mesh --dim 3 --axis z --along1 400 --along2 400 --across1 1 --across2 1 \
   --width 0.02 --height 0.02 --gap 1e-5 -o "$here/sdnl111_3d_400.exo"
+# Issue 13's gmsh example: the same bars in TET10 (needs the gmsh command, Debian package gmsh).
+gmsh -3 -order 2 -format msh41 "$here/sdnl111_3d_tet10.geo" -o "$here/sdnl111_3d_tet10.msh" > /dev/null

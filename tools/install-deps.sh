@@ -4,6 +4,7 @@
 set -euo pipefail
 pkgs=(build-essential cmake trilinos-all-dev libptscotch-dev libscotch-dev
       libexodusii-dev libnetcdf-dev openmpi-bin libopenmpi-dev libgtest-dev
+      gmsh libgmsh-dev
       python3 python3-numpy python3-matplotlib python3-netcdf4
       clang libclang-rt-14-dev)  # libFuzzer for tests/reliability (fuzz.sh)
 if [ "${1:-}" = "--with-viz" ]; then

@@ -156,10 +156,13 @@ void ModalAnalysis::writeResults(const RunContext& ctx, const EigenResult& res) 
   std::fclose(f);
   std::filesystem::rename(csv + ".part", csv);
   if (!s_.writeExodus) return;
-  ExodusResultsWriter exo(base + ".exo", model.mesh(), {"DISP_X", "DISP_Y", "DISP_Z"}, {"EIGENVALUE"});
+  const std::vector<int> comps = spatialComponents(model.mesh().dimension);
+  std::vector<std::string> names;
+  for (int c : comps) names.push_back(std::string("DISP_") + "XYZ"[c]);
+  ExodusResultsWriter exo(base + ".exo", model.mesh(), names, {"EIGENVALUE"});
   for (int k = 0; k < s_.numModes; ++k) {
     std::vector<std::vector<double>> nodal;
-    for (int c : {DX, DY, DZ}) nodal.push_back(nodalComponent(shapes[k], model.dofs(), c));
+    for (int c : comps) nodal.push_back(nodalComponent(shapes[k], model.dofs(), c));
     exo.writeStep(frequencyOf(res.eigenvalues[k]), nodal, {res.eigenvalues[k]});
   }
   exo.finish();

@@ -12,6 +12,7 @@
 #include "core/Errors.hpp"
 #include "mesh/BarImpactMesh.hpp"
 #include "mesh/ExodusMeshWriter.hpp"
+#include "mesh/MeshFile.hpp"
 
 namespace choc {
 
@@ -116,6 +117,7 @@ std::string meshCommandUsage() {
   const BarImpactOptions d;
   std::ostringstream s;
   s << "usage: choc mesh [options] -o FILE.exo\n"
+       "       choc mesh import MESH.msh -o FILE.exo   (any mesh choc reads, as Exodus II)\n"
        "Writes the two-bar impact mesh: bar 1 (POU1, A..B) from s = gap to gap + length1,\n"
        "bar 2 (POU2, C..D) from s = 0 to -length2, s along the axis.\n"
        "  --dim 1|3        1: BEAM2 line elements, 3: HEX8 bricks (default "
@@ -141,7 +143,47 @@ std::string meshCommandUsage() {
   return s.str();
 }
 
+namespace {
+
+// Writes `mesh` to `output` on rank 0 and prints the one-line summary.
+int writeMesh(const Mesh& mesh, const std::string& output) {
+  if (mpiRank() != 0) return 0;
+  try {
+    writeExodusMesh(mesh, output);
+  } catch (const std::exception& e) {
+    throwInput(kCommand, "-o", output, std::string("cannot write the file (") + e.what() + ")",
+               "check that the directory exists and is writable");
+  }
+  std::cout << summary(output, mesh) << std::endl;
+  return 0;
+}
+
+// choc mesh import MESH -o FILE.exo: any mesh choc reads, written as Exodus II.
+int runMeshImport(const std::vector<std::string>& args) {
+  const std::string cmd = "choc mesh import";
+  std::string input, output;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "-o" || args[i] == "--output") {
+      if (i + 1 >= args.size()) throwInput(cmd, args[i], "", "needs a value", "add -o FILE.exo");
+      output = args[++i];
+    } else if (!args[i].empty() && args[i][0] == '-') {
+      throwInput(cmd, args[i], "", "unknown option", "usage: choc mesh import MESH.msh -o FILE.exo");
+    } else if (input.empty()) {
+      input = args[i];
+    } else {
+      throwInput(cmd, "", args[i], "one mesh file expected, got '" + input + "' and '" + args[i] + "'");
+    }
+  }
+  if (input.empty()) throwInput(cmd, "", "", "no mesh file given", "usage: choc mesh import MESH.msh -o FILE.exo");
+  if (output.empty()) throwInput(cmd, "-o", "", "no output file given", "add -o FILE.exo");
+  return writeMesh(readMeshFile(input), output);
+}
+
+}  // namespace
+
 int runMeshCommand(const std::vector<std::string>& args) {
+  if (!args.empty() && args[0] == "import")
+    return runMeshImport(std::vector<std::string>(args.begin() + 1, args.end()));
   BarImpactOptions options;
   std::string output;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -171,16 +213,7 @@ int runMeshCommand(const std::vector<std::string>& args) {
   validateBarImpactOptions(options);  // option errors first, then the missing output
   if (output.empty())
     throwInput(kCommand, "-o", "", "no output file given", "add -o FILE.exo");
-  const Mesh mesh = generateBarImpactMesh(options);
-  if (mpiRank() != 0) return 0;
-  try {
-    writeExodusMesh(mesh, output);
-  } catch (const std::exception& e) {
-    throwInput(kCommand, "-o", output, std::string("cannot write the file (") + e.what() + ")",
-               "check that the directory exists and is writable");
-  }
-  std::cout << summary(output, mesh) << std::endl;
-  return 0;
+  return writeMesh(generateBarImpactMesh(options), output);
 }
 
 }  // namespace choc

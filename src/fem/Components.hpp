@@ -6,6 +6,12 @@
 namespace choc {
 
 enum Component : int { DX = 0, DY = 1, DZ = 2, DRX = 3, DRY = 4, DRZ = 5 };
+
+// The components of a vector field written to Exodus: DX, DY for a 2D mesh (ParaView then
+// shows it as 2D), DX, DY, DZ otherwise.
+inline std::vector<int> spatialComponents(int meshDimension) {
+  return meshDimension == 2 ? std::vector<int>{DX, DY} : std::vector<int>{DX, DY, DZ};
+}
 constexpr int kNumComponents = 6;
 
 const char* componentName(int c);                 // "DX" ...

@@ -20,6 +20,12 @@ class ElementKernel {
   virtual const std::vector<int>& components() const = 0;
   virtual void stiffness(const std::vector<Point3>& x, DenseMatrix& K) const = 0;
   virtual void mass(const std::vector<Point3>& x, MassKind kind, DenseMatrix& M) const = 0;
+  // Throws std::invalid_argument (naming the element type and the point) when the element
+  // with nodes x is inverted or degenerate. The default computes the stiffness.
+  virtual void checkGeometry(const std::vector<Point3>& x) const {
+    DenseMatrix K;
+    stiffness(x, K);
+  }
 };
 
 }  // namespace choc

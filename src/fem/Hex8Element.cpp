@@ -79,6 +79,11 @@ class Hex8Element : public ElementKernel {
   int numNodes() const override { return 8; }
   const std::vector<int>& components() const override { return comps_; }
 
+  void checkGeometry(const std::vector<Point3>& x) const override {
+    double N[8];
+    for (const Point3& xi : hex8GaussPoints()) jacobian(x, xi, N, nullptr);
+  }
+
   void stiffness(const std::vector<Point3>& x, DenseMatrix& K) const override {
     const double E = mat_.youngsModulus, nu = mat_.poissonsRatio;
     const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));

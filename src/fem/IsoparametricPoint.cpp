@@ -36,7 +36,7 @@ void inverse(int dim, const Matrix3 J, double det, Matrix3 Ji) {
 }
 
 // Fills p.N, p.x, dN/dxi and J; returns det J.
-double jacobian(Topology t, const std::vector<Point3>& x, const Point3& xi, IsoparametricPoint& p,
+double jacobian(SolidShape t, const std::vector<Point3>& x, const Point3& xi, IsoparametricPoint& p,
                 std::vector<Point3>& dN, Matrix3 J) {
   const int n = nodeCount(t), dim = parametricDimension(t);
   if (static_cast<int>(x.size()) != n)
@@ -54,7 +54,7 @@ double jacobian(Topology t, const std::vector<Point3>& x, const Point3& xi, Isop
 
 }  // namespace
 
-void throwInverted(Topology t, double det, const Point3& xi) {
+void throwInverted(SolidShape t, double det, const Point3& xi) {
   std::ostringstream msg;
   msg << "inverted or degenerate " << topologyName(t) << " element: Jacobian determinant " << det
       << " <= 0 at natural point " << naturalPointText(t, xi)
@@ -62,7 +62,7 @@ void throwInverted(Topology t, double det, const Point3& xi) {
   throw std::invalid_argument(msg.str());
 }
 
-std::string naturalPointText(Topology t, const Point3& xi) {
+std::string naturalPointText(SolidShape t, const Point3& xi) {
   std::ostringstream s;
   s << "(" << xi[0] << ", " << xi[1];
   if (parametricDimension(t) == 3) s << ", " << xi[2];
@@ -70,14 +70,14 @@ std::string naturalPointText(Topology t, const Point3& xi) {
   return s.str();
 }
 
-double jacobianDeterminant(Topology t, const std::vector<Point3>& x, const Point3& xi) {
+double jacobianDeterminant(SolidShape t, const std::vector<Point3>& x, const Point3& xi) {
   IsoparametricPoint p;
   std::vector<Point3> dN;
   Matrix3 J = {};
   return jacobian(t, x, xi, p, dN, J);
 }
 
-void evaluateIsoparametric(Topology t, const std::vector<Point3>& x, const Point3& xi,
+void evaluateIsoparametric(SolidShape t, const std::vector<Point3>& x, const Point3& xi,
                            IsoparametricPoint& p) {
   std::vector<Point3> dN;
   Matrix3 J = {};

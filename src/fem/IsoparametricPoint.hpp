@@ -20,16 +20,16 @@ struct IsoparametricPoint {
 // xi. Throws std::invalid_argument "inverted or degenerate <TOPO> element: Jacobian
 // determinant <value> <= 0 at natural point (...)" when det J <= 0, and when x has the wrong
 // number of nodes.
-void evaluateIsoparametric(Topology t, const std::vector<Point3>& x, const Point3& xi,
+void evaluateIsoparametric(SolidShape t, const std::vector<Point3>& x, const Point3& xi,
                            IsoparametricPoint& p);
 
 // det J at xi without the sign check (throws only for a wrong node count).
-double jacobianDeterminant(Topology t, const std::vector<Point3>& x, const Point3& xi);
+double jacobianDeterminant(SolidShape t, const std::vector<Point3>& x, const Point3& xi);
 
 // Throws the "inverted or degenerate <TOPO> element: ..." std::invalid_argument.
-[[noreturn]] void throwInverted(Topology t, double det, const Point3& xi);
+[[noreturn]] void throwInverted(SolidShape t, double det, const Point3& xi);
 
 // "(xi, eta)" or "(xi, eta, zeta)" as in the error messages.
-std::string naturalPointText(Topology t, const Point3& xi);
+std::string naturalPointText(SolidShape t, const Point3& xi);
 
 }  // namespace choc

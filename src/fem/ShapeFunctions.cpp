@@ -15,7 +15,7 @@ namespace {
 using Edges = std::vector<std::pair<int, int>>;  // 0-based corner pairs, Exodus order
 
 struct TopologyInfo {
-  Topology topology;
+  SolidShape topology;
   const char* name;
   int dim;
   bool simplex;
@@ -32,19 +32,19 @@ const Edges kHexEdges = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5},
 
 const std::vector<TopologyInfo>& table() {
   static const std::vector<TopologyInfo> t = {
-      {Topology::Tet4, "TET4", 3, true, 4, {}},
-      {Topology::Tet10, "TET10", 3, true, 4, kTetEdges},
-      {Topology::Hex8, "HEX8", 3, false, 8, {}},
-      {Topology::Hex20, "HEX20", 3, false, 8, kHexEdges},
-      {Topology::Tri3, "TRI3", 2, true, 3, {}},
-      {Topology::Tri6, "TRI6", 2, true, 3, kTriEdges},
-      {Topology::Quad4, "QUAD4", 2, false, 4, {}},
-      {Topology::Quad8, "QUAD8", 2, false, 4, kQuadEdges},
+      {SolidShape::Tet4, "TET4", 3, true, 4, {}},
+      {SolidShape::Tet10, "TET10", 3, true, 4, kTetEdges},
+      {SolidShape::Hex8, "HEX8", 3, false, 8, {}},
+      {SolidShape::Hex20, "HEX20", 3, false, 8, kHexEdges},
+      {SolidShape::Tri3, "TRI3", 2, true, 3, {}},
+      {SolidShape::Tri6, "TRI6", 2, true, 3, kTriEdges},
+      {SolidShape::Quad4, "QUAD4", 2, false, 4, {}},
+      {SolidShape::Quad8, "QUAD8", 2, false, 4, kQuadEdges},
   };
   return t;
 }
 
-const TopologyInfo& info(Topology t) { return table().at(static_cast<size_t>(t)); }
+const TopologyInfo& info(SolidShape t) { return table().at(static_cast<size_t>(t)); }
 
 std::string upper(std::string s) {
   for (char& ch : s) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
@@ -145,15 +145,15 @@ std::vector<std::string> solidTopologies() {
   return names;
 }
 
-const char* topologyName(Topology t) { return info(t).name; }
+const char* topologyName(SolidShape t) { return info(t).name; }
 
-bool findSolidTopology(const std::string& name, Topology& topology) {
-  static const std::vector<std::pair<const char*, Topology>> aliases = {
-      {"TETRA", Topology::Tet4},    {"TETRA4", Topology::Tet4},   {"TET4", Topology::Tet4},
-      {"TETRA10", Topology::Tet10}, {"TET10", Topology::Tet10},   {"HEX", Topology::Hex8},
-      {"HEX8", Topology::Hex8},     {"HEX20", Topology::Hex20},   {"TRI", Topology::Tri3},
-      {"TRI3", Topology::Tri3},     {"TRIANGLE", Topology::Tri3}, {"TRI6", Topology::Tri6},
-      {"QUAD", Topology::Quad4},    {"QUAD4", Topology::Quad4},   {"QUAD8", Topology::Quad8}};
+bool findSolidTopology(const std::string& name, SolidShape& topology) {
+  static const std::vector<std::pair<const char*, SolidShape>> aliases = {
+      {"TETRA", SolidShape::Tet4},    {"TETRA4", SolidShape::Tet4},   {"TET4", SolidShape::Tet4},
+      {"TETRA10", SolidShape::Tet10}, {"TET10", SolidShape::Tet10},   {"HEX", SolidShape::Hex8},
+      {"HEX8", SolidShape::Hex8},     {"HEX20", SolidShape::Hex20},   {"TRI", SolidShape::Tri3},
+      {"TRI3", SolidShape::Tri3},     {"TRIANGLE", SolidShape::Tri3}, {"TRI6", SolidShape::Tri6},
+      {"QUAD", SolidShape::Quad4},    {"QUAD4", SolidShape::Quad4},   {"QUAD8", SolidShape::Quad8}};
   const std::string key = upper(name);
   for (const auto& [alias, t] : aliases)
     if (key == alias) {
@@ -163,8 +163,8 @@ bool findSolidTopology(const std::string& name, Topology& topology) {
   return false;
 }
 
-Topology solidTopology(const std::string& name) {
-  Topology t;
+SolidShape solidTopology(const std::string& name) {
+  SolidShape t;
   if (findSolidTopology(name, t)) return t;
   std::string list;
   for (const std::string& s : solidTopologies()) list += (list.empty() ? "" : ", ") + s;
@@ -173,12 +173,12 @@ Topology solidTopology(const std::string& name) {
       "' is not a supported continuum (solid) topology; supported: " + list);
 }
 
-int nodeCount(Topology t) { return info(t).nodes(); }
-int parametricDimension(Topology t) { return info(t).dim; }
-bool isQuadratic(Topology t) { return !info(t).edges.empty(); }
-int cornerCount(Topology t) { return info(t).corners; }
+int nodeCount(SolidShape t) { return info(t).nodes(); }
+int parametricDimension(SolidShape t) { return info(t).dim; }
+bool isQuadratic(SolidShape t) { return !info(t).edges.empty(); }
+int cornerCount(SolidShape t) { return info(t).corners; }
 
-const std::vector<Point3>& nodeNaturalCoordinates(Topology t) {
+const std::vector<Point3>& nodeNaturalCoordinates(SolidShape t) {
   static const std::vector<std::vector<Point3>> coords = [] {
     std::vector<std::vector<Point3>> c;
     for (const TopologyInfo& ti : table()) c.push_back(naturalCoordinates(ti));
@@ -187,7 +187,7 @@ const std::vector<Point3>& nodeNaturalCoordinates(Topology t) {
   return coords.at(static_cast<size_t>(t));
 }
 
-void shapeFunctions(Topology t, const Point3& xi, std::vector<double>& N, std::vector<Point3>& dN) {
+void shapeFunctions(SolidShape t, const Point3& xi, std::vector<double>& N, std::vector<Point3>& dN) {
   const TopologyInfo& ti = info(t);
   N.resize(ti.nodes());
   dN.resize(ti.nodes());
@@ -197,38 +197,38 @@ void shapeFunctions(Topology t, const Point3& xi, std::vector<double>& N, std::v
     boxNodeShape(ti.dim, !ti.edges.empty(), c[a], xi, N[a], dN[a]);
 }
 
-const QuadratureRule& stiffnessRule(Topology t, Kinematics kinematics) {
+const QuadratureRule& stiffnessRule(SolidShape t, Kinematics kinematics) {
   const bool axi = kinematics == Kinematics::Axisymmetric;
   switch (t) {
-    case Topology::Tet4:
+    case SolidShape::Tet4:
       return tetrahedronRule(1);
-    case Topology::Tet10:
+    case SolidShape::Tet10:
       return tetrahedronRule(4);
-    case Topology::Tri3:
+    case SolidShape::Tri3:
       return axi ? triangleRule(7) : triangleRule(1);
-    case Topology::Tri6:
+    case SolidShape::Tri6:
       return axi ? triangleRule(7) : triangleRule(3);
     default:
       return massRule(t);  // the boxes use the same Gauss product for both
   }
 }
 
-const QuadratureRule& massRule(Topology t) {
+const QuadratureRule& massRule(SolidShape t) {
   switch (t) {
-    case Topology::Tet4:
+    case SolidShape::Tet4:
       return tetrahedronRule(4);
-    case Topology::Tet10:
+    case SolidShape::Tet10:
       return tetrahedronRule(14);
-    case Topology::Hex8:
+    case SolidShape::Hex8:
       return gaussBoxRule(3, 2);
-    case Topology::Hex20:
+    case SolidShape::Hex20:
       return gaussBoxRule(3, 3);
-    case Topology::Tri3:
-    case Topology::Tri6:
+    case SolidShape::Tri3:
+    case SolidShape::Tri6:
       return triangleRule(7);
-    case Topology::Quad4:
+    case SolidShape::Quad4:
       return gaussBoxRule(2, 2);
-    case Topology::Quad8:
+    case SolidShape::Quad8:
       return gaussBoxRule(2, 3);
   }
   throw std::invalid_argument("massRule: unknown topology");

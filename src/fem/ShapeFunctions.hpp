@@ -44,34 +44,34 @@
 
 namespace choc {
 
-enum class Topology { Tet4, Tet10, Hex8, Hex20, Tri3, Tri6, Quad4, Quad8 };
+enum class SolidShape { Tet4, Tet10, Hex8, Hex20, Tri3, Tri6, Quad4, Quad8 };
 
 // Canonical Exodus names of the supported continuum topologies: TET4 TET10 HEX8 HEX20 TRI3
 // TRI6 QUAD4 QUAD8.
 std::vector<std::string> solidTopologies();
-const char* topologyName(Topology t);  // canonical name
+const char* topologyName(SolidShape t);  // canonical name
 
 // Case-insensitive lookup by an Exodus element type name, with the aliases Exodus writers
 // use: TETRA/TETRA4/TET4, TETRA10/TET10, HEX/HEX8, HEX20, TRI/TRI3/TRIANGLE, TRI6,
 // QUAD/QUAD4, QUAD8. Shells (SHELL4, ...) and beams are not solids. Returns false when the
 // name is not a supported solid.
-bool findSolidTopology(const std::string& name, Topology& topology);
+bool findSolidTopology(const std::string& name, SolidShape& topology);
 // As findSolidTopology; throws std::invalid_argument naming the supported topologies.
-Topology solidTopology(const std::string& name);
+SolidShape solidTopology(const std::string& name);
 
-int nodeCount(Topology t);
-int parametricDimension(Topology t);  // 3 for TET/HEX, 2 for TRI/QUAD
-bool isQuadratic(Topology t);         // TET10 HEX20 TRI6 QUAD8
-int cornerCount(Topology t);          // the vertices: nodes 1..cornerCount(t)
+int nodeCount(SolidShape t);
+int parametricDimension(SolidShape t);  // 3 for TET/HEX, 2 for TRI/QUAD
+bool isQuadratic(SolidShape t);         // TET10 HEX20 TRI6 QUAD8
+int cornerCount(SolidShape t);          // the vertices: nodes 1..cornerCount(t)
 
 // Natural coordinates of the nodes (unused coordinates zero).
-const std::vector<Point3>& nodeNaturalCoordinates(Topology t);
+const std::vector<Point3>& nodeNaturalCoordinates(SolidShape t);
 
 // Shape functions N[a] and their derivatives dN[a][i] = dN_a/dxi_i at the natural point xi
 // (components beyond the parametric dimension are zero). Resizes N and dN to nodeCount(t).
-void shapeFunctions(Topology t, const Point3& xi, std::vector<double>& N, std::vector<Point3>& dN);
+void shapeFunctions(SolidShape t, const Point3& xi, std::vector<double>& N, std::vector<Point3>& dN);
 
-const QuadratureRule& stiffnessRule(Topology t, Kinematics kinematics);
-const QuadratureRule& massRule(Topology t);
+const QuadratureRule& stiffnessRule(SolidShape t, Kinematics kinematics);
+const QuadratureRule& massRule(SolidShape t);
 
 }  // namespace choc

@@ -18,7 +18,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-void checkKinematics(Topology t, Kinematics k) {
+void checkKinematics(SolidShape t, Kinematics k) {
   const bool threeD = parametricDimension(t) == 3;
   if (threeD == (k == Kinematics::ThreeD)) return;
   std::ostringstream msg;
@@ -28,7 +28,7 @@ void checkKinematics(Topology t, Kinematics k) {
   throw std::invalid_argument(msg.str());
 }
 
-void checkMaterial(Topology t, const Material& m) {
+void checkMaterial(SolidShape t, const Material& m) {
   auto fail = [t](const char* what, double value) {
     std::ostringstream msg;
     msg << topologyName(t) << " element: " << what << ", got " << value;
@@ -40,7 +40,7 @@ void checkMaterial(Topology t, const Material& m) {
   if (!(m.density >= 0)) fail("density must be >= 0", m.density);
 }
 
-void checkAxisymmetricNodes(Topology t, const std::vector<Point3>& x) {
+void checkAxisymmetricNodes(SolidShape t, const std::vector<Point3>& x) {
   for (size_t a = 0; a < x.size(); ++a)
     if (!(x[a][0] >= 0.0)) {
       std::ostringstream msg;
@@ -54,7 +54,7 @@ void checkAxisymmetricNodes(Topology t, const std::vector<Point3>& x) {
 // topologies det J at the corner nodes. A folded quadratic element (two corners swapped, say)
 // can have det J > 0 at every quadrature point but not at its corners. det J = 0 at a corner
 // (collapsed or quarter-point elements) is accepted up to round-off.
-void validateNodes(Topology t, Kinematics k, const std::vector<Point3>& x) {
+void validateNodes(SolidShape t, Kinematics k, const std::vector<Point3>& x) {
   if (k == Kinematics::Axisymmetric) checkAxisymmetricNodes(t, x);
   if (!isQuadratic(t)) return;
   const std::vector<Point3>& xi = nodeNaturalCoordinates(t);
@@ -69,7 +69,7 @@ void validateNodes(Topology t, Kinematics k, const std::vector<Point3>& x) {
 }
 
 // Evaluates the map at quadrature point q of `rule` and returns w_q dV_q.
-double volumeWeight(Topology t, Kinematics k, const std::vector<Point3>& x,
+double volumeWeight(SolidShape t, Kinematics k, const std::vector<Point3>& x,
                     const QuadratureRule& rule, int q, IsoparametricPoint& p) {
   evaluateIsoparametric(t, x, rule.points[q], p);
   double w = rule.weights[q] * p.detJ;
@@ -133,7 +133,7 @@ DenseMatrix elasticity(Kinematics k, const Material& m) {
 
 class SolidElement : public ElementKernel {
  public:
-  SolidElement(Topology t, Kinematics k, const Material& m)
+  SolidElement(SolidShape t, Kinematics k, const Material& m)
       : topo_(t), kin_(k), mat_(m), D_(elasticity(k, m)) {
     if (k == Kinematics::ThreeD)
       comps_ = {DX, DY, DZ};
@@ -148,7 +148,7 @@ class SolidElement : public ElementKernel {
  private:
   DenseMatrix scalarMass(const std::vector<Point3>& x) const;
 
-  Topology topo_;
+  SolidShape topo_;
   Kinematics kin_;
   Material mat_;
   DenseMatrix D_;
@@ -214,7 +214,7 @@ void SolidElement::mass(const std::vector<Point3>& x, MassKind kind, DenseMatrix
 
 std::unique_ptr<ElementKernel> makeSolidElement(const std::string& topology, Kinematics kinematics,
                                                 const Material& material) {
-  const Topology t = solidTopology(topology);
+  const SolidShape t = solidTopology(topology);
   checkKinematics(t, kinematics);
   checkMaterial(t, material);
   return std::make_unique<SolidElement>(t, kinematics, material);
@@ -222,7 +222,7 @@ std::unique_ptr<ElementKernel> makeSolidElement(const std::string& topology, Kin
 
 double solidElementMeasure(const std::string& topology, Kinematics kinematics,
                            const std::vector<Point3>& x) {
-  const Topology t = solidTopology(topology);
+  const SolidShape t = solidTopology(topology);
   checkKinematics(t, kinematics);
   validateNodes(t, kinematics, x);
   const QuadratureRule& rule = massRule(t);

@@ -103,7 +103,8 @@ std::string runInChildProcess(const std::string& path, const std::string& librar
                                   ", " + ::strsignal(WTERMSIG(status)) + ")"
                             : "failed (exit code " + std::to_string(WEXITSTATUS(status)) + ")";
   throwInput(path, "", "", "the " + library + " library " + how + " reading this file: it is corrupt",
-             "check that the file is a complete Exodus II mesh");
+             library == "gmsh" ? "check that the file is a complete gmsh mesh (.msh, format 4 or 2.2)"
+                               : "check that the file is a complete Exodus II mesh");
 }
 
 }  // namespace choc

@@ -115,7 +115,10 @@ class MeshFileWriter {
           (!empty && block.connectivity.size() % static_cast<std::size_t>(block.nodesPerElement)))
         throw std::invalid_argument("writing " + path_ + ": element block '" + block.name +
                                     "' has an inconsistent connectivity");
-      const std::string type = block.topology.empty() ? std::string("NULL") : block.topology;
+      // Exodus' own names for tetrahedra (TETRA4, TETRA10): what ParaView's reader expects.
+      const std::string type = block.topology.empty()              ? std::string("NULL")
+                               : block.topology.rfind("TET", 0) == 0 ? "TETRA" + block.topology.substr(3)
+                                                                     : block.topology;
       check(ex_put_block(id_, EX_ELEM_BLOCK, blockIds[b], type.c_str(),
                          block.numElements(), block.nodesPerElement, 0, 0, 0),
             "writing element block '" + block.name + "'");

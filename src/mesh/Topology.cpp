@@ -12,8 +12,11 @@ namespace {
 using Sides = std::vector<std::vector<int>>;
 
 Topology make(const std::string& name, int dim, int nodes, const Sides& sides1,
-              const std::vector<std::string>& sideTopo) {
+              const std::vector<std::string>& sideTopo,
+              const std::vector<std::pair<int, int>>& midEdges = {}) {
   Topology t;
+  t.midEdges = midEdges;
+  t.numCorners = nodes - static_cast<int>(midEdges.size());
   t.name = name;
   t.dimension = dim;
   t.numNodes = nodes;
@@ -35,7 +38,7 @@ const std::map<std::string, Topology>& table() {
     add(make("TET4", 3, 4, {{1, 2, 4}, {2, 3, 4}, {1, 4, 3}, {1, 3, 2}}, {"TRI3"}));
     add(make("TET10", 3, 10,
              {{1, 2, 4, 5, 9, 8}, {2, 3, 4, 6, 10, 9}, {1, 4, 3, 8, 10, 7}, {1, 3, 2, 7, 6, 5}},
-             {"TRI6"}));
+             {"TRI6"}, {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}}));
     add(make("HEX8", 3, 8,
              {{1, 2, 6, 5}, {2, 3, 7, 6}, {3, 4, 8, 7}, {1, 5, 8, 4}, {1, 4, 3, 2}, {5, 6, 7, 8}},
              {"QUAD4"}));
@@ -46,11 +49,13 @@ const std::map<std::string, Topology>& table() {
               {1, 5, 8, 4, 13, 20, 16, 12},
               {1, 4, 3, 2, 12, 11, 10, 9},
               {5, 6, 7, 8, 17, 18, 19, 20}},
-             {"QUAD8"}));
+             {"QUAD8"},
+             {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5}, {2, 6}, {3, 7}, {4, 5}, {5, 6}, {6, 7}, {7, 4}}));
     add(make("TRI3", 2, 3, {{1, 2}, {2, 3}, {3, 1}}, {"LINE2"}));
-    add(make("TRI6", 2, 6, {{1, 2, 4}, {2, 3, 5}, {3, 1, 6}}, {"LINE3"}));
+    add(make("TRI6", 2, 6, {{1, 2, 4}, {2, 3, 5}, {3, 1, 6}}, {"LINE3"}, {{0, 1}, {1, 2}, {2, 0}}));
     add(make("QUAD4", 2, 4, {{1, 2}, {2, 3}, {3, 4}, {4, 1}}, {"LINE2"}));
-    add(make("QUAD8", 2, 8, {{1, 2, 5}, {2, 3, 6}, {3, 4, 7}, {4, 1, 8}}, {"LINE3"}));
+    add(make("QUAD8", 2, 8, {{1, 2, 5}, {2, 3, 6}, {3, 4, 7}, {4, 1, 8}}, {"LINE3"},
+             {{0, 1}, {1, 2}, {2, 3}, {3, 0}}));
     return m;
   }();
   return t;

@@ -5,6 +5,7 @@
 // QUAD8), sides of a planar element edges (LINE2, LINE3), sides of a beam its end points.
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace choc {
@@ -16,6 +17,8 @@ struct Topology {
   std::string sideTopology;  // POINT, LINE2, LINE3, TRI3, TRI6, QUAD4, QUAD8 (per side below)
   std::vector<std::vector<int>> sides;  // side k (1-based) -> sides[k-1]: 0-based local nodes
   std::vector<std::string> sideTopologies;  // per side (a solid's sides may differ)
+  int numCorners = 0;                        // the first nodes; the others are mid-edge nodes
+  std::vector<std::pair<int, int>> midEdges;  // node numCorners + i sits between these corners
   int numSides() const { return static_cast<int>(sides.size()); }
 };
 

@@ -18,8 +18,9 @@ ExodusObserver::ExodusObserver(const std::string& path, const Model& model,
 
 void ExodusObserver::begin(TransientView& view) {
   if (!isRootRank()) return;
-  std::vector<std::string> nodal = {"DISP_X", "DISP_Y", "DISP_Z", "VEL_X", "VEL_Y",
-                                    "VEL_Z",  "ACC_X",  "ACC_Y",  "ACC_Z"};
+  std::vector<std::string> nodal;
+  for (const char* field : {"DISP_", "VEL_", "ACC_"})
+    for (int c : spatialComponents(model_.mesh().dimension)) nodal.push_back(field + std::string(1, "XYZ"[c - DX]));
   std::vector<std::string> globals = {"KINETIC_ENERGY", "STRAIN_ENERGY", "CONTACT_ENERGY",
                                       "TOTAL_ENERGY"};
   if (const InteractionOutput* io = view.interactions()) {
@@ -38,7 +39,7 @@ void ExodusObserver::step(TransientView& view) {
   const InteractionOutput* io = view.interactions();
   std::vector<std::vector<double>> nodal;
   for (const auto* X : {&U, &V, &A})
-    for (int c : {DX, DY, DZ}) nodal.push_back(nodalComponent(*X, dofs, c));
+    for (int c : spatialComponents(model_.mesh().dimension)) nodal.push_back(nodalComponent(*X, dofs, c));
   const EnergyTerms& e = history_.lastEnergies();
   std::vector<double> globals = {e.kinetic, e.strain, e.contact, e.total()};
   if (io) {

@@ -8,11 +8,17 @@
 #include "fem/Beam2Element.hpp"
 #include "fem/Components.hpp"
 #include "fem/Hex8Element.hpp"
+#include "fem/NodePartition.hpp"
+#include "core/Format.hpp"
+#include "core/Log.hpp"
+#include <chrono>
+#include "fem/SolidElement.hpp"
+#include "mesh/Topology.hpp"
 #include "core/Errors.hpp"
 #include "input/Validation.hpp"
 #include "input/Vector3.hpp"
 #include "input/XmlInput.hpp"
-#include "mesh/ExodusReader.hpp"
+#include "mesh/MeshFile.hpp"
 
 namespace choc {
 
@@ -49,12 +55,13 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
   const std::string meshFile =
       resolveBeside(inputFile, input.sublist("Mesh").get<std::string>("File"));
   try {
-    mesh_ = readExodusMesh(meshFile);
+    mesh_ = readMeshFile(meshFile);
   } catch (const InputError& e) {
     throwInput(file, "Mesh/File", input.sublist("Mesh").get<std::string>("File"),
                std::string("cannot use the mesh: ") + e.what());
   }
   const Teuchos::ParameterList& model = input.sublist("Model");
+  kinematics_ = kinematicsFromName(model.get<std::string>("Kinematics"));
 
   // Materials
   const Teuchos::ParameterList& mats = model.sublist("Materials");
@@ -94,18 +101,9 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
     m.density = mp.get<double>("Density");
     blockMaterial_[b] = m;
     physics[b].mass = bp.get<std::string>("Mass") == "lumped" ? MassKind::Lumped : MassKind::Consistent;
-    if (blk.topology == "BEAM2") {
-      try {
-        physics[b].kernel = makeBeam2(m, beamSection(bp.sublist("Section"), file, path + "/Section"));
-      } catch (const std::invalid_argument& e) {
-        throwInput(file, path + "/Section", "", e.what());
-      }
-    } else if (blk.topology == "HEX8") {
-      physics[b].kernel = makeHex8(m);
-    } else {
-      throwInput(file, path, blk.topology, "element topology not supported", "use BEAM2 or HEX8");
-    }
+    physics[b].kernel = blockKernel(blk, kinematics_, m, bp, file);
   }
+  checkElementGeometry(physics, input.sublist("Mesh").get<std::string>("File"));
 
   // Free components: carried by an element, active, not fixed by a Dirichlet condition.
   std::vector<std::uint8_t> mask = Assembler::carriedComponents(mesh_, physics);
@@ -131,7 +129,7 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
     }
     for (int n : ns.nodes) mask[n] &= std::uint8_t(~fixed);
   }
-  dofs_ = std::make_unique<DofMap>(std::move(mask), comm_->getSize(), comm_->getRank());
+  buildDofMap(std::move(mask), model.get<std::string>("Partition"));
   if (dofs_->numGlobal() == 0)
     throwInput(file, "Model/Active Components", model.get<std::string>("Active Components"),
                "the model has no unknowns", "check the active components and Dirichlet sets");
@@ -140,6 +138,77 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
   } catch (const std::invalid_argument& e) {
     throwInput(file, "Mesh/File", meshFile, e.what());
   }
+}
+
+// The element of a block: beams and HEX8 by their own kernels (3D), every other solid by the
+// isoparametric library; a block that does not fit the kinematics is an input error.
+std::shared_ptr<const ElementKernel> Model::blockKernel(const ElementBlock& blk, Kinematics kin,
+                                                        const Material& m,
+                                                        const Teuchos::ParameterList& bp,
+                                                        const std::string& file) const {
+  const std::string path = "Model/Blocks/" + blk.name;
+  const Topology* topo = findTopology(blk.topology);
+  const int dim = topo ? topo->dimension : 0;
+  if ((kin == Kinematics::ThreeD) != (dim != 2))
+    throwInput(file, "Model/Kinematics", toString(kin),
+               "block '" + blk.name + "' has " + blk.topology + " elements" +
+                   (dim == 2 ? " (a 2D mesh)" : ""),
+               dim == 2 ? "set 'Kinematics' to 'plane strain' or 'axisymmetric'"
+                        : "give a 2D mesh (TRI3, TRI6, QUAD4, QUAD8) or set 'Kinematics' to '3D'");
+  try {
+    if (blk.topology == "BEAM2") return makeBeam2(m, beamSection(bp.sublist("Section"), file, path + "/Section"));
+    if (blk.topology == "HEX8") return makeHex8(m);
+    return makeSolidElement(blk.topology, kin, m);
+  } catch (const std::invalid_argument& e) {
+    throwInput(file, blk.topology == "BEAM2" ? path + "/Section" : path, "", e.what());
+  }
+}
+
+// Every element's Jacobian at its quadrature points, before anything is assembled: an
+// inverted or degenerate element is named (block, element number in the file) in one line.
+void Model::checkElementGeometry(const std::vector<BlockPhysics>& physics,
+                                 const std::string& meshParameter) const {
+  int first = 0;
+  for (size_t b = 0; b < mesh_.blocks.size(); ++b) {
+    const ElementBlock& blk = mesh_.blocks[b];
+    if (!physics[b].kernel) continue;
+    std::vector<Point3> x(blk.nodesPerElement);
+    for (int e = 0; e < blk.numElements(); ++e) {
+      for (int k = 0; k < blk.nodesPerElement; ++k) x[k] = mesh_.coords[blk.connectivity[size_t(e) * blk.nodesPerElement + k]];
+      try {
+        physics[b].kernel->checkGeometry(x);
+      } catch (const std::invalid_argument& err) {
+        throwInput(inputFile_, "Mesh/File", meshParameter,
+                   "block '" + blk.name + "', element " + std::to_string(first + e + 1) + ": " + err.what());
+      }
+    }
+    first += blk.numElements();
+  }
+}
+
+// The DOF map on the ranks: Zoltan2 RCB parts (the default), or ranges of the mesh's
+// numbering. The log gives the partition's quality.
+void Model::buildDofMap(std::vector<std::uint8_t> mask, const std::string& method) {
+  const int p = comm_->getSize();
+  if (method == "numbering" || p == 1) {
+    dofs_ = std::make_unique<DofMap>(std::move(mask), p, comm_->getRank());
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  NodePartition part;
+  try {
+    part = partitionNodes(mesh_, mask, p);
+  } catch (const std::exception& e) {
+    throw NumericalError(std::string("partition of the nodes: ") + e.what());
+  }
+  const PartitionQuality q = partitionQuality(mesh_, mask, part);
+  std::string dofs;
+  for (long long d : q.dofsPerPart) dofs += (dofs.empty() ? "" : ", ") + std::to_string(d);
+  log() << format("partition: Zoltan2 RCB into %d parts in %.3f s: unknowns per rank %s (imbalance %.3f), "
+                  "%lld nodes on elements shared by parts\n",
+                  p, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                  dofs.c_str(), q.imbalance, q.sharedNodes);
+  dofs_ = std::make_unique<DofMap>(std::move(mask), part.order, part.rankBegin, comm_->getRank());
 }
 
 MPI_Comm Model::rawComm() const {

@@ -11,6 +11,7 @@
 
 #include "fem/Assembler.hpp"
 #include "fem/DofMap.hpp"
+#include "fem/Kinematics.hpp"
 #include "fem/Material.hpp"
 #include "core/TpetraTypes.hpp"
 #include "mesh/Mesh.hpp"
@@ -39,6 +40,7 @@ class Model {
   // redistributed onto the other nodes (Assembler::mass(massless)); not cached. Throws
   // std::invalid_argument when an element has every node flagged.
   RCP<const CrsMatrix> mass(const std::vector<char>& massless) const;
+  Kinematics kinematics() const { return kinematics_; }
   // Material of the block containing the node set's first node (for reference solutions).
   const Material& materialOfBlock(int block) const { return blockMaterial_[block]; }
 
@@ -48,8 +50,15 @@ class Model {
   long long dof(int node, int comp) const { return dofs_->dof(node, comp); }
 
  private:
+  std::shared_ptr<const ElementKernel> blockKernel(const ElementBlock& blk, Kinematics kin,
+                                                  const Material& m, const Teuchos::ParameterList& bp,
+                                                  const std::string& file) const;
+  void checkElementGeometry(const std::vector<BlockPhysics>& physics, const std::string& meshParameter) const;
+  void buildDofMap(std::vector<std::uint8_t> mask, const std::string& method);
+
   std::string inputFile_;
   RCP<const Comm> comm_;
+  Kinematics kinematics_ = Kinematics::ThreeD;
   Mesh mesh_;
   std::vector<Material> blockMaterial_;
   std::unique_ptr<DofMap> dofs_;

@@ -7,15 +7,25 @@ namespace choc {
 Teuchos::ParameterList topLevelParameters() {
   Teuchos::ParameterList top;
   declareString(top, "Title", "", "one line describing the input, printed in the log");
-  ParameterList& mesh = declareSublist(top, "Mesh", "the Exodus II mesh");
+  ParameterList& mesh = declareSublist(top, "Mesh", "the mesh");
   declareRequiredString(mesh, "File",
-                        "Exodus II mesh file, relative to the input file (see 'choc mesh')");
+                        "mesh file, relative to the input file: Exodus II (see 'choc mesh') or "
+                        "gmsh .msh (physical groups: blocks, side sets, node sets)");
 
   ParameterList& model = declareSublist(top, "Model", "materials, element blocks, supports");
+  declareChoice(model, "Kinematics", "3D", {"3D", "plane strain", "axisymmetric"},
+                "3D: solids (TET4, TET10, HEX8, HEX20) and beams (BEAM2) in space; plane strain: "
+                "a unit-thickness section in the x-y plane (TRI3, TRI6, QUAD4, QUAD8; DX, DY); "
+                "axisymmetric: the half-plane x = r >= 0, y = the axis (TRI3...QUAD8; DX radial, "
+                "DY axial; masses, forces and energies of the whole 360-degree body)");
   declareString(model, "Active Components", "all",
                 "nodal components that may be unknowns; every other component is fixed to zero "
                 "on every node (e.g. 'DX' for an axial 1D model, 'DZ' for the 3D bars): names DX "
                 "DY DZ DRX DRY DRZ, or 'all', 'translations', 'rotations'");
+  declareChoice(model, "Partition", "rcb", {"rcb", "numbering"},
+                "how the nodes are shared among MPI ranks: rcb: Zoltan2 recursive coordinate "
+                "bisection weighted by unknowns (compact regions whatever the numbering); "
+                "numbering: contiguous ranges of the mesh's node numbering");
   ParameterList& mat = declareNamedSublists(model, "Materials", "isotropic elastic materials, by name");
   declareRequiredDouble(mat, "Young's Modulus", "E [Pa]", Range::positive());
   declareDouble(mat, "Poisson's Ratio", 0.0, "nu [-]", {-1.0, 0.5, true, true});

@@ -115,6 +115,18 @@ choc_cli_input_error(bad_active_component check bad_active_component.xml
 choc_cli_input_error(no_unknowns check bad_no_unknowns.xml
   "parameter 'Model/Active Components' = 'DX': the model has no unknowns")
 
+# Meshes of other tools (gmsh .msh, Exodus): bad elements and groups, one line each.
+choc_cli_input_error(mesh_inverted_element check bad_mesh_inverted.xml
+  "parameter 'Mesh/File' = 'inverted_tet.msh': block 'body', element 2: inverted or degenerate TET4 element: Jacobian determinant -2 <= 0")
+choc_cli_input_error(mesh_unsupported_element check bad_mesh_prism.xml
+  "parameter 'Mesh/File' = 'prism.msh': cannot use the mesh: .*prism.msh: physical group 'body' has elements of type 'Prism 6' .gmsh type 6., which choc does not support")
+choc_cli_input_error(mesh_2d_for_3d_model check bad_mesh_2d_for_3d.xml
+  "parameter 'Model/Kinematics' = '3D': block 'plate' has TRI3 elements .a 2D mesh.. set 'Kinematics' to 'plane strain' or 'axisymmetric'")
+choc_cli_input_error(mesh_groups_of_mixed_dimension check bad_mesh_mixed_dimension.xml
+  "parameter 'Mesh/File' = 'mixed_dimension.msh': cannot use the mesh: .*mixed_dimension.msh: physical group 'body' is defined in dimensions 2 and 3 .mixed dimension.")
+choc_cli_input_error(mesh_side_not_of_an_element check bad_mesh_not_a_face.xml
+  "parameter 'Mesh/File' = 'not_a_face.msh': cannot use the mesh: .*not_a_face.msh: physical group 'top': element 2 is not a side of any element of the blocks")
+
 # --- references resolved by the analyses' setup: `choc check` gives the line `choc run` gives,
 # and the run writes no result (setup comes before any analysis runs) ----------------------
 function(choc_cli_reference_error name input tail)

@@ -66,9 +66,9 @@ std::vector<Point3> expectedNodes(const ExodusLayout& l) {
 }
 
 // A few interior natural points of the reference cell of t.
-std::vector<Point3> samplePoints(Topology t) {
+std::vector<Point3> samplePoints(SolidShape t) {
   const bool simplex =
-      t == Topology::Tet4 || t == Topology::Tet10 || t == Topology::Tri3 || t == Topology::Tri6;
+      t == SolidShape::Tet4 || t == SolidShape::Tet10 || t == SolidShape::Tri3 || t == SolidShape::Tri6;
   const int dim = parametricDimension(t);
   std::vector<Point3> p =
       simplex ? std::vector<Point3>{{0.2, 0.3, 0.1}, {0.05, 0.6, 0.25}, {0.7, 0.1, 0.15}}
@@ -149,7 +149,7 @@ TEST(SolidShapeFunctions, TopologyTable) {
       {"TET4", {4, 3}}, {"TET10", {10, 3}}, {"HEX8", {8, 3}},  {"HEX20", {20, 3}},
       {"TRI3", {3, 2}}, {"TRI6", {6, 2}},   {"QUAD4", {4, 2}}, {"QUAD8", {8, 2}}};
   for (const std::string& n : names) {
-    const Topology t = solidTopology(n);
+    const SolidShape t = solidTopology(n);
     EXPECT_EQ(topologyName(t), n);
     EXPECT_EQ(nodeCount(t), sizes.at(n).first) << n;
     EXPECT_EQ(parametricDimension(t), sizes.at(n).second) << n;
@@ -165,7 +165,7 @@ TEST(SolidShapeFunctions, ExodusAliasesCaseInsensitive) {
       {"quad", "QUAD4"},  {"QUAD4", "QUAD4"}, {"quad8", "QUAD8"}};
   for (const auto& [alias, name] : aliases) EXPECT_EQ(topologyName(solidTopology(alias)), name);
   for (const char* bad : {"SHELL4", "shell", "BEAM2", "BAR2", "HEX27", "TET", ""}) {
-    Topology t;
+    SolidShape t;
     EXPECT_FALSE(findSolidTopology(bad, t)) << bad;
     EXPECT_THROW(solidTopology(bad), std::invalid_argument) << bad;
   }
@@ -181,7 +181,7 @@ TEST(SolidShapeFunctions, ExodusAliasesCaseInsensitive) {
 TEST(SolidShapeFunctions, NodesFollowExodusOrderAndKroneckerProperty) {
   for (const auto& [name, layout] : exodusLayouts()) {
     SCOPED_TRACE(name);
-    const Topology t = solidTopology(name);
+    const SolidShape t = solidTopology(name);
     const std::vector<Point3> expected = expectedNodes(layout);
     const std::vector<Point3>& nodes = nodeNaturalCoordinates(t);
     ASSERT_EQ(nodes.size(), expected.size());
@@ -202,7 +202,7 @@ TEST(SolidShapeFunctions, NodesFollowExodusOrderAndKroneckerProperty) {
 TEST(SolidShapeFunctions, CompletenessOfValuesAndDerivatives) {
   for (const std::string& name : solidTopologies()) {
     SCOPED_TRACE(name);
-    const Topology t = solidTopology(name);
+    const SolidShape t = solidTopology(name);
     const int dim = parametricDimension(t);
     const std::vector<Point3>& nodes = nodeNaturalCoordinates(t);
     std::vector<double> N;
@@ -236,7 +236,7 @@ TEST(SolidShapeFunctions, DerivativesMatchCentralDifferences) {
   const double h = 1e-3;
   for (const std::string& name : solidTopologies()) {
     SCOPED_TRACE(name);
-    const Topology t = solidTopology(name);
+    const SolidShape t = solidTopology(name);
     std::vector<double> N, Nlo, Nhi;
     std::vector<Point3> dN, unused;
     for (const Point3& xi : samplePoints(t)) {
@@ -287,17 +287,17 @@ TEST(SolidQuadrature, RulesArePositiveInsideAndExactToTheirDegree) {
 TEST(SolidQuadrature, DegreesPerTopology) {
   for (const std::string& name : solidTopologies()) {
     SCOPED_TRACE(name);
-    const Topology t = solidTopology(name);
+    const SolidShape t = solidTopology(name);
     const int p = isQuadratic(t) ? 2 : 1, dim = parametricDimension(t);
     EXPECT_GE(massRule(t).degree, dim == 3 ? 2 * p : 2 * p + 1);
     const Kinematics k = dim == 3 ? Kinematics::ThreeD : Kinematics::PlaneStrain;
     EXPECT_GE(stiffnessRule(t, k).degree, 2 * p - 2);
   }
-  EXPECT_EQ(stiffnessRule(Topology::Tet4, Kinematics::ThreeD).size(), 1);
-  EXPECT_EQ(stiffnessRule(Topology::Tet10, Kinematics::ThreeD).size(), 4);
-  EXPECT_EQ(stiffnessRule(Topology::Hex20, Kinematics::ThreeD).size(), 27);
-  EXPECT_EQ(stiffnessRule(Topology::Tri3, Kinematics::PlaneStrain).size(), 1);
-  EXPECT_EQ(stiffnessRule(Topology::Tri6, Kinematics::PlaneStrain).size(), 3);
-  EXPECT_EQ(stiffnessRule(Topology::Tri3, Kinematics::Axisymmetric).size(), 7);
-  EXPECT_EQ(massRule(Topology::Tet10).size(), 14);
+  EXPECT_EQ(stiffnessRule(SolidShape::Tet4, Kinematics::ThreeD).size(), 1);
+  EXPECT_EQ(stiffnessRule(SolidShape::Tet10, Kinematics::ThreeD).size(), 4);
+  EXPECT_EQ(stiffnessRule(SolidShape::Hex20, Kinematics::ThreeD).size(), 27);
+  EXPECT_EQ(stiffnessRule(SolidShape::Tri3, Kinematics::PlaneStrain).size(), 1);
+  EXPECT_EQ(stiffnessRule(SolidShape::Tri6, Kinematics::PlaneStrain).size(), 3);
+  EXPECT_EQ(stiffnessRule(SolidShape::Tri3, Kinematics::Axisymmetric).size(), 7);
+  EXPECT_EQ(massRule(SolidShape::Tet10).size(), 14);
 }

@@ -77,6 +77,17 @@ TEST(Topology, SidesFaceOutwardAndMidSideNodesAreMidpoints) {
   }
 }
 
+TEST(Topology, MidEdgeNodesMatchTheReferenceElements) {
+  for (const auto& [name, x] : referenceElements()) {
+    const Topology* t = findTopology(name);
+    ASSERT_EQ(t->numCorners + int(t->midEdges.size()), t->numNodes) << name;
+    for (size_t i = 0; i < t->midEdges.size(); ++i) {
+      const auto [a, b] = t->midEdges[i];
+      EXPECT_EQ(x[t->numCorners + i], centroid(x, {a, b})) << name << " mid-edge node " << i;
+    }
+  }
+}
+
 TEST(Topology, SideCountsAndKinds) {
   EXPECT_EQ(findTopology("TET10")->numSides(), 4);
   EXPECT_EQ(findTopology("TET10")->sideTopology, "TRI6");
