@@ -42,7 +42,7 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
         if (std::abs(n) < 1e-14) continue;
         const long long ds = dofs.dof(sp.slaveNode, d);
         if (ds >= 0) t.push_back({GO(ds), n});
-        for (int i = 0; i < 4; ++i) {
+        for (size_t i = 0; i < sp.masterNodes.size(); ++i) {
           const long long dm = dofs.dof(sp.masterNodes[i], d);
           if (dm >= 0 && sp.weights[i] != 0.0) t.push_back({GO(dm), -sp.weights[i] * n});
         }

@@ -5,15 +5,32 @@
 #include <limits>
 #include <map>
 
+#include "fem/DenseMatrix.hpp"
+#include "fem/MassLumping.hpp"
+#include "fem/ShapeFunctions.hpp"
+#include "mesh/Topology.hpp"
+
 namespace choc {
 
 namespace {
 
 
+// A face of a solid: its nodes, their positions, its shape (QUAD4: the bilinear code below,
+// kept as it was; the others through the isoparametric library).
 struct Face {
-  std::array<int, 4> nodes;
-  std::array<Point3, 4> x;
+  std::vector<int> nodes;
+  std::vector<Point3> x;
+  SolidShape shape = SolidShape::Quad4;
 };
+
+bool faceShape(size_t nodes, const std::string& sideTopology, SolidShape& shape) {
+  if (sideTopology == "QUAD4" && nodes == 4) shape = SolidShape::Quad4;
+  else if (sideTopology == "QUAD8" && nodes == 8) shape = SolidShape::Quad8;
+  else if (sideTopology == "TRI3" && nodes == 3) shape = SolidShape::Tri3;
+  else if (sideTopology == "TRI6" && nodes == 6) shape = SolidShape::Tri6;
+  else return false;
+  return true;
+}
 
 std::vector<Face> facesOf(const Mesh& mesh, const std::string& name) {
   const SideSet* ss = mesh.findSideSet(name);
@@ -25,18 +42,103 @@ std::vector<Face> facesOf(const Mesh& mesh, const std::string& name) {
   }
   std::vector<Face> faces;
   for (size_t k = 0; k < ss->elements.size(); ++k) {
-    const auto nodes = mesh.sideNodes(ss->elements[k], ss->sides[k]);
-    if (nodes.size() != 4)
-      throw std::invalid_argument("side set '" + name + "' is not made of QUAD4 faces");
     Face f;
-    for (int i = 0; i < 4; ++i) {
-      f.nodes[i] = nodes[i];
-      f.x[i] = mesh.coords[nodes[i]];
-    }
+    f.nodes = mesh.sideNodes(ss->elements[k], ss->sides[k]);
+    const ElementBlock& b = mesh.blocks[mesh.locateElement(ss->elements[k]).first];
+    const Topology* t = findTopology(b.topology);
+    if (!t || !faceShape(f.nodes.size(), t->sideTopologies[ss->sides[k] - 1], f.shape))
+      throw std::invalid_argument("side set '" + name + "' has a side of a " + b.topology +
+                                  " element: contact needs faces of solids (QUAD4, QUAD8, TRI3, TRI6)");
+    for (int n : f.nodes) f.x.push_back(mesh.coords[n]);
     faces.push_back(f);
   }
   if (faces.empty()) throw std::invalid_argument("side set '" + name + "' is empty");
   return faces;
+}
+
+// Position, tangents and shape functions of a face at (xi, eta).
+struct FacePoint {
+  Point3 x{}, dxi{}, deta{};
+  std::vector<double> N;
+};
+
+FacePoint evaluateFace(const Face& f, double xi, double eta) {
+  FacePoint p;
+  if (f.shape == SolidShape::Quad4) {
+    const QuadPoint q = evaluateQuad({f.x[0], f.x[1], f.x[2], f.x[3]}, xi, eta);
+    p.x = q.x;
+    p.dxi = q.dxi;
+    p.deta = q.deta;
+    p.N.assign(q.N.begin(), q.N.end());
+    return p;
+  }
+  std::vector<Point3> dN;
+  shapeFunctions(f.shape, Point3{xi, eta, 0.0}, p.N, dN);
+  for (size_t a = 0; a < f.x.size(); ++a)
+    for (int d = 0; d < 3; ++d) {
+      p.x[d] += p.N[a] * f.x[a][d];
+      p.dxi[d] += dN[a][0] * f.x[a][d];
+      p.deta[d] += dN[a][1] * f.x[a][d];
+    }
+  return p;
+}
+
+bool isTriangle(const Face& f) { return f.shape == SolidShape::Tri3 || f.shape == SolidShape::Tri6; }
+
+// Closest point of x on the face by Gauss-Newton from the face's centre.
+bool projectOnFace(const Face& f, const Point3& x, double& xi, double& eta) {
+  if (f.shape == SolidShape::Quad4) return projectOnQuad({f.x[0], f.x[1], f.x[2], f.x[3]}, x, xi, eta);
+  xi = eta = isTriangle(f) ? 1.0 / 3.0 : 0.0;
+  for (int it = 0; it < 30; ++it) {
+    const FacePoint q = evaluateFace(f, xi, eta);
+    const Point3 d = q.x - x;
+    const double r1 = dot(q.dxi, d), r2 = dot(q.deta, d);
+    const double a = dot(q.dxi, q.dxi), b = dot(q.dxi, q.deta), e = dot(q.deta, q.deta);
+    const double det = a * e - b * b;
+    if (!(det > 0)) return false;
+    const double dxi = -(e * r1 - b * r2) / det, deta = -(a * r2 - b * r1) / det;
+    xi += dxi;
+    eta += deta;
+    if (std::abs(dxi) + std::abs(deta) < 1e-13) return true;
+  }
+  return false;
+}
+
+bool insideFace(const Face& f, double xi, double eta) {
+  const double tol = 1e-8;
+  if (isTriangle(f)) return xi >= -tol && eta >= -tol && xi + eta <= 1.0 + tol;
+  return std::abs(xi) <= 1.0 + tol && std::abs(eta) <= 1.0 + tol;
+}
+
+// Each slave node's share of the slave surface's area.
+std::map<int, double> tributaryAreas(const std::vector<Face>& slave) {
+  std::map<int, double> area;
+  const double g = 1.0 / std::sqrt(3.0);
+  for (const Face& f : slave) {
+    if (f.shape == SolidShape::Quad4) {  // 2 x 2 Gauss, as it always was
+      for (double xi : {-g, g})
+        for (double eta : {-g, g}) {
+          const QuadPoint q = evaluateQuad({f.x[0], f.x[1], f.x[2], f.x[3]}, xi, eta);
+          const Point3 n = cross(q.dxi, q.deta);
+          const double J = std::sqrt(dot(n, n));
+          for (int i = 0; i < 4; ++i) area[f.nodes[i]] += q.N[i] * J;
+        }
+      continue;
+    }
+    const int n = static_cast<int>(f.nodes.size());
+    DenseMatrix m(n, n);
+    const QuadratureRule& rule = massRule(f.shape);
+    for (int k = 0; k < rule.size(); ++k) {
+      const FacePoint q = evaluateFace(f, rule.points[k][0], rule.points[k][1]);
+      const double J = norm(cross(q.dxi, q.deta)) * rule.weights[k];
+      for (int a = 0; a < n; ++a)
+        for (int b = 0; b < n; ++b) m(a, b) += q.N[a] * q.N[b] * J;
+    }
+    const bool quadratic = f.shape == SolidShape::Tri6 || f.shape == SolidShape::Quad8;
+    const std::vector<double> lumped = quadratic ? hrzLumping(m) : rowSumLumping(m);
+    for (int a = 0; a < n; ++a) area[f.nodes[a]] += lumped[a];
+  }
+  return area;
 }
 
 }  // namespace
@@ -75,29 +177,16 @@ bool projectOnQuad(const std::array<Point3, 4>& c, const Point3& x, double& xi, 
 
 PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pairIndex) {
   const std::vector<Face> master = facesOf(mesh, def.masterSideSet);
-  const std::vector<Face> slave = facesOf(mesh, def.slaveSideSet);
-  // Tributary areas: integral of each slave node's shape function (2 x 2 Gauss).
-  std::map<int, double> area;
-  const double g = 1.0 / std::sqrt(3.0);
-  for (const Face& f : slave)
-    for (double xi : {-g, g})
-      for (double eta : {-g, g}) {
-        const QuadPoint q = evaluateQuad(f.x, xi, eta);
-        const Point3 n = cross(q.dxi, q.deta);
-        const double J = std::sqrt(dot(n, n));
-        for (int i = 0; i < 4; ++i) area[f.nodes[i]] += q.N[i] * J;
-      }
+  const std::map<int, double> area = tributaryAreas(facesOf(mesh, def.slaveSideSet));
   PairingResult res;
-  const double inside = 1.0 + 1e-8;
   for (const auto& [node, a] : area) {
     const Point3& xs = mesh.coords[node];
     SlaveProjection best;
     double bestDist = std::numeric_limits<double>::infinity();
     for (size_t k = 0; k < master.size(); ++k) {
       double xi, eta;
-      if (!projectOnQuad(master[k].x, xs, xi, eta)) continue;
-      if (std::abs(xi) > inside || std::abs(eta) > inside) continue;
-      const QuadPoint q = evaluateQuad(master[k].x, xi, eta);
+      if (!projectOnFace(master[k], xs, xi, eta) || !insideFace(master[k], xi, eta)) continue;
+      const FacePoint q = evaluateFace(master[k], xi, eta);
       const Point3 d = (xs - q.x);
       const double dist = std::sqrt(dot(d, d));
       if (!(dist < bestDist - 1e-15)) continue;

@@ -1,10 +1,12 @@
-// Node-to-face pairing: each node of the slave side set is projected onto the QUAD4 faces of
-// the master side set (bilinear surface, closest point by Gauss-Newton on the face's
-// parameters); the face containing the projection with the smallest distance wins. The
+// Node-to-face pairing: each node of the slave side set is projected onto the faces of the
+// master side set (QUAD4, QUAD8, TRI3 or TRI6: the faces of HEX8, HEX20, TET4, TET10; closest
+// point by Gauss-Newton on the face's parameters); the face containing the projection with the
+// smallest distance wins. The
 // faces need not match node for node. Gives, per slave node, the master face nodes and their
 // shape-function weights at the projection, the master's outward unit normal there, the
 // reference gap g0 = (x_s - x_m) . n (positive when open) and the slave node's tributary
-// area (integral of its shape function over the slave faces). Reference configuration only:
+// area (integral of its shape function over the slave faces; for quadratic faces, whose corner
+// integrals are zero or negative, the HRZ-lumped face mass: positive, same total). Reference configuration only:
 // the displacements are small (linear elasticity), so the pairing is computed once.
 #pragma once
 #include <array>
@@ -27,8 +29,8 @@ struct SlaveProjection {
   int pair = 0;
   int slaveNode = -1;
   int masterFace = -1;              // index into the master side set
-  std::array<int, 4> masterNodes{}; // QUAD4 nodes of that face
-  std::array<double, 4> weights{};  // bilinear shape functions at the projection
+  std::vector<int> masterNodes;     // nodes of that face (Exodus side order)
+  std::vector<double> weights;      // the face's shape functions at the projection
   double xi = 0, eta = 0;           // projection parameters in [-1, 1]^2
   Point3 normal{};                  // master outward unit normal at the projection
   double gap0 = 0;                  // reference gap [m]
@@ -49,8 +51,8 @@ QuadPoint evaluateQuad(const std::array<Point3, 4>& corners, double xi, double e
 // Closest point of x on the bilinear face; returns false when Gauss-Newton does not converge.
 bool projectOnQuad(const std::array<Point3, 4>& corners, const Point3& x, double& xi, double& eta);
 
-// Throws std::invalid_argument naming the side set when it is missing, not made of QUAD4
-// faces (HEX8 sides), or when no slave node pairs.
+// Throws std::invalid_argument naming the side set when it is missing, not made of faces of
+// solids (QUAD4, QUAD8, TRI3, TRI6), or when no slave node pairs.
 PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pairIndex);
 
 }  // namespace choc

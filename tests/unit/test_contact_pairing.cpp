@@ -31,7 +31,7 @@ TEST(ContactPairing, MatchingFacesPairNodeToNode) {
     EXPECT_NEAR(p.normal[2], -1.0, 1e-14);  // bar 1's contact face looks towards -z
     EXPECT_NEAR(p.gap0, 1e-5, 1e-15);
     double wmax = 0;
-    for (int i = 0; i < 4; ++i) wmax = std::max(wmax, p.weights[i]);
+    for (double w : p.weights) wmax = std::max(wmax, w);
     EXPECT_NEAR(wmax, 1.0, 1e-12);  // on a master node
     area += p.area;
   }
@@ -46,7 +46,7 @@ TEST(ContactPairing, NonMatchingFacesUseBilinearWeights) {
   for (const auto& p : r.projections) {
     double sum = 0;
     Point3 x{};
-    for (int i = 0; i < 4; ++i) {
+    for (size_t i = 0; i < p.weights.size(); ++i) {
       sum += p.weights[i];
       for (int d = 0; d < 3; ++d) x[d] += p.weights[i] * m.coords[p.masterNodes[i]][d];
     }
