@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-inputs clean
+.PHONY: all deps configure build run test study bench bench-inputs bench-mesh study-modal clean
 
 all: build
 
@@ -38,6 +38,14 @@ bench: build
 study: build
 	$(PYTHON) tools/study.py --build $(BUILD) --out results/study
 	$(PYTHON) tools/study_report.py results/study
+
+# A ~1M-unknown TET10 gmsh mesh read, partitioned and assembled on 2 ranks (time, memory per phase).
+bench-mesh: build
+	tools/bench_large_mesh.sh $(BUILD) 20
+
+# The first 10 frequencies of a cantilever block in HEX20 and TET10 against mesh refinement.
+study-modal: build
+	$(PYTHON) tools/modal_convergence.py --build $(BUILD) --out results/modal_convergence
 
 # Wall time of every SDNL111 input, start-up included (prints figures; not a test).
 bench-inputs: build

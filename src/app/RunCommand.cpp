@@ -16,6 +16,7 @@
 #include "app/Commands.hpp"
 #include "app/InputDeck.hpp"
 #include "core/Errors.hpp"
+#include "core/Resources.hpp"
 #include "output/Checks.hpp"
 #include "output/Interrupt.hpp"
 #include "core/Log.hpp"
@@ -45,23 +46,6 @@ RunArgs parseRunArgs(const std::vector<std::string>& args, const std::string& cm
   }
   if (r.input.empty()) throw InputError("choc " + cmd + ": missing INPUT.xml (usage: choc " + cmd + " INPUT.xml)");
   return r;
-}
-
-// Peak resident set size of this process [bytes] (VmHWM of /proc/self/status; 0 if unknown).
-double peakResidentBytes() {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind("VmHWM:", 0) == 0) return 1024.0 * std::stod(line.substr(6));  // kB
-  return 0.0;
-}
-
-// CPU time (user + system) of this process [s].
-double cpuSeconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-         1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
 // Two log lines: the peak memory of every rank and the total per unknown; the CPU time of

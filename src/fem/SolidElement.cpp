@@ -144,6 +144,14 @@ class SolidElement : public ElementKernel {
   const std::vector<int>& components() const override { return comps_; }
   void stiffness(const std::vector<Point3>& x, DenseMatrix& K) const override;
   void mass(const std::vector<Point3>& x, MassKind kind, DenseMatrix& M) const override;
+  // The checks of stiffness() and mass() without their products: the nodes, then det J at
+  // every point of both quadrature rules.
+  void checkGeometry(const std::vector<Point3>& x) const override {
+    validateNodes(topo_, kin_, x);
+    IsoparametricPoint p;
+    for (const QuadratureRule* rule : {&stiffnessRule(topo_, kin_), &massRule(topo_)})
+      for (int q = 0; q < rule->size(); ++q) volumeWeight(topo_, kin_, x, *rule, q, p);
+  }
 
  private:
   DenseMatrix scalarMass(const std::vector<Point3>& x) const;

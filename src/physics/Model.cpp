@@ -11,6 +11,7 @@
 #include "fem/NodePartition.hpp"
 #include "core/Format.hpp"
 #include "core/Log.hpp"
+#include "core/Resources.hpp"
 #include <chrono>
 #include "fem/SolidElement.hpp"
 #include "mesh/Topology.hpp"
@@ -23,6 +24,10 @@
 namespace choc {
 
 namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
 
 BeamSection beamSection(const Teuchos::ParameterList& sec, const std::string& file,
                         const std::string& path) {
@@ -54,12 +59,16 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
   const std::string& file = inputFile_;
   const std::string meshFile =
       resolveBeside(inputFile, input.sublist("Mesh").get<std::string>("File"));
+  const auto readStart = std::chrono::steady_clock::now();
   try {
     mesh_ = readMeshFile(meshFile);
   } catch (const InputError& e) {
     throwInput(file, "Mesh/File", input.sublist("Mesh").get<std::string>("File"),
                std::string("cannot use the mesh: ") + e.what());
   }
+  logPhase(*comm_, "mesh read (" + std::to_string(mesh_.numNodes()) + " nodes, " +
+                       std::to_string(mesh_.numElements()) + " elements)",
+           secondsSince(readStart));
   const Teuchos::ParameterList& model = input.sublist("Model");
   kinematics_ = kinematicsFromName(model.get<std::string>("Kinematics"));
 
@@ -103,7 +112,9 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
     physics[b].mass = bp.get<std::string>("Mass") == "lumped" ? MassKind::Lumped : MassKind::Consistent;
     physics[b].kernel = blockKernel(blk, kinematics_, m, bp, file);
   }
+  const auto checkStart = std::chrono::steady_clock::now();
   checkElementGeometry(physics, input.sublist("Mesh").get<std::string>("File"));
+  logPhase(*comm_, "element geometry check", secondsSince(checkStart));
 
   // Free components: carried by an element, active, not fixed by a Dirichlet condition.
   std::vector<std::uint8_t> mask = Assembler::carriedComponents(mesh_, physics);
@@ -129,7 +140,10 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
     }
     for (int n : ns.nodes) mask[n] &= std::uint8_t(~fixed);
   }
+  const auto partitionStart = std::chrono::steady_clock::now();
   buildDofMap(std::move(mask), model.get<std::string>("Partition"));
+  logPhase(*comm_, "partition and DOF map (" + std::to_string(dofs_->numGlobal()) + " unknowns)",
+           secondsSince(partitionStart));
   if (dofs_->numGlobal() == 0)
     throwInput(file, "Model/Active Components", model.get<std::string>("Active Components"),
                "the model has no unknowns", "check the active components and Dirichlet sets");
@@ -226,17 +240,24 @@ const NodeSet& Model::nodeSet(const std::string& name, const std::string& parame
 
 RCP<const CrsMatrix> Model::stiffness() {
   if (K_.is_null()) {
+    const auto start = std::chrono::steady_clock::now();
     try {
       K_ = assembler_->stiffness();
     } catch (const std::invalid_argument& e) {
       throwInput(inputFile_, "Mesh/File", "", std::string("bad element: ") + e.what());
     }
+    logPhase(*comm_, "stiffness assembly (" + std::to_string(K_->getGlobalNumEntries()) + " entries)",
+             secondsSince(start));
   }
   return K_;
 }
 
 RCP<const CrsMatrix> Model::mass() {
-  if (M_.is_null()) M_ = assembler_->mass();
+  if (M_.is_null()) {
+    const auto start = std::chrono::steady_clock::now();
+    M_ = assembler_->mass();
+    logPhase(*comm_, "mass assembly", secondsSince(start));
+  }
   return M_;
 }
 
