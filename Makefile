@@ -41,7 +41,7 @@ study: build
 
 # A ~1M-unknown TET10 gmsh mesh read, partitioned and assembled on 2 ranks (time, memory per phase).
 bench-mesh: build
-	tools/bench_large_mesh.sh $(BUILD) 20
+	$(PYTHON) tools/bench_large_mesh.py --build $(BUILD) --n 20
 
 # The first 10 frequencies of a cantilever block in HEX20 and TET10 against mesh refinement.
 study-modal: build

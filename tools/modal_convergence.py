@@ -21,7 +21,17 @@ import sys
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-DECK = """<ParameterList name="cantilever">
+MODAL = """<ParameterList name="modes">
+    <Parameter name="Type" type="string" value="Modal"/>
+    <Parameter name="Number of Modes" type="int" value="10"/>
+    <Parameter name="Tolerance" type="double" value="1e-12"/>
+    <Parameter name="Write Exodus" type="bool" value="false"/>
+  </ParameterList>"""
+
+
+def block_deck(label, mesh, nu, analysis):
+    """An input for meshes/cantilever_block.geo's mesh: steel, clamped face, one analysis."""
+    return f"""<ParameterList name="cantilever">
   <Parameter name="Title" type="string" value="cantilever block, {label}"/>
   <ParameterList name="Mesh"><Parameter name="File" type="string" value="{mesh}"/></ParameterList>
   <ParameterList name="Model">
@@ -38,28 +48,30 @@ DECK = """<ParameterList name="cantilever">
       <Parameter name="Components" type="string" value="all"/>
     </ParameterList></ParameterList>
   </ParameterList>
-  <ParameterList name="Analyses"><ParameterList name="modes">
-    <Parameter name="Type" type="string" value="Modal"/>
-    <Parameter name="Number of Modes" type="int" value="10"/>
-    <Parameter name="Tolerance" type="double" value="1e-12"/>
-    <Parameter name="Write Exodus" type="bool" value="false"/>
-  </ParameterList></ParameterList>
+  <ParameterList name="Analyses">{analysis}</ParameterList>
 </ParameterList>
 """
+
+
+def mesh_block(out, n, hexa):
+    """meshes/cantilever_block.geo meshed by gmsh at n elements across (quadratic elements)."""
+    mesh = os.path.join(out, f"block_{'hex20' if hexa else 'tet10'}_n{n}.msh")
+    if not os.path.exists(mesh):
+        subprocess.run(["gmsh", "-3", "-order", "2", "-setnumber", "n", str(n), "-setnumber", "hex",
+                        "1" if hexa else "0", "-format", "msh41",
+                        os.path.join(TOP, "meshes", "cantilever_block.geo"), "-o", mesh],
+                       check=True, stdout=subprocess.DEVNULL)
+    return mesh
 
 
 def run_case(build, out, n, hexa, nu):
     label = f"{'HEX20' if hexa else 'TET10'}_n{n}"
     work = os.path.join(out, label)
     os.makedirs(work, exist_ok=True)
-    mesh = os.path.join(work, "block.msh")
-    subprocess.run(["gmsh", "-3", "-order", "2", "-setnumber", "n", str(n), "-setnumber", "hex",
-                    "1" if hexa else "0", "-format", "msh41",
-                    os.path.join(TOP, "meshes", "cantilever_block.geo"), "-o", mesh],
-                   check=True, stdout=subprocess.DEVNULL)
+    mesh = mesh_block(work, n, hexa)
     deck = os.path.join(work, "modes.xml")
     with open(deck, "w") as f:
-        f.write(DECK.format(label=label, mesh=mesh, nu=nu))
+        f.write(block_deck(label, mesh, nu, MODAL))
     log = subprocess.run([os.path.join(build, "choc"), "run", deck, "-o", work],
                          capture_output=True, text=True)
     if log.returncode != 0:

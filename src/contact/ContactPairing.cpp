@@ -85,12 +85,12 @@ FacePoint evaluateFace(const Face& f, double xi, double eta) {
 
 bool isTriangle(const Face& f) { return f.shape == SolidShape::Tri3 || f.shape == SolidShape::Tri6; }
 
-// Closest point of x on the face by Gauss-Newton from the face's centre.
-bool projectOnFace(const Face& f, const Point3& x, double& xi, double& eta) {
-  if (f.shape == SolidShape::Quad4) return projectOnQuad({f.x[0], f.x[1], f.x[2], f.x[3]}, x, xi, eta);
-  xi = eta = isTriangle(f) ? 1.0 / 3.0 : 0.0;
+// Closest point of x on a surface patch by Gauss-Newton on its parameters from (xi, eta);
+// `at(xi, eta)` gives the position and tangents there.
+template <class Evaluate>
+bool gaussNewtonProjection(const Evaluate& at, const Point3& x, double& xi, double& eta) {
   for (int it = 0; it < 30; ++it) {
-    const FacePoint q = evaluateFace(f, xi, eta);
+    const auto q = at(xi, eta);
     const Point3 d = q.x - x;
     const double r1 = dot(q.dxi, d), r2 = dot(q.deta, d);
     const double a = dot(q.dxi, q.dxi), b = dot(q.dxi, q.deta), e = dot(q.deta, q.deta);
@@ -102,6 +102,13 @@ bool projectOnFace(const Face& f, const Point3& x, double& xi, double& eta) {
     if (std::abs(dxi) + std::abs(deta) < 1e-13) return true;
   }
   return false;
+}
+
+// Closest point of x on the face from the face's centre.
+bool projectOnFace(const Face& f, const Point3& x, double& xi, double& eta) {
+  if (f.shape == SolidShape::Quad4) return projectOnQuad({f.x[0], f.x[1], f.x[2], f.x[3]}, x, xi, eta);
+  xi = eta = isTriangle(f) ? 1.0 / 3.0 : 0.0;
+  return gaussNewtonProjection([&](double s, double t) { return evaluateFace(f, s, t); }, x, xi, eta);
 }
 
 bool insideFace(const Face& f, double xi, double eta) {
@@ -158,21 +165,10 @@ QuadPoint evaluateQuad(const std::array<Point3, 4>& c, double xi, double eta) {
   return q;
 }
 
+
 bool projectOnQuad(const std::array<Point3, 4>& c, const Point3& x, double& xi, double& eta) {
   xi = eta = 0.0;
-  for (int it = 0; it < 30; ++it) {
-    const QuadPoint q = evaluateQuad(c, xi, eta);
-    const Point3 d = (q.x - x);
-    const double r1 = dot(q.dxi, d), r2 = dot(q.deta, d);
-    const double a = dot(q.dxi, q.dxi), b = dot(q.dxi, q.deta), e = dot(q.deta, q.deta);
-    const double det = a * e - b * b;
-    if (!(det > 0)) return false;
-    const double dxi = -(e * r1 - b * r2) / det, deta = -(a * r2 - b * r1) / det;
-    xi += dxi;
-    eta += deta;
-    if (std::abs(dxi) + std::abs(deta) < 1e-13) return true;
-  }
-  return false;
+  return gaussNewtonProjection([&](double s, double t) { return evaluateQuad(c, s, t); }, x, xi, eta);
 }
 
 PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pairIndex) {

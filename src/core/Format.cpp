@@ -1,5 +1,7 @@
 #include "core/Format.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdarg>
 #include <cstdio>
 #include <vector>
@@ -24,5 +26,13 @@ std::string format(const char* fmt, ...) {
 }
 
 std::string shortNumber(double v) { return format("%g", v); }
+
+std::string upperTrimmed(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const auto notSpace = [](unsigned char c) { return !std::isspace(c); };
+  s.erase(s.begin(), std::find_if(s.begin(), s.end(), notSpace));
+  s.erase(std::find_if(s.rbegin(), s.rend(), notSpace).base(), s.end());
+  return s;
+}
 
 }  // namespace choc

@@ -16,6 +16,7 @@
 #include "mesh/MeshBytes.hpp"
 #include "mesh/NetcdfHeader.hpp"
 #include "mesh/Topology.hpp"
+#include "core/Format.hpp"
 
 namespace choc {
 
@@ -37,14 +38,6 @@ struct OpenFile {
     if (id >= 0) ex_close(id);
   }
 };
-
-std::string upper(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  const auto notSpace = [](unsigned char c) { return !std::isspace(c); };
-  s.erase(s.begin(), std::find_if(s.begin(), s.end(), notSpace));
-  s.erase(std::find_if(s.rbegin(), s.rend(), notSpace).base(), s.end());
-  return s;
-}
 
 class Reader {
  public:
@@ -220,7 +213,7 @@ class Reader {
       block.id = blockIds[b];
       block.name = blockNames[b].empty() ? "block_" + std::to_string(block.id) : blockNames[b];
       info.topology[MAX_STR_LENGTH] = '\0';
-      const std::string type = upper(info.topology);
+      const std::string type = upperTrimmed(info.topology);
       const int nodes = static_cast<int>(info.num_nodes_per_entry);
       block.topology = canonicalTopology(type, nodes);
       // Exodus stores an empty block as type "NULL" with 0 nodes: keep it, without topology.

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <map>
 
+#include "core/Format.hpp"
+
 namespace choc {
 
 namespace {
@@ -59,14 +61,6 @@ const std::map<std::string, Topology>& table() {
     return m;
   }();
   return t;
-}
-
-std::string upperTrimmed(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  const auto notSpace = [](unsigned char c) { return !std::isspace(c); };
-  s.erase(s.begin(), std::find_if(s.begin(), s.end(), notSpace));
-  s.erase(std::find_if(s.rbegin(), s.rend(), notSpace).base(), s.end());
-  return s;
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "mesh/GmshReader.hpp"
 #include "mesh/MeshFile.hpp"
 #include "mesh/Topology.hpp"
+#include "test_mesh_helpers.hpp"
 
 namespace choc {
 namespace {
@@ -74,23 +75,6 @@ double measure(const Mesh& m, Kinematics k) {
   return total;
 }
 
-void expectSame(const Mesh& a, const Mesh& b) {
-  ASSERT_EQ(a.coords, b.coords);
-  ASSERT_EQ(a.blocks.size(), b.blocks.size());
-  for (size_t i = 0; i < a.blocks.size(); ++i) {
-    EXPECT_EQ(a.blocks[i].name, b.blocks[i].name);
-    EXPECT_EQ(a.blocks[i].topology, b.blocks[i].topology);
-    EXPECT_EQ(a.blocks[i].connectivity, b.blocks[i].connectivity);
-  }
-  ASSERT_EQ(a.sideSets.size(), b.sideSets.size());
-  for (size_t i = 0; i < a.sideSets.size(); ++i) {
-    EXPECT_EQ(a.sideSets[i].elements, b.sideSets[i].elements);
-    EXPECT_EQ(a.sideSets[i].sides, b.sideSets[i].sides);
-  }
-  ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
-  for (size_t i = 0; i < a.nodeSets.size(); ++i) EXPECT_EQ(a.nodeSets[i].nodes, b.nodeSets[i].nodes);
-}
-
 TEST(Gmsh, Tet10BoxBlocksSidesAndSets) {
   const std::string path = scratch("box_tet10.msh");
   makeBox(path, 3, 2, false);
@@ -123,7 +107,7 @@ TEST(Gmsh, Tet10BoxBlocksSidesAndSets) {
   // The same mesh through Exodus.
   const std::string exo = scratch("box_tet10.exo");
   writeExodusMesh(m, exo);
-  expectSame(m, readExodusMesh(exo));
+  expectSameMesh(m, readExodusMesh(exo));
 }
 
 TEST(Gmsh, Quad8RectangleIs2D) {
@@ -148,7 +132,7 @@ TEST(Gmsh, Quad8RectangleIs2D) {
   writeExodusMesh(m, exo);
   const Mesh back = readExodusMesh(exo);
   EXPECT_EQ(back.dimension, 2);
-  expectSame(m, back);
+  expectSameMesh(m, back);
 }
 
 TEST(Gmsh, MissingAndForeignFilesAreInputErrors) {

@@ -10,6 +10,7 @@
 #include "fem/DofMap.hpp"
 #include "fem/NodePartition.hpp"
 #include "mesh/BarImpactMesh.hpp"
+#include "test_mesh_helpers.hpp"
 
 namespace choc {
 namespace {
@@ -21,20 +22,6 @@ Mesh bars() {
   o.along1 = o.along2 = 20;
   o.across1 = o.across2 = 2;
   return generateBarImpactMesh(o);
-}
-
-// The same mesh with its nodes renumbered by a random permutation (new index = perm[old]).
-Mesh renumbered(const Mesh& m, std::vector<int>& perm) {
-  perm.resize(m.numNodes());
-  std::iota(perm.begin(), perm.end(), 0);
-  std::shuffle(perm.begin(), perm.end(), std::mt19937(12345));
-  Mesh r = m;
-  for (int i = 0; i < m.numNodes(); ++i) r.coords[perm[i]] = m.coords[i];
-  for (auto& b : r.blocks)
-    for (int& n : b.connectivity) n = perm[n];
-  for (auto& s : r.nodeSets)
-    for (int& n : s.nodes) n = perm[n];
-  return r;
 }
 
 TEST(NodePartition, RcbCutsTheBarsIntoBalancedSlabs) {
@@ -69,7 +56,7 @@ TEST(NodePartition, RcbCutsTheBarsIntoBalancedSlabs) {
 TEST(NodePartition, DoesNotDependOnTheNumbering) {
   const Mesh m = bars();
   std::vector<int> perm;
-  const Mesh r = renumbered(m, perm);
+  const Mesh r = renumberedMesh(m, 12345, &perm);
   const std::vector<std::uint8_t> mask(m.numNodes(), 0b111);
   const NodePartition a = partitionNodes(m, mask, 2), b = partitionNodes(r, mask, 2);
   int same = 0;

@@ -2,7 +2,27 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numeric>
+#include <random>
+
 #include "mesh/Mesh.hpp"
+
+// The same mesh with its nodes renumbered by a random permutation: new index = perm[old];
+// elements and sets keep their order, their nodes follow.
+inline choc::Mesh renumberedMesh(const choc::Mesh& m, unsigned seed, std::vector<int>* permutation = nullptr) {
+  std::vector<int> perm(m.numNodes());
+  std::iota(perm.begin(), perm.end(), 0);
+  std::shuffle(perm.begin(), perm.end(), std::mt19937(seed));
+  choc::Mesh r = m;
+  for (int i = 0; i < m.numNodes(); ++i) r.coords[perm[i]] = m.coords[i];
+  for (auto& b : r.blocks)
+    for (int& n : b.connectivity) n = perm[n];
+  for (auto& s : r.nodeSets)
+    for (int& n : s.nodes) n = perm[n];
+  if (permutation) *permutation = perm;
+  return r;
+}
 
 // Same nodes, blocks, node sets and side sets (names, ids, topology, indices).
 inline void expectSameMesh(const choc::Mesh& a, const choc::Mesh& b) {
