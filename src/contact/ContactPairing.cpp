@@ -17,10 +17,14 @@ namespace {
 
 // A face of a solid: its nodes, their positions, its shape (QUAD4: the bilinear code below,
 // kept as it was; the others through the isoparametric library).
+// An edge of a planar element (2D meshes, in the x-y plane) is a "face" with one parameter:
+// its second tangent is e_z, so that dxi x e_z is the outward normal of a counter-clockwise
+// element and |dxi x e_z| the length element.
 struct Face {
   std::vector<int> nodes;
   std::vector<Point3> x;
   SolidShape shape = SolidShape::Quad4;
+  int edgeNodes = 0;  // 2 (LINE2) or 3 (LINE3) for an edge, 0 for a face
 };
 
 bool faceShape(size_t nodes, const std::string& sideTopology, SolidShape& shape) {
@@ -46,9 +50,13 @@ std::vector<Face> facesOf(const Mesh& mesh, const std::string& name) {
     f.nodes = mesh.sideNodes(ss->elements[k], ss->sides[k]);
     const ElementBlock& b = mesh.blocks[mesh.locateElement(ss->elements[k]).first];
     const Topology* t = findTopology(b.topology);
-    if (!t || !faceShape(f.nodes.size(), t->sideTopologies[ss->sides[k] - 1], f.shape))
+    const std::string sideTopo = t ? t->sideTopologies[ss->sides[k] - 1] : "";
+    if ((sideTopo == "LINE2" && f.nodes.size() == 2) || (sideTopo == "LINE3" && f.nodes.size() == 3))
+      f.edgeNodes = static_cast<int>(f.nodes.size());
+    else if (!t || !faceShape(f.nodes.size(), sideTopo, f.shape))
       throw std::invalid_argument("side set '" + name + "' has a side of a " + b.topology +
-                                  " element: contact needs faces of solids (QUAD4, QUAD8, TRI3, TRI6)");
+                                  " element: contact needs faces of solids (QUAD4, QUAD8, TRI3, "
+                                  "TRI6) or edges of planar elements (LINE2, LINE3)");
     for (int n : f.nodes) f.x.push_back(mesh.coords[n]);
     faces.push_back(f);
   }
@@ -62,7 +70,28 @@ struct FacePoint {
   std::vector<double> N;
 };
 
+// An edge at xi in [-1, 1]: LINE2 linear; LINE3 quadratic with its mid node third (Exodus).
+FacePoint evaluateEdge(const Face& f, double xi) {
+  FacePoint p;
+  std::vector<double> dN;
+  if (f.edgeNodes == 2) {
+    p.N = {0.5 * (1 - xi), 0.5 * (1 + xi)};
+    dN = {-0.5, 0.5};
+  } else {
+    p.N = {0.5 * xi * (xi - 1), 0.5 * xi * (xi + 1), 1 - xi * xi};
+    dN = {xi - 0.5, xi + 0.5, -2 * xi};
+  }
+  for (size_t a = 0; a < f.x.size(); ++a)
+    for (int d = 0; d < 3; ++d) {
+      p.x[d] += p.N[a] * f.x[a][d];
+      p.dxi[d] += dN[a] * f.x[a][d];
+    }
+  p.deta = {0.0, 0.0, 1.0};
+  return p;
+}
+
 FacePoint evaluateFace(const Face& f, double xi, double eta) {
+  if (f.edgeNodes) return evaluateEdge(f, xi);
   FacePoint p;
   if (f.shape == SolidShape::Quad4) {
     const QuadPoint q = evaluateQuad({f.x[0], f.x[1], f.x[2], f.x[3]}, xi, eta);
@@ -83,7 +112,9 @@ FacePoint evaluateFace(const Face& f, double xi, double eta) {
   return p;
 }
 
-bool isTriangle(const Face& f) { return f.shape == SolidShape::Tri3 || f.shape == SolidShape::Tri6; }
+bool isTriangle(const Face& f) {
+  return !f.edgeNodes && (f.shape == SolidShape::Tri3 || f.shape == SolidShape::Tri6);
+}
 
 // Closest point of x on a surface patch by Gauss-Newton on its parameters from (xi, eta);
 // `at(xi, eta)` gives the position and tangents there.
@@ -106,13 +137,15 @@ bool gaussNewtonProjection(const Evaluate& at, const Point3& x, double& xi, doub
 
 // Closest point of x on the face from the face's centre.
 bool projectOnFace(const Face& f, const Point3& x, double& xi, double& eta) {
-  if (f.shape == SolidShape::Quad4) return projectOnQuad({f.x[0], f.x[1], f.x[2], f.x[3]}, x, xi, eta);
+  if (!f.edgeNodes && f.shape == SolidShape::Quad4)
+    return projectOnQuad({f.x[0], f.x[1], f.x[2], f.x[3]}, x, xi, eta);
   xi = eta = isTriangle(f) ? 1.0 / 3.0 : 0.0;
   return gaussNewtonProjection([&](double s, double t) { return evaluateFace(f, s, t); }, x, xi, eta);
 }
 
 bool insideFace(const Face& f, double xi, double eta) {
   const double tol = 1e-8;
+  if (f.edgeNodes) return std::abs(xi) <= 1.0 + tol;
   if (isTriangle(f)) return xi >= -tol && eta >= -tol && xi + eta <= 1.0 + tol;
   return std::abs(xi) <= 1.0 + tol && std::abs(eta) <= 1.0 + tol;
 }
@@ -122,7 +155,7 @@ std::map<int, double> tributaryAreas(const std::vector<Face>& slave) {
   std::map<int, double> area;
   const double g = 1.0 / std::sqrt(3.0);
   for (const Face& f : slave) {
-    if (f.shape == SolidShape::Quad4) {  // 2 x 2 Gauss, as it always was
+    if (!f.edgeNodes && f.shape == SolidShape::Quad4) {  // 2 x 2 Gauss, as it always was
       for (double xi : {-g, g})
         for (double eta : {-g, g}) {
           const QuadPoint q = evaluateQuad({f.x[0], f.x[1], f.x[2], f.x[3]}, xi, eta);
@@ -134,14 +167,17 @@ std::map<int, double> tributaryAreas(const std::vector<Face>& slave) {
     }
     const int n = static_cast<int>(f.nodes.size());
     DenseMatrix m(n, n);
-    const QuadratureRule& rule = massRule(f.shape);
+    QuadratureRule line;  // 3-point Gauss on [-1, 1] for edges
+    line.points = {{-std::sqrt(0.6), 0, 0}, {0, 0, 0}, {std::sqrt(0.6), 0, 0}};
+    line.weights = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+    const QuadratureRule& rule = f.edgeNodes ? line : massRule(f.shape);
     for (int k = 0; k < rule.size(); ++k) {
       const FacePoint q = evaluateFace(f, rule.points[k][0], rule.points[k][1]);
       const double J = norm(cross(q.dxi, q.deta)) * rule.weights[k];
       for (int a = 0; a < n; ++a)
         for (int b = 0; b < n; ++b) m(a, b) += q.N[a] * q.N[b] * J;
     }
-    const bool quadratic = f.shape == SolidShape::Tri6 || f.shape == SolidShape::Quad8;
+    const bool quadratic = f.edgeNodes ? f.edgeNodes == 3 : f.shape == SolidShape::Tri6 || f.shape == SolidShape::Quad8;
     const std::vector<double> lumped = quadratic ? hrzLumping(m) : rowSumLumping(m);
     for (int a = 0; a < n; ++a) area[f.nodes[a]] += lumped[a];
   }
