@@ -18,6 +18,6 @@ choc="${1:-$here/../build/choc}"
 "$choc" mesh --dim 3 --axis z --along1 400 --along2 400 --across1 1 --across2 1 \
   --width 0.02 --height 0.02 --gap 1e-5 -o "$here/sdnl111_3d_400.exo"
 # Issue 13's gmsh example: the same bars in TET10 (needs the gmsh command, Debian package gmsh).
-gmsh -3 -order 2 -format msh41 "$here/sdnl111_3d_tet10.geo" -o "$here/sdnl111_3d_tet10.msh" > /dev/null
+gmsh -3 -order 2 -format msh41 "$here/sdnl111_3d_bars.geo" -o "$here/sdnl111_3d_tet10.msh" > /dev/null
 # Issue 13's 2D section (plane strain, axisymmetric): the bars in QUAD8.
 gmsh -2 -order 2 -format msh41 "$here/sdnl111_2d.geo" -o "$here/sdnl111_2d_quad8.msh" > /dev/null

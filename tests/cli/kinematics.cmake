@@ -1,0 +1,10 @@
+# Plane strain and axisymmetry against 3D (issue 13): SDNL111's bar wave on QUAD4 sections,
+# plane strain and axisymmetric, and on HEX8 bars, lateral motion blocked. The three discrete
+# systems reduce to the same 1D one (tensor-product shape functions; the section integrals of
+# stiffness and mass factor out alike, r-weighted in axisymmetry), so their histories of A must
+# agree to round-off: 1e-9 of the peak displacement. Meshes by gmsh (meshes/*.geo).
+add_test(NAME cli.wave_2d_equals_3d
+         COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tools/bar_convergence.py
+                 --build ${CMAKE_BINARY_DIR} --out ${CMAKE_CURRENT_BINARY_DIR}/work/wave_2d_equals_3d --levels 25
+                 --elements HEX8 QUAD4 --exact-reduction-tolerance 1e-9)
+set_tests_properties(cli.wave_2d_equals_3d PROPERTIES TIMEOUT 120 LABELS cli)
