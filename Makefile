@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-inputs bench-mesh study-modal clean
+.PHONY: all deps configure build run test study bench bench-inputs bench-mesh study-modal study-bar clean
 
 all: build
 
@@ -46,6 +46,10 @@ bench-mesh: build
 # The first 10 frequencies of a cantilever block in HEX20 and TET10 against mesh refinement.
 study-modal: build
 	$(PYTHON) tools/modal_convergence.py --build $(BUILD) --out results/modal_convergence
+
+# The SDNL111 bar wave per element type at 4 mesh levels (about 2 minutes; gmsh meshes).
+study-bar: build
+	$(PYTHON) tools/bar_convergence.py --build $(BUILD) --out results/bar_convergence --levels 25 50 100 200
 
 # Wall time of every SDNL111 input, start-up included (prints figures; not a test).
 bench-inputs: build

@@ -163,6 +163,13 @@ def order(previous, current, ratio):
     return math.log(previous / current) / math.log(ratio)
 
 
+def fitted_order(rows, key):
+    """The slope of log(error) against log(1/n), least squares over every level."""
+    x = np.log([r["n"] for r in rows])
+    y = np.log([r[key] for r in rows])
+    return float(np.polyfit(x, y, 1)[0] * -1.0)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--build", default=os.path.join(TOP, "build"))
@@ -208,6 +215,11 @@ def main():
                 print(f"{run['label']:32s} {run['unknowns']:8d} {run['steps']:6d} {emax:9.3e} "
                       f"{fmt(row['max_order']):>6s} {erms:9.3e} {fmt(row['rms_order']):>6s} "
                       f"{'' if math.isnan(vs3d) else f'{vs3d:9.2e}':>9s}", flush=True)
+            mine = [r for r in rows if r["element"] == element and r["kinematics"] == kinematics]
+            if len(mine) > 2:
+                print(f"{element} {kinematics}: fitted order over n = {a.levels}: max error "
+                      f"{fitted_order(mine, 'max_error'):.2f}, RMS error "
+                      f"{fitted_order(mine, 'rms_error'):.2f}")
     with open(os.path.join(a.out, "bar_convergence.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
