@@ -21,3 +21,5 @@ choc="${1:-$here/../build/choc}"
 gmsh -3 -order 2 -format msh41 "$here/sdnl111_3d_bars.geo" -o "$here/sdnl111_3d_tet10.msh" > /dev/null
 # Issue 13's 2D section (plane strain, axisymmetric): the bars in QUAD8.
 gmsh -2 -order 2 -format msh41 "$here/sdnl111_2d.geo" -o "$here/sdnl111_2d_quad8.msh" > /dev/null
+# SDNV100 (issue 14): the bar dropped on a rigid wall, 20 HEX8 along.
+gmsh -3 -format msh41 "$here/sdnv100_bar.geo" -o "$here/sdnv100_bar.msh" > /dev/null

@@ -23,6 +23,7 @@ EXACT_DEFAULTS = {
     "Given Wave Speed": 0.0, "Length": 1.0, "Section Area": 4e-4, "Impact Velocity": -1.0,
     "Contact Start": 0.0, "Bilateral": False, "Force Column": "",
     "Max Error Tolerance": 0.0, "RMS Error Tolerance": 0.0,
+    "Obstacle": "bar", "Point": "contact end",
 }
 
 
@@ -54,7 +55,7 @@ def read_input(path):
 
 class BarImpactExact:
     def __init__(self, length, wave_speed, impedance, impact_velocity=-1.0, contact_start=0.0,
-                 bilateral=False):
+                 bilateral=False, rigid_wall=False, free_end=False):
         for name, v in (("length", length), ("wave speed", wave_speed), ("impedance", impedance)):
             if not (math.isfinite(v) and v > 0):
                 raise ValueError(f"exact solution: {name} {v!r} must be > 0")
@@ -64,6 +65,11 @@ class BarImpactExact:
             raise ValueError(f"exact solution: contact start {contact_start!r} must be >= 0")
         self.length, self.c, self.z = length, wave_speed, impedance
         self.v0, self.t0, self.bilateral = impact_velocity, contact_start, bilateral
+        if rigid_wall and bilateral:
+            raise ValueError("exact solution: a rigid wall is unilateral")
+        if free_end and not rigid_wall:
+            raise ValueError("exact solution: the free end is available against a rigid wall only")
+        self.rigid_wall, self.free_end = rigid_wall, free_end
         self.tau = 2.0 * length / wave_speed
 
     @staticmethod
@@ -85,6 +91,11 @@ class BarImpactExact:
     def displacement(self, t):
         t, s = self._phase(t)
         v0 = self.v0
+        if self.rigid_wall:  # the free end turns at s = 1/2, the contact end at s = 1
+            start, turn = (0.5, 0.5) if self.free_end else (0.0, 1.0)
+            held = v0 * (self.t0 + (0.5 * self.tau if self.free_end else 0.0))
+            after = np.where(s < turn, held, held - v0 * (t - self.t0 - turn * self.tau))
+            return np.where(s < start, v0 * t, after)
         if self.bilateral:
             r = s - 4.0 * np.floor(s / 4.0)
             g = np.where(r < 1.0, r, np.where(r < 3.0, 2.0 - r, r - 4.0))
@@ -95,6 +106,10 @@ class BarImpactExact:
     def velocity(self, t):
         t, s = self._phase(t)
         v0 = self.v0
+        if self.rigid_wall:
+            if self.free_end:
+                return np.where(s < 0.5, v0, -v0)
+            return np.where(s < 0.0, v0, np.where(s < 1.0, 0.0, -v0))
         if self.bilateral:
             r = s - 4.0 * np.floor(s / 4.0)
             v = np.where((r < 1.0) | (r >= 3.0), 0.5 * v0, -0.5 * v0)
@@ -103,12 +118,14 @@ class BarImpactExact:
         return np.where(t < self.t0, v0, v)
 
     def force_magnitude(self):
-        return 0.5 * self.z * abs(self.v0)
+        return (1.0 if self.rigid_wall else 0.5) * self.z * abs(self.v0)
 
     def force(self, t):
         t, s = self._phase(t)
         f = self.force_magnitude()
-        if self.bilateral:
+        if self.rigid_wall:
+            v = np.where(s < 1.0, f, 0.0)
+        elif self.bilateral:
             k = np.floor(s / 2.0)
             v = np.where(np.fmod(k, 2.0) == 0.0, f, -f)
         else:
@@ -116,6 +133,8 @@ class BarImpactExact:
         return np.where(t < self.t0, 0.0, v)
 
     def peak_displacement(self):
+        if self.rigid_wall:
+            return abs(self.v0) * (self.t0 + (0.5 * self.tau if self.free_end else 0.0))
         return abs(self.v0) * (self.t0 + 0.5 * self.tau)
 
 
@@ -160,7 +179,8 @@ def exact_for_analysis(inp, analysis):
     else:
         c = p["Given Wave Speed"]
     exact = BarImpactExact(p["Length"], c, rho * c * p["Section Area"], p["Impact Velocity"],
-                           p["Contact Start"], p["Bilateral"])
+                           p["Contact Start"], p["Bilateral"], p["Obstacle"] == "rigid wall",
+                           p["Point"] == "free end")
     return ExactSpec(p, dict(m, name=mname), ws, exact)
 
 

@@ -18,10 +18,41 @@ void ImplicitStepView::stepAccepted(const StepInfo& info, const Vector& u, const
   TimerScope ts(timer_, "Transient: output");
   info_ = info;
   u_ = &u;
-  v_ = &v;
+  v_ = vScheme_ = &v;
   a_ = &a;
+  differenceMassless(u, v, a);
   if (contact_) contact_->update(u);
   outputs_.step(*this);
+}
+
+void ImplicitStepView::differenceMassless(const Vector& u, const Vector& v, const Vector& a) {
+  if (op_.masslessDofs() == 0) return;
+  if (!vOut_) {
+    vOut_ = rcp(new Vector(v, Teuchos::Copy));
+    aOut_ = rcp(new Vector(a, Teuchos::Copy));
+    uPrev_ = rcp(new Vector(u, Teuchos::Copy));
+    vPrev_ = rcp(new Vector(v, Teuchos::Copy));
+  } else {
+    vOut_->assign(v);
+    aOut_->assign(a);
+  }
+  if (info_.step > 0 && info_.dt > 0) {
+    const std::vector<char>& mask = op_.masslessMask();
+    auto ud = u.getData();
+    auto up = uPrev_->getData();
+    auto vp = vPrev_->getData();
+    auto vo = vOut_->getDataNonConst();
+    auto ao = aOut_->getDataNonConst();
+    for (size_t i = 0; i < mask.size(); ++i)
+      if (mask[i]) {
+        vo[i] = (ud[i] - up[i]) / info_.dt;
+        ao[i] = (vo[i] - vp[i]) / info_.dt;
+      }
+  }
+  uPrev_->assign(u);
+  vPrev_->assign(*vOut_);
+  v_ = vOut_.get();
+  a_ = aOut_.get();
 }
 
 StepPoint ImplicitStepView::point() const {
@@ -54,10 +85,10 @@ std::vector<double> ImplicitStepView::probeValues() const {
 
 EnergyTerms ImplicitStepView::energies() {
   EnergyTerms e;
-  e.kinetic = op_.kineticEnergy(*v_);
+  e.kinetic = op_.kineticEnergy(*vScheme_);
   e.strain = op_.strainEnergy(*u_);
   e.contact = op_.contactEnergy(*u_);
-  const double power = op_.dampingPower(*v_, e.kinetic);
+  const double power = op_.dampingPower(*vScheme_, e.kinetic);
   if (info_.step == 0) u0_ = rcp(new Vector(*u_, Teuchos::Copy));
   dissipated_ += 0.5 * info_.dt * (lastPower_ + power);
   lastPower_ = power;

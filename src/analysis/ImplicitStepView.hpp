@@ -1,7 +1,11 @@
 // The direct transient's state as the output observers see it: hung on the driver's step
 // hook, it evaluates the contact report once per accepted step, then calls the observers.
 // Energies come from the structural operator; the Rayleigh damping work is integrated here
-// by the trapezoidal rule, the loads' work is exact.
+// by the trapezoidal rule, the loads' work is exact. Massless DOFs (redistributed contact
+// mass) have no inertia to integrate: their Newmark velocity and acceleration only close the
+// scheme's relations and oscillate after a velocity jump, so the outputs (history, Exodus)
+// give them the backward differences of their displacement, v = (u_{n+1} - u_n)/dt and
+// a = (v_{n+1} - v_n)/dt; the energies use the scheme's own fields.
 #pragma once
 #include <vector>
 
@@ -37,7 +41,10 @@ class ImplicitStepView : public TransientView, public StepObserver {
   ObserverSet& outputs_;
   Teuchos::StackedTimer* timer_;
   StepInfo info_;
-  const Vector *u_ = nullptr, *v_ = nullptr, *a_ = nullptr;
+  void differenceMassless(const Vector& u, const Vector& v, const Vector& a);
+  const Vector *u_ = nullptr, *v_ = nullptr, *a_ = nullptr;  // the reported fields
+  const Vector* vScheme_ = nullptr;                           // the scheme's velocity
+  RCP<Vector> vOut_, aOut_, uPrev_, vPrev_;  // reported fields and the previous step's
   RCP<Vector> u0_;
   double dissipated_ = 0.0, lastPower_ = 0.0;
 };

@@ -149,7 +149,9 @@ void ImplicitTransient::buildContact(Model& model) {
   try {
     b_->M = model.mass(massless);
   } catch (const std::invalid_argument& e) {
-    throwInput(inputFile_, path("Contact Mass"), "redistributed", e.what());
+    if (!s_.contact.massIsAutomatic) throwInput(inputFile_, path("Contact Mass"), "redistributed", e.what());
+    b_->masslessNodes = 0;
+    b_->massFallback = e.what();
   }
 }
 
@@ -198,6 +200,8 @@ void ImplicitTransient::describe(Model& model, const StructuralOperator& op) con
                     "1^T M 1 (free DOFs, kg per direction) %.12g -> %.12g\n",
                     b_->masslessNodes, op.masslessDofs(), before, one.dot(y));
   }
+  if (!b_->massFallback.empty())
+    log() << "  contact mass: standard ('auto' could not redistribute it: " << b_->massFallback << ")\n";
   if (contact) {
     log() << "  contact: " << contact->method().name() << ", " << contact->numConstraints()
           << " slave nodes paired";

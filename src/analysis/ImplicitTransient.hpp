@@ -53,6 +53,7 @@ class ImplicitTransient : public Analysis {
     RCP<Vector> load;
     std::unique_ptr<ContactManager> contact;
     long long masslessNodes = 0;
+    std::string massFallback;  // why Contact Mass = auto kept the standard mass (empty: it did not)
     std::unique_ptr<LinearSolver> solver;
     std::vector<Probe> probes;
     std::vector<std::string> columns;

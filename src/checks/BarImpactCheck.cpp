@@ -40,6 +40,11 @@ Teuchos::ParameterList barImpactCheckParameters() {
   declareDouble(e, "Impact Velocity", -1.0, "initial velocity v0 of bar AB [m/s]");
   declareDouble(e, "Contact Start", 0.0, "time t0 at which contact starts [s]", Range::nonNegative());
   declareBool(e, "Bilateral", false, "bars tied from t = 0 (modelisation B)");
+  declareChoice(e, "Obstacle", "bar", {"bar", "rigid wall"},
+                "what the bar hits: an identical bar clamped at its far end (SDNL111) or a rigid "
+                "wall (SDNV100)");
+  declareChoice(e, "Point", "contact end", {"contact end", "free end"},
+                "where the node set lies on the bar (free end: against a rigid wall only)");
   declareString(e, "Force Column", "", "history column of the contact force to compare, if any");
   declareDouble(e, "Max Error Tolerance", 0.0,
                 "check max |u - u_exact| / peak |u_exact| over the history against this "
@@ -110,6 +115,14 @@ BarImpactCheck::BarImpactCheck(const Teuchos::ParameterList& e, const Model& mod
   bp.impactVelocity = e.get<double>("Impact Velocity");
   bp.contactStart = e.get<double>("Contact Start");
   bp.bilateral = e.get<bool>("Bilateral");
+  bp.rigidWall = e.get<std::string>("Obstacle") == "rigid wall";
+  bp.freeEnd = e.get<std::string>("Point") == "free end";
+  if (bp.freeEnd && !bp.rigidWall)
+    throwInput(site.file, site.path + "/Point", "free end", "needs 'Obstacle' = 'rigid wall'",
+               "use 'contact end' for the two-bar impact");
+  if (bp.rigidWall && bp.bilateral)
+    throwInput(site.file, site.path + "/Bilateral", "true", "a rigid wall is unilateral",
+               "set 'Bilateral' to false");
 }
 
 void BarImpactCheck::verify(const std::vector<std::string>& columns, double) const {

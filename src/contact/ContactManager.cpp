@@ -7,6 +7,9 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "core/Errors.hpp"
+#include "core/Format.hpp"
+
 namespace choc {
 
 std::vector<char> ContactManager::surfaceNodes(const Mesh& mesh) const {
@@ -20,6 +23,44 @@ std::vector<char> ContactManager::surfaceNodes(const Mesh& mesh) const {
   return flags;
 }
 
+namespace {
+
+// Constraint s: B_s u = n . (u_s - sum_i w_i u_i) over the slave node and the master face's
+// nodes. allComponents keeps every component of the slave node even where n is zero (curved
+// obstacles, whose normal turns: the matrix graph must hold every coupling).
+ContactConstraint makeConstraint(const Mesh& mesh, const DofMap& dofs, const SlaveProjection& sp,
+                                 bool allComponents) {
+  ContactConstraint c;
+  c.geometry = sp;
+  c.owner = dofs.ownerOfNode(sp.slaveNode);
+  c.reference = mesh.coords[sp.slaveNode];
+  std::vector<std::pair<GO, double>> t;
+  for (int d = 0; d < 3; ++d) {
+    const double n = sp.normal[d];
+    if (std::abs(n) < 1e-14 && !allComponents) continue;
+    const long long ds = dofs.dof(sp.slaveNode, d);
+    if (ds >= 0) t.push_back({GO(ds), n});
+    for (size_t i = 0; i < sp.masterNodes.size(); ++i) {
+      const long long dm = dofs.dof(sp.masterNodes[i], d);
+      if (dm >= 0 && sp.weights[i] != 0.0) t.push_back({GO(dm), -sp.weights[i] * n});
+    }
+  }
+  std::sort(t.begin(), t.end());
+  for (const auto& e : t) {  // merge repeated DOFs
+    if (!c.terms.empty() && c.terms.back().first == e.first) c.terms.back().second += e.second;
+    else c.terms.push_back(e);
+  }
+  if (sp.masterNodes.empty())  // an obstacle: the terms are the slave node's components
+    for (int d = 0; d < 3; ++d) {
+      const long long ds = dofs.dof(sp.slaveNode, d);
+      for (size_t k = 0; ds >= 0 && k < c.terms.size(); ++k)
+        if (c.terms[k].first == GO(ds)) c.componentTerm[d] = int(k);
+    }
+  return c;
+}
+
+}  // namespace
+
 ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const Map> map,
                                const std::vector<PairDefinition>& pairs,
                                std::unique_ptr<ContactMethod> method)
@@ -27,33 +68,16 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
   for (size_t p = 0; p < pairs_.size(); ++p) {
     PairingResult res;
     try {
-      res = pairNodeToFace(mesh, pairs_[p], static_cast<int>(p));
+      res = pairs_[p].hasObstacle ? pairNodeToObstacle(mesh, pairs_[p], static_cast<int>(p))
+                                  : pairNodeToFace(mesh, pairs_[p], static_cast<int>(p));
     } catch (const std::exception& e) {
-      throw std::invalid_argument("contact pair '" + pairs_[p].name + "': " + e.what());
+      throw PairingError(int(p), "contact pair '" + pairs_[p].name + "': " + e.what());
     }
+    hasObstacles_ = hasObstacles_ || pairs_[p].hasObstacle;
     unpaired_ += static_cast<int>(res.unpaired.size());
-    for (const SlaveProjection& sp : res.projections) {
-      ContactConstraint c;
-      c.geometry = sp;
-      c.owner = dofs.ownerOfNode(sp.slaveNode);
-      std::vector<std::pair<GO, double>> t;
-      for (int d = 0; d < 3; ++d) {
-        const double n = sp.normal[d];
-        if (std::abs(n) < 1e-14) continue;
-        const long long ds = dofs.dof(sp.slaveNode, d);
-        if (ds >= 0) t.push_back({GO(ds), n});
-        for (size_t i = 0; i < sp.masterNodes.size(); ++i) {
-          const long long dm = dofs.dof(sp.masterNodes[i], d);
-          if (dm >= 0 && sp.weights[i] != 0.0) t.push_back({GO(dm), -sp.weights[i] * n});
-        }
-      }
-      std::sort(t.begin(), t.end());
-      for (const auto& e : t) {  // merge repeated DOFs
-        if (!c.terms.empty() && c.terms.back().first == e.first) c.terms.back().second += e.second;
-        else c.terms.push_back(e);
-      }
-      constraints_.push_back(c);
-    }
+    for (const SlaveProjection& sp : res.projections)
+      constraints_.push_back(makeConstraint(mesh, dofs, sp, pairs_[p].hasObstacle &&
+                                            pairs_[p].obstacle.shape != RigidObstacle::Shape::Plane));
   }
   for (const auto& c : constraints_)
     for (const auto& t : c.terms) contactDofs_.push_back(t.first);
@@ -132,6 +156,43 @@ double ContactManager::addForces(const Vector& u, Vector& out) const {
 
 void ContactManager::applyCorrection(const std::vector<double>& d) {
   for (size_t s = 0; s < lambda_.size(); ++s) lambda_[s] += scale_ * d[s];
+}
+
+void ContactManager::beginStep(const Vector& u, double t) {
+  if (!hasObstacles_) return;
+  const std::vector<double> x = contactValues(u);
+  bool turned = false;
+  for (size_t s = 0; s < constraints_.size(); ++s) {
+    ContactConstraint& c = constraints_[s];
+    const PairDefinition& pair = pairs_[c.geometry.pair];
+    if (!pair.hasObstacle) continue;
+    Point3 pos = c.reference;
+    Vec3 us{0, 0, 0};
+    for (int d = 0; d < 3; ++d)
+      if (c.componentTerm[d] >= 0) {
+        us[d] = x[localTerms_[s][c.componentTerm[d]].first];
+        pos[d] += us[d];
+      }
+    ObstacleDistance od;
+    try {
+      od = distanceTo(pair.obstacle, pos, t);
+    } catch (const std::invalid_argument& e) {
+      throw NumericalError(format("contact pair '%s': node %d at t = %.6e s: %s", pair.name.c_str(),
+                                  c.geometry.slaveNode + 1, t, e.what()));
+    }
+    double nu = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      const int k = c.componentTerm[d];
+      if (k < 0) continue;
+      nu += od.normal[d] * us[d];
+      if (c.terms[k].second != od.normal[d]) turned = true;
+      c.terms[k].second = od.normal[d];
+      localTerms_[s][k].second = od.normal[d];
+    }
+    c.geometry.normal = od.normal;
+    c.geometry.gap0 = od.gap - nu;
+  }
+  if (turned) ++geometryVersion_;
 }
 
 void ContactManager::initialize(const Vector& u) {

@@ -7,7 +7,9 @@
 // values at the contact DOFs are summed across ranks, so every rank sees the same gaps,
 // statuses and pressures whatever the number of ranks.
 #pragma once
+#include <array>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,6 +26,17 @@ struct ContactConstraint {
   SlaveProjection geometry;
   std::vector<std::pair<GO, double>> terms;  // B_s: (global DOF, coefficient)
   int owner = 0;                             // rank owning the slave node (multiplier row)
+  // Against a rigid obstacle: the slave node's reference position and, per component, the
+  // index of its term (-1 when the component is not an unknown).
+  Point3 reference{};
+  std::array<int, 3> componentTerm{-1, -1, -1};
+};
+
+// A pair that cannot be set up (no slave node within the search distance, a slave node where
+// an obstacle's normal is undefined...): which pair, and why.
+struct PairingError : std::invalid_argument {
+  PairingError(int p, const std::string& what) : std::invalid_argument(what), pair(p) {}
+  int pair;
 };
 
 struct StatusUpdate {
@@ -33,7 +46,7 @@ struct StatusUpdate {
 
 class ContactManager {
  public:
-  // Throws std::invalid_argument (pairing problems) naming the pair and side set.
+  // Throws PairingError naming the pair and side set.
   ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const Map> map,
                  const std::vector<PairDefinition>& pairs, std::unique_ptr<ContactMethod> method);
 
@@ -57,6 +70,14 @@ class ContactManager {
   double rowResidual(int s, double gap) const;
   // lambda += scale * dLambdaScaled (the multiplier unknowns are lambda / scale).
   void applyCorrection(const std::vector<double>& dLambdaScaled);
+
+  // Before each step (and the initial state): the constraints against rigid obstacles are
+  // re-linearised at u (the last accepted state) with the obstacles placed at time t:
+  // gap(u') = d(x + u) + n . (u' - u), n the obstacle's normal at x + u. Collective. Throws
+  // NumericalError when a node reaches a point where the normal is undefined.
+  void beginStep(const Vector& u, double t);
+  // Bumped whenever a constraint's coefficients B_s change (curved obstacles).
+  int geometryVersion() const { return geometryVersion_; }
 
   void initialize(const Vector& u);          // statuses from the gaps at u, lambda = 0
   StatusUpdate updateStatus(const Vector& u);  // complementarity test, all ranks agree
@@ -88,6 +109,8 @@ class ContactManager {
   double scale_ = 1.0;
   int unpaired_ = 0;
   int version_ = 0;
+  int geometryVersion_ = 0;
+  bool hasObstacles_ = false;
 };
 
 }  // namespace choc

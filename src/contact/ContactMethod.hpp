@@ -29,8 +29,9 @@ class ContactMethod {
 // g = 0 exactly (to solver tolerance), a node enters when g < -gapTolerance and leaves when
 // lambda < 0.
 std::unique_ptr<ContactMethod> makeLagrangeContact(double gapTolerance);
-// PENALISATION: f = E_N max(0, -g), E_N [N/m] per slave node; active when g < 0.
-std::unique_ptr<ContactMethod> makePenaltyContact(double penaltyStiffness);
+// PENALISATION: f = -E_N g for an active node, E_N [N/m] per slave node; a node enters when
+// g < -gapTolerance and leaves when g >= gapTolerance.
+std::unique_ptr<ContactMethod> makePenaltyContact(double penaltyStiffness, double gapTolerance);
 // CONTINUE: augmented Lagrangian, f = lambda - c g for an active node with the constraint
 // g = 0; active when lambda - c g > 0 (entering needs g < -gapTolerance).
 std::unique_ptr<ContactMethod> makeAugmentedLagrangianContact(double coefficient,

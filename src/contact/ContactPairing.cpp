@@ -249,4 +249,19 @@ PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pa
   return res;
 }
 
+PairingResult pairNodeToObstacle(const Mesh& mesh, const PairDefinition& def, int pairIndex) {
+  PairingResult res;
+  for (const auto& [node, a] : tributaryAreas(facesOf(mesh, def.slaveSideSet))) {
+    const ObstacleDistance d = distanceTo(def.obstacle, mesh.coords[node], 0.0);
+    SlaveProjection sp;
+    sp.pair = pairIndex;
+    sp.slaveNode = node;
+    sp.normal = d.normal;
+    sp.gap0 = d.gap;
+    sp.area = a;
+    res.projections.push_back(sp);
+  }
+  return res;
+}
+
 }  // namespace choc

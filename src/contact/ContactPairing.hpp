@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/RigidObstacle.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace choc {
@@ -23,12 +24,14 @@ struct PairDefinition {
   std::string masterSideSet;  // e.g. CNT_POU1
   std::string slaveSideSet;   // e.g. CNT_POU2
   double searchDistance = 0;  // largest |g0| accepted [m]
+  bool hasObstacle = false;   // the master is a rigid obstacle (masterSideSet empty)
+  RigidObstacle obstacle{};
 };
 
 struct SlaveProjection {
   int pair = 0;
   int slaveNode = -1;
-  int masterFace = -1;              // index into the master side set
+  int masterFace = -1;              // index into the master side set (-1: an obstacle)
   std::vector<int> masterNodes;     // nodes of that face (Exodus side order)
   std::vector<double> weights;      // the face's shape functions at the projection
   double xi = 0, eta = 0;           // projection parameters in [-1, 1]^2
@@ -54,5 +57,9 @@ bool projectOnQuad(const std::array<Point3, 4>& corners, const Point3& x, double
 // Throws std::invalid_argument naming the side set when it is missing, not made of faces of
 // solids (QUAD4, QUAD8, TRI3, TRI6), or when no slave node pairs.
 PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pairIndex);
+// Every node of the slave side set against the pair's rigid obstacle at t = 0 (no master
+// nodes; normal and gap from the obstacle's geometry). Throws std::invalid_argument as above,
+// or when a node lies where the obstacle's normal is undefined.
+PairingResult pairNodeToObstacle(const Mesh& mesh, const PairDefinition& def, int pairIndex);
 
 }  // namespace choc

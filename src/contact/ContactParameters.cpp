@@ -2,6 +2,8 @@
 
 #include "core/DidYouMean.hpp"
 #include "core/Errors.hpp"
+#include "core/Format.hpp"
+#include "input/Vector3.hpp"
 #include "input/ParameterSpec.hpp"
 
 namespace choc {
@@ -16,24 +18,85 @@ void declareContactParameters(Teuchos::ParameterList& p) {
   declareDouble(ct, "Augmentation Coefficient", 1e10,
                 "c [N/m] of the augmented pressure lambda - c g (Continuous)", Range::positive());
   declareDouble(ct, "Gap Tolerance", 1e-12,
-                "penetration [m] above which an inactive node enters the active set "
-                "(Lagrange, Continuous)",
+                "penetration [m] above which an inactive node enters the active set; with "
+                "Penalty also the opening [m] above which an active node leaves it",
                 Range::nonNegative());
   declareInt(ct, "Maximum Active Set Iterations", 20,
              "Newton solves per step while the active set changes", Range::atLeast(1));
   ParameterList& pr = declareNamedSublists(ct, "Pairs", "contact pairs, by name");
-  declareRequiredString(pr, "Master Side Set", "QUAD4 faces (HEX8 sides), outward normal");
+  declareString(pr, "Master Side Set", "",
+                "faces of solids (QUAD4, QUAD8, TRI3, TRI6) or edges of planar elements (LINE2, "
+                "LINE3), outward normal; or give an 'Obstacle' instead");
   declareRequiredString(pr, "Slave Side Set", "faces whose nodes are the slave nodes");
-  declareDouble(pr, "Search Distance", 1e-3, "largest initial |gap| of a pairing [m]", Range::positive());
-  declareChoice(p, "Contact Mass", "standard", {"standard", "redistributed"},
+  declareDouble(pr, "Search Distance", 1e-3,
+                "largest initial |gap| of a pairing with a master side set [m]", Range::positive());
+  ParameterList& ob = declareSublist(pr, "Obstacle",
+                                     "a rigid obstacle given by its geometry, in place of a master "
+                                     "side set (every slave node is paired with it)");
+  declareChoice(ob, "Shape", "none", {"none", "plane", "sphere", "cylinder"},
+                "none: no obstacle; plane (body on the side 'Normal' points to), sphere or "
+                "cylinder (body outside)");
+  declareString(ob, "Point", "0 0 0",
+                "'x y z' [m]: a point of the plane, the sphere's centre, a point of the "
+                "cylinder's axis (at t = 0)");
+  declareString(ob, "Normal", "0 0 1", "'x y z': the plane's normal, towards the body");
+  declareString(ob, "Axis", "0 0 1", "'x y z': the cylinder's axis");
+  declareDouble(ob, "Radius", 0.0, "sphere or cylinder radius [m]", Range::nonNegative());
+  declareString(ob, "Velocity", "0 0 0", "'x y z' [m/s]: prescribed translation of the obstacle");
+  declareChoice(p, "Contact Mass", "auto", {"auto", "standard", "redistributed"},
                 "standard: the blocks' mass matrices as they are; redistributed: the nodes of the "
                 "contact pairs' master and slave side sets carry no mass, each element touching "
                 "them has its mass moved onto its other nodes (element mass kept in every "
-                "direction; Khenous, Laborde, Renard 2008). Removes the chatter of implicit "
-                "schemes with exactly enforced contact (Lagrange, Continuous) at weak numerical "
-                "damping, and the average-acceleration rule then keeps the energy through "
-                "impacts; the contact surfaces' displacements are found statically each step");
+                "direction; Khenous, Laborde, Renard 2008): no chatter of exactly enforced contact "
+                "and no energy created by it, the contact surfaces' displacements found statically "
+                "each step, their velocities reported as displacement differences; auto: "
+                "redistributed for Lagrange and Continuous (standard when an element has every "
+                "node on a contact surface), standard for Penalty");
 }
+
+namespace {
+
+RigidObstacle readObstacle(const ParameterList& ob, const std::string& file, const std::string& path) {
+  RigidObstacle o;
+  const std::string shape = ob.get<std::string>("Shape");
+  o.shape = shape == "plane"    ? RigidObstacle::Shape::Plane
+            : shape == "sphere" ? RigidObstacle::Shape::Sphere
+                                : RigidObstacle::Shape::Cylinder;
+  o.point = parseVector3(ob.get<std::string>("Point"), file, path + "/Point");
+  o.velocity = parseVector3(ob.get<std::string>("Velocity"), file, path + "/Velocity");
+  const char* dirKey = o.shape == RigidObstacle::Shape::Cylinder ? "Axis" : "Normal";
+  o.direction = parseVector3(ob.get<std::string>(dirKey), file, path + "/" + dirKey);
+  o.radius = ob.get<double>("Radius");
+  try {
+    return validatedObstacle(o);
+  } catch (const std::invalid_argument& e) {
+    const bool radius = o.shape != RigidObstacle::Shape::Plane && !(o.radius > 0);
+    throwInput(file, path + "/" + (radius ? "Radius" : dirKey),
+               radius ? format("%g", o.radius) : ob.get<std::string>(dirKey), e.what(),
+               radius ? "give the radius [m]" : "give a non-zero direction 'x y z'");
+  }
+}
+
+PairDefinition readPair(const ParameterList& pl, const std::string& name, const std::string& file,
+                        const std::string& path) {
+  PairDefinition d{name, pl.get<std::string>("Master Side Set"), pl.get<std::string>("Slave Side Set"),
+                   pl.get<double>("Search Distance")};
+  const ParameterList& ob = pl.sublist("Obstacle");
+  d.hasObstacle = ob.get<std::string>("Shape") != "none";
+  if (d.hasObstacle && !d.masterSideSet.empty())
+    throwInput(file, path + "/Master Side Set", d.masterSideSet, "the pair also has an 'Obstacle'",
+               "give either a master side set or an obstacle");
+  if (!d.hasObstacle && d.masterSideSet.empty())
+    throwInput(file, path, "", "the pair has neither a 'Master Side Set' nor an 'Obstacle'",
+               "name the master side set, or give 'Obstacle/Shape'");
+  if (!d.hasObstacle && d.masterSideSet == d.slaveSideSet)
+    throwInput(file, path + "/Master Side Set", d.masterSideSet,
+               "master and slave are the same surface", "pair two different side sets");
+  if (d.hasObstacle) d.obstacle = readObstacle(ob, file, path + "/Obstacle");
+  return d;
+}
+
+}  // namespace
 
 ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::string& file,
                                     const std::string& path) {
@@ -45,19 +108,19 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::
   s.augmentation = ct.get<double>("Augmentation Coefficient");
   s.gapTolerance = ct.get<double>("Gap Tolerance");
   s.maxActiveSetIterations = ct.get<int>("Maximum Active Set Iterations");
-  s.redistributeMass = p.get<std::string>("Contact Mass") == "redistributed";
+  const std::string mass = p.get<std::string>("Contact Mass");
+  s.massIsAutomatic = mass == "auto";
+  s.redistributeMass = mass == "redistributed" || (s.massIsAutomatic && s.hasMultipliers());
   if (s.enabled()) {
     const ParameterList& pairs = ct.sublist("Pairs");
     if (pairs.numParams() == 0)
       throwInput(file, path + "/Contact/Pairs", "", "contact method '" + s.method + "' needs a pair",
                  "add a sublist with 'Master Side Set' and 'Slave Side Set'");
-    for (auto it = pairs.begin(); it != pairs.end(); ++it) {
-      const ParameterList& pl = pairs.sublist(pairs.name(it));
-      s.pairs.push_back({pairs.name(it), pl.get<std::string>("Master Side Set"),
-                         pl.get<std::string>("Slave Side Set"), pl.get<double>("Search Distance")});
-    }
+    for (auto it = pairs.begin(); it != pairs.end(); ++it)
+      s.pairs.push_back(readPair(pairs.sublist(pairs.name(it)), pairs.name(it), file,
+                                 path + "/Contact/Pairs/" + pairs.name(it)));
   }
-  if (s.redistributeMass && !s.enabled())
+  if (mass == "redistributed" && !s.enabled())
     throwInput(file, path + "/Contact Mass", "redistributed", "there are no contact surfaces",
                "set 'Contact/Method' and 'Contact/Pairs', or use 'standard'");
   return s;
@@ -67,7 +130,7 @@ namespace {
 
 std::unique_ptr<ContactMethod> makeContactMethod(const ContactSettings& s) {
   if (s.method == "Lagrange") return makeLagrangeContact(s.gapTolerance);
-  if (s.method == "Penalty") return makePenaltyContact(s.penaltyStiffness);
+  if (s.method == "Penalty") return makePenaltyContact(s.penaltyStiffness, s.gapTolerance);
   return makeAugmentedLagrangianContact(s.augmentation, s.gapTolerance);
 }
 
@@ -87,14 +150,19 @@ std::unique_ptr<ContactManager> makeContactManager(const ContactSettings& s, con
   if (!s.enabled()) return nullptr;
   for (const auto& pair : s.pairs) {
     const std::string pp = s.path + "/Contact/Pairs/" + pair.name;
-    requireSideSet(mesh, pair.masterSideSet, file, pp + "/Master Side Set");
+    if (!pair.hasObstacle) requireSideSet(mesh, pair.masterSideSet, file, pp + "/Master Side Set");
     requireSideSet(mesh, pair.slaveSideSet, file, pp + "/Slave Side Set");
   }
   try {
     return std::make_unique<ContactManager>(mesh, dofs, map, s.pairs, makeContactMethod(s));
-  } catch (const std::invalid_argument& e) {
-    throwInput(file, s.path + "/Contact/Pairs", "", e.what(),
-               "check the side set names and 'Search Distance'");
+  } catch (const PairingError& e) {
+    const PairDefinition& pair = s.pairs[e.pair];
+    const std::string pp = s.path + "/Contact/Pairs/" + pair.name;
+    if (pair.hasObstacle)
+      throwInput(file, pp + "/Obstacle", shapeName(pair.obstacle.shape), e.what(),
+                 "move the obstacle or the slave side set");
+    throwInput(file, pp + "/Search Distance", format("%g", pair.searchDistance), e.what(),
+               "check the side set names, or raise 'Search Distance' above the initial gaps");
   }
 }
 

@@ -20,7 +20,8 @@ struct ContactSettings {
   double penaltyStiffness = 0, augmentation = 0, gapTolerance = 0;
   int maxActiveSetIterations = 20;
   std::vector<PairDefinition> pairs;
-  bool redistributeMass = false;  // 'Contact Mass' = redistributed
+  bool redistributeMass = false;  // 'Contact Mass' = redistributed, or auto with multipliers
+  bool massIsAutomatic = false;   // 'Contact Mass' = auto: may fall back to standard
   std::string path;               // "Analyses/<name>", for messages
   bool enabled() const { return method != "None"; }
   bool hasMultipliers() const { return method == "Lagrange" || method == "Continuous"; }

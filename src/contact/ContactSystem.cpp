@@ -160,7 +160,12 @@ void ContactSystem::fill(double aM, double aK) {
 }
 
 std::vector<char> ContactSystem::statusKey() const {
-  return contact_ ? contact_->status() : std::vector<char>();
+  if (!contact_) return {};
+  std::vector<char> key = contact_->status();
+  const int g = contact_->geometryVersion();  // the coefficients of curved obstacles' rows
+  const char* b = reinterpret_cast<const char*>(&g);
+  key.insert(key.end(), b, b + sizeof g);
+  return key;
 }
 
 void ContactSystem::rightHandSide(const Vector& r, const Vector& u, MultiVector& b) const {

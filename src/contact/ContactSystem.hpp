@@ -26,7 +26,8 @@ class ContactSystem {
   // the multiplier rows scaled by the largest diagonal of aM M + aK K (a balanced system).
   void fill(double aM, double aK);
   RCP<const CrsMatrix> matrix() const { return A_; }
-  // What the factored matrix depends on besides (aM, aK): the contact statuses.
+  // What the factored matrix depends on besides (aM, aK): the contact statuses and the
+  // version of the constraints' coefficients.
   std::vector<char> statusKey() const;
 
   // b = -r on the DOF rows and, on a multiplier row, the constraint's residual at u.

@@ -228,6 +228,12 @@ CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, c
   return st;
 }
 
+void StructuralOperator::beginStep(const Vector& u, double t) {
+  if (!contact_) return;
+  TimerScope ts(timer_, "Transient: contact");
+  contact_->beginStep(u, t);
+}
+
 ConstraintUpdate StructuralOperator::updateConstraints(const Vector& u) {
   ConstraintUpdate up;
   if (!contact_) return up;

@@ -38,6 +38,7 @@ class StructuralOperator : public SecondOrderOperator {
   // acceleration is solved by blocks; see the .cpp. Otherwise the default (W = M).
   CorrectionStatus solveInitialAcceleration(const Vector& u, const Vector& r, Vector& a) override;
   ConstraintUpdate updateConstraints(const Vector& u) override;
+  void beginStep(const Vector& u, double t) override;
   void initializeConstraints(const Vector& u) override;
   void saveState() override;
   void restoreState() override;
@@ -54,6 +55,7 @@ class StructuralOperator : public SecondOrderOperator {
   const LinearSolver& solver() const { return *solver_; }
   int unknowns() const;  // global rows of the solved system (DOFs + pressure unknowns)
   long long masslessDofs() const { return masslessGlobal_; }  // DOFs whose mass row is zero
+  const std::vector<char>& masslessMask() const { return massless_; }  // per local DOF
 
  private:
   RCP<const CrsMatrix> K_, M_;

@@ -40,6 +40,10 @@ BarImpactExact::BarImpactExact(const BarImpactParameters& p) : p_(p) {
   requireFinite("contactStart", p.contactStart);
   if (p.contactStart < 0.0)
     throwInput(kFile, "contactStart", show(p.contactStart), "must be >= 0");
+  if (p.rigidWall && p.bilateral)
+    throwInput(kFile, "bilateral", "true", "a rigid wall is unilateral");
+  if (p.freeEnd && !p.rigidWall)
+    throwInput(kFile, "freeEnd", "true", "the free end is available against a rigid wall only");
   tau_ = 2.0 * p.length / p.waveSpeed;
   if (!(tau_ > 0.0) || !std::isfinite(tau_))
     throwInput(kFile, "waveSpeed", show(p.waveSpeed), "gives a transit time 2L/c that is not a "
@@ -74,6 +78,12 @@ double BarImpactExact::phase(double t) const {
 double BarImpactExact::displacementA(double t) const {
   const double s = phase(t);
   const double v0 = p_.impactVelocity;
+  if (p_.rigidWall) {  // s in units of 2L/c: the free end turns at s = 1/2, the contact end at 1
+    const double turn = p_.freeEnd ? 0.5 : 1.0, t0 = p_.contactStart;
+    if (s < (p_.freeEnd ? 0.5 : 0.0)) return v0 * t;
+    const double held = v0 * (t0 + (p_.freeEnd ? 0.5 * tau_ : 0.0));
+    return s < turn ? held : held - v0 * (t - t0 - turn * tau_);
+  }
   if (t < p_.contactStart) return v0 * t;
   double g;
   if (p_.bilateral) {
@@ -88,6 +98,10 @@ double BarImpactExact::displacementA(double t) const {
 double BarImpactExact::velocityA(double t) const {
   const double s = phase(t);
   const double v0 = p_.impactVelocity;
+  if (p_.rigidWall) {
+    if (p_.freeEnd) return s < 0.5 ? v0 : -v0;
+    return s < 0.0 ? v0 : (s < 1.0 ? 0.0 : -v0);
+  }
   if (t < p_.contactStart) return v0;
   if (p_.bilateral) {
     const double r = s - 4.0 * std::floor(s / 4.0);
@@ -100,6 +114,7 @@ double BarImpactExact::contactForce(double t) const {
   const double s = phase(t);
   if (t < p_.contactStart) return 0.0;
   const double f = contactForceMagnitude();
+  if (p_.rigidWall) return s < 1.0 ? f : 0.0;
   if (p_.bilateral) {
     const double halfPeriods = std::floor(s / 2.0);
     return std::fmod(halfPeriods, 2.0) == 0.0 ? f : -f;
@@ -108,14 +123,16 @@ double BarImpactExact::contactForce(double t) const {
 }
 
 double BarImpactExact::peakDisplacement() const {
+  if (p_.rigidWall) return absV0() * (p_.contactStart + (p_.freeEnd ? 0.5 * tau_ : 0.0));
   return absV0() * (p_.contactStart + 0.5 * tau_);
 }
 
 double BarImpactExact::contactEnd() const {
-  return p_.bilateral ? std::numeric_limits<double>::infinity() : p_.contactStart + 2.0 * tau_;
+  return p_.contactStart + contactDuration();
 }
 
 double BarImpactExact::contactDuration() const {
+  if (p_.rigidWall) return tau_;
   return p_.bilateral ? std::numeric_limits<double>::infinity() : 2.0 * tau_;
 }
 

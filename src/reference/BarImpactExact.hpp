@@ -11,6 +11,10 @@
 // Contact force (compression positive): Z|v0|/2 with Z = rho c S while in contact;
 // bilateral: +Z|v0|/2 on [2k tau, 2(k+1) tau) for even k, -Z|v0|/2 (tension) for odd k.
 // At a discontinuity (velocity, force) the right limit is returned.
+//
+// Against a rigid wall instead of the second bar (SDNV100), with T = L/c: the contact end is
+// at rest from t0 to t0 + 2T, then leaves at -v0; the free end moves at v0 until t0 + T,
+// then at -v0; the contact force is Z|v0| during [t0, t0 + 2T).
 #pragma once
 
 namespace choc {
@@ -22,6 +26,8 @@ struct BarImpactParameters {
   double impactVelocity = -1.0;  // v0 of bar AB, towards CD (negative) [m/s]
   double contactStart = 0.0;     // t0: 0 in the 1D models, J0/|v0| in the 3D models [s]
   bool bilateral = false;        // modelisation B: the bars are tied from t0 on
+  bool rigidWall = false;        // the bar hits a rigid wall (not bilateral)
+  bool freeEnd = false;          // with rigidWall: the point is the free end, not the contact end
 };
 
 class BarImpactExact {
@@ -39,8 +45,10 @@ class BarImpactExact {
   double velocityA(double t) const;      // v_A(t) [m/s]
   double contactForce(double t) const;   // [N], compression positive
 
-  double contactForceMagnitude() const { return 0.5 * p_.impedance * absV0(); }  // Z|v0|/2
+  // Z|v0|/2 (Z|v0| against a rigid wall)
+  double contactForceMagnitude() const { return (p_.rigidWall ? 1.0 : 0.5) * p_.impedance * absV0(); }
   double peakDisplacement() const;  // max |u_A| over the first contact: |v0| (t0 + L/c)
+                                    // (rigid wall: |v0| t0 at the contact end)
   double transitTime() const { return tau_; }       // tau = 2L/c
   double contactStart() const { return p_.contactStart; }
   double contactEnd() const;       // t0 + 2 tau; +infinity when bilateral

@@ -60,6 +60,9 @@ class SecondOrderOperator {
     mass.ca = 1.0;
     return solveCorrection(mass, u, r, a);
   }
+  // Before the step to time t from the accepted state u (and before the initial state, with
+  // t the start time): constraints that follow the motion are updated.
+  virtual void beginStep(const Vector& /*u*/, double /*t*/) {}
   // Re-evaluates the constraint status at u (after a converged Newton solve).
   virtual ConstraintUpdate updateConstraints(const Vector& u) = 0;
   // Initial status from u (before the first step).

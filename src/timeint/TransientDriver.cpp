@@ -28,6 +28,7 @@ NewtonOutcome TransientDriver::attempt(double t, double dt) {
   const double beta = scheme_.beta(), gamma = scheme_.gamma();
   const double af = scheme_.alphaF(), am = scheme_.alphaM();
   const double t1 = t + dt;
+  op_.beginStep(*u0_, t1);
   // Predictors: u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n, v~ = v_n + dt (1 - gamma) a_n.
   uTilde_->update(1.0, *u0_, dt, *v0_, 0.0);
   uTilde_->update(dt * dt * (0.5 - beta), *a0_, 1.0);
@@ -76,6 +77,7 @@ TransientSummary TransientDriver::run(Vector& u, Vector& v) {
   v0_->assign(v);
   // Initial acceleration from equilibrium: M a0 = -(F(u0, v0, t0) + f_c(u0)).
   {
+    op_.beginStep(*u0_, t0);
     op_.initializeConstraints(*u0_);
     Vector r(op_.map());
     op_.applyForces(*u0_, *v0_, t0, r);

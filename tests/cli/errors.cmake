@@ -145,6 +145,16 @@ choc_cli_reference_error(modal_basis_not_computed bad_modal_basis.xml
   "parameter 'Analyses/shock/Modal Basis' = 'mode': no modal basis of that name has been computed. did you mean 'modes'. name a Modal analysis listed before this one in Analyses .listed before: modes.")
 choc_cli_reference_error(contact_side_set_not_in_mesh bad_contact_side_set.xml
   "parameter 'Analyses/impact/Contact/Pairs/interface/Master Side Set' = 'CNT_POU3': no side set of that name in the mesh. did you mean 'CNT_POU1'. side sets: ")
+choc_cli_reference_error(contact_same_surface bad_contact_same_surface.xml
+  "parameter 'Analyses/impact/Contact/Pairs/interface/Master Side Set' = 'CNT_POU2': master and slave are the same surface. pair two different side sets")
+choc_cli_reference_error(contact_without_master bad_contact_no_master.xml
+  "parameter 'Analyses/impact/Contact/Pairs/interface': the pair has neither a 'Master Side Set' nor an 'Obstacle'. name the master side set, or give 'Obstacle/Shape'")
+choc_cli_reference_error(contact_beyond_search_distance bad_contact_search_distance.xml
+  "parameter 'Analyses/impact/Contact/Pairs/interface/Search Distance' = '1e-06': contact pair 'interface': no node of slave side set 'CNT_POU2' projects onto a face of master side set 'CNT_POU1' within the search distance 0.000001 m. check the side set names, or raise 'Search Distance' above the initial gaps")
+choc_cli_reference_error(obstacle_zero_normal bad_obstacle_zero_normal.xml
+  "parameter 'Analyses/impact/Contact/Pairs/interface/Obstacle/Normal' = '0 0 0': the plane's normal is zero. give a non-zero direction 'x y z'")
+choc_cli_reference_error(obstacle_zero_radius bad_obstacle_zero_radius.xml
+  "parameter 'Analyses/impact/Contact/Pairs/interface/Obstacle/Radius' = '0': the sphere's radius must be > 0. give the radius \\[m\\]")
 choc_cli_reference_error(cg_with_contact_multipliers bad_cg_multiplier.xml
   "parameter 'Analyses/impact/Linear Solver/Method' = 'CG': the saddle-point system of contact method 'Lagrange' is indefinite. use Direct, GMRES or MINRES")
 

@@ -89,7 +89,7 @@ void staticCompression(const std::string& method, int across2, bool exactPressur
   Model model(*d.input, d.file, comm);
   const double F = 1e5, EN = 1e10;
   std::unique_ptr<ContactMethod> m = method == "Lagrange" ? makeLagrangeContact(1e-12)
-                                     : method == "Penalty" ? makePenaltyContact(EN)
+                                     : method == "Penalty" ? makePenaltyContact(EN, 1e-12)
                                                            : makeAugmentedLagrangianContact(EN, 1e-12);
   ContactManager cm(model.mesh(), model.dofs(), model.map(), {{"ifc", "CNT_POU1", "CNT_POU2", 1e-3}},
                     std::move(m));

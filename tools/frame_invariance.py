@@ -1,0 +1,133 @@
+#!/usr/bin/env python3
+"""Frame invariance of a contact scene (BENCHMARKS section 8): SDNV100 turned as a rigid whole.
+
+usage: tools/frame_invariance.py [--build DIR] [--out DIR] [--angle RAD] [--axis X Y Z]
+                                 [--tolerance T] [--cost-tolerance C]
+
+Runs input/sdnv100.xml twice with every displacement component free (nu = 0, so the wave stays
+1D): once as drawn, once with the bar, its initial velocity and the wall turned by the rotation
+R (angle about axis, through the origin; the mesh made by gmsh from meshes/sdnv100_bar.geo with
+the turned section and extrusion). The motion of N5 and N100 seen in the turned frame, R^T u,
+must equal the unturned motion to TOL times the peak displacement (default 1e-8), the wall
+force likewise, and the cost (Newton iterations, factorisations) must agree within C (default
+10%). Exit 0 when it holds, 1 otherwise (naming what differs). `ctest -R frame_invariance`.
+"""
+import argparse
+import math
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+LENGTH = 0.2
+
+
+def rotation(angle, axis):
+    k = np.asarray(axis, float)
+    k /= np.linalg.norm(k)
+    kx = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + math.sin(angle) * kx + (1 - math.cos(angle)) * kx @ kx
+
+
+def vec(v):
+    return " ".join(repr(float(x)) for x in v)
+
+
+def deck(mesh, R):
+    """input/sdnv100.xml with every component free, turned by R, without its checks."""
+    s = open(os.path.join(TOP, "input", "sdnv100.xml")).read()
+    s = s.replace('value="../meshes/sdnv100_bar.msh"', f'value="{mesh}"')
+    s = s.replace('<Parameter name="Active Components" type="string" value="DZ"/>',
+                  '<Parameter name="Active Components" type="string" value="DX DY DZ"/>')
+    s = s.replace('value="0 0 -0.002"', f'value="{vec(R @ [0, 0, -0.002])}"')
+    s = s.replace('<Parameter name="Normal" type="string" value="0 0 1"/>',
+                  f'<Parameter name="Normal" type="string" value="{vec(R @ [0, 0, 1])}"/>')
+    v = R @ [0, 0, -100.0]
+    ic = "".join(f'''<ParameterList name="v{c}">
+          <Parameter name="Node Set" type="string" value="BAR"/>
+          <Parameter name="Field" type="string" value="Velocity"/>
+          <Parameter name="Components" type="string" value="D{c}"/>
+          <Parameter name="Value" type="double" value="{v[i]!r}"/>
+        </ParameterList>''' for i, c in enumerate("XYZ"))
+    s = re.sub(r'<ParameterList name="the bar falls at 100 m/s">.*?</ParameterList>', ic, s,
+               flags=re.S)
+    s = s.replace('value="N5:DZ N5:VZ N100:DZ N100:VZ"',
+                  'value="N5:DX N5:DY N5:DZ N100:DX N100:DY N100:DZ"')
+    s = re.sub(r'<ParameterList name="Checks">.*?\n      </ParameterList>\n', '', s, flags=re.S)
+    return s
+
+
+def run(a, label, R, turned):
+    work = os.path.join(a.out, label)
+    os.makedirs(work, exist_ok=True)
+    mesh = os.path.join(work, "bar.msh")
+    cmd = ["gmsh", "-3", "-format", "msh41", os.path.join(TOP, "meshes", "sdnv100_bar.geo"),
+           "-o", mesh]
+    if turned:
+        axis = np.asarray(a.axis, float)
+        d = R @ [0, 0, LENGTH]
+        for name, value in (("angle", a.angle), ("ax", axis[0]), ("ay", axis[1]), ("az", axis[2]),
+                            ("dx", d[0]), ("dy", d[1]), ("dz", d[2])):
+            cmd[2:2] = ["-setnumber", name, repr(float(value))]
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    path = os.path.join(work, "scene.xml")
+    with open(path, "w") as f:
+        f.write(deck(mesh, R))
+    log = subprocess.run([os.path.join(a.build, "choc"), "run", path, "-o", work],
+                         capture_output=True, text=True)
+    if log.returncode != 0:
+        sys.exit(f"frame_invariance: {label} run failed ({log.returncode}): {log.stderr.strip()}")
+    cost = {m.group(1): (int(m.group(2)), int(m.group(3))) for m in re.finditer(
+        r"analysis '(\w+)' \(Transient\).*?(\d+) Newton iterations.*?(\d+) factorisations",
+        log.stdout, re.S)}
+    runs = {}
+    for name in cost:
+        d = np.genfromtxt(os.path.join(work, f"{name}.history.csv"), delimiter=",", names=True)
+        runs[name] = d
+    return runs, cost
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--build", default=os.path.join(TOP, "build"))
+    ap.add_argument("--out", default=os.path.join(TOP, "results", "frame_invariance"))
+    ap.add_argument("--angle", type=float, default=0.7)
+    ap.add_argument("--axis", type=float, nargs=3, default=[1.0, 2.0, 0.5])
+    ap.add_argument("--tolerance", type=float, default=1e-8)
+    ap.add_argument("--cost-tolerance", type=float, default=0.10)
+    a = ap.parse_args()
+    R = rotation(a.angle, a.axis)
+    ref, ref_cost = run(a, "as_drawn", np.eye(3), False)
+    rot, rot_cost = run(a, "turned", R, True)
+    failures = []
+    for name in ref:
+        d0, d1 = ref[name], rot[name]
+        for node in ("N5", "N100"):
+            u0 = np.column_stack([d0[f"{node}D{c}"] for c in "XYZ"])
+            u1 = np.column_stack([d1[f"{node}D{c}"] for c in "XYZ"]) @ R  # rows: R^T u
+            peak = np.abs(u0).max()
+            diff = np.abs(u1 - u0).max() / peak
+            print(f"{name} {node}: max |R^T u_turned - u| = {diff:.2e} of the peak {peak:.3e} m")
+            if not diff <= a.tolerance:
+                failures.append(f"{name} {node} differs by {diff:.2e} of the peak")
+        f0, f1 = d0["wallforce"], d1["wallforce"]
+        fdiff = np.abs(f1 - f0).max() / np.abs(f0).max()
+        print(f"{name} wall force: max difference {fdiff:.2e} of the peak")
+        if not fdiff <= a.tolerance:
+            failures.append(f"{name} wall force differs by {fdiff:.2e} of the peak")
+        for k, what in enumerate(("Newton iterations", "factorisations")):
+            c0, c1 = ref_cost[name][k], rot_cost[name][k]
+            print(f"{name} {what}: {c0} as drawn, {c1} turned")
+            if abs(c1 - c0) > a.cost_tolerance * c0:
+                failures.append(f"{name} {what} {c1} turned against {c0}")
+    if failures:
+        sys.exit("frame_invariance: " + "; ".join(failures))
+    print(f"frame_invariance: the turned scene gives the same motion within {a.tolerance} of the "
+          "peak and the same cost")
+
+
+if __name__ == "__main__":
+    main()
