@@ -167,3 +167,43 @@ TEST(BarImpactExact, InvalidParametersAreInputErrors) {
 }
 
 }  // namespace
+
+// A bar of length L dropped on a rigid wall (SDNV100: L = 0.2 m, c = 5000 m/s, v0 = -100 m/s,
+// t0 = 2e-5 s): the contact end rests for 2L/c, the free end turns at t0 + L/c, both leave at
+// -v0; the force Z|v0| over 2L/c reverses the bar's momentum; displacement and velocity agree.
+TEST(BarImpactExact, RigidWallBothEnds) {
+  BarImpactParameters p;
+  p.length = 0.2;
+  p.waveSpeed = 5000.0;
+  p.impedance = 8000.0 * 5000.0 * 4e-4;
+  p.impactVelocity = -100.0;
+  p.contactStart = 2e-5;
+  p.rigidWall = true;
+  const BarImpactExact contact(p);
+  p.freeEnd = true;
+  const BarImpactExact free(p);
+  EXPECT_DOUBLE_EQ(contact.contactDuration(), 8e-5);
+  EXPECT_DOUBLE_EQ(contact.contactForceMagnitude(), 1.6e6);
+  // The deck's rows (BENCHMARKS section 1).
+  EXPECT_NEAR(contact.displacementA(2e-5), -2e-3, 1e-15);
+  EXPECT_NEAR(contact.displacementA(1e-4), -2e-3, 1e-15);
+  EXPECT_NEAR(free.displacementA(4e-5), -4e-3, 1e-15);
+  EXPECT_NEAR(free.displacementA(1.2e-4), 0.0, 1e-15);
+  EXPECT_DOUBLE_EQ(contact.velocityA(5e-5), 0.0);
+  EXPECT_DOUBLE_EQ(contact.velocityA(1.2e-4), 100.0);
+  EXPECT_DOUBLE_EQ(free.velocityA(4e-5), -100.0);
+  EXPECT_DOUBLE_EQ(free.velocityA(1.2e-4), 100.0);
+  EXPECT_DOUBLE_EQ(free.peakDisplacement(), 6e-3);
+  const double m = 8000.0 * 4e-4 * 0.2;
+  EXPECT_NEAR(contact.contactForceMagnitude() * contact.contactDuration(), 2 * m * 100.0, 1e-9);
+  const double h = 1e-9;
+  for (const BarImpactExact* e : {&contact, &free})
+    for (double t = 1.3e-6; t < 2e-4; t += 1.7e-6) {
+      if (std::abs(t - 2e-5) < 2 * h || std::abs(t - 6e-5) < 2 * h || std::abs(t - 1e-4) < 2 * h)
+        continue;
+      EXPECT_NEAR((e->displacementA(t + h) - e->displacementA(t - h)) / (2 * h), e->velocityA(t),
+                  1e-4) << t;
+    }
+  p.bilateral = true;
+  EXPECT_THROW(BarImpactExact{p}, choc::InputError);
+}
