@@ -93,7 +93,11 @@ EnergyTerms ImplicitStepView::energies() {
   dissipated_ += 0.5 * info_.dt * (lastPower_ + power);
   lastPower_ = power;
   e.dissipated = dissipated_;
-  e.external = op_.loadWork(*u_, *u0_);
+  // Work of moving obstacles: trapezoidal rule on their power.
+  const double obstaclePower = contact_ ? contact_->obstaclePower() : 0.0;
+  obstacleWork_ += 0.5 * info_.dt * (lastObstaclePower_ + obstaclePower);
+  lastObstaclePower_ = obstaclePower;
+  e.external = op_.loadWork(*u_, *u0_) + obstacleWork_;
   return e;
 }
 

@@ -61,6 +61,16 @@ std::vector<double> ContactReport::globalValues() const {
   return {total, double(contact_.activeCount())};
 }
 
+double ContactReport::obstaclePower() const {
+  double p = 0.0;
+  for (int s = 0; s < contact_.numConstraints(); ++s) {
+    const auto& geo = contact_.constraints()[s].geometry;
+    const PairDefinition& pair = contact_.pair(geo.pair);
+    if (pair.hasObstacle) p += forces_[s] * dot(geo.normal, pair.obstacle.velocity);
+  }
+  return p;
+}
+
 std::string ContactReport::progressNote() const {
   return std::to_string(contact_.activeCount()) + " contact nodes active";
 }

@@ -22,6 +22,9 @@ class ContactReport : public InteractionOutput {
   std::vector<std::string> globalNames() const override;
   std::vector<double> globalValues() const override;
   std::string progressNote() const override;
+  // Power [W] the moving rigid obstacles give the body at the recorded state: sum over their
+  // slave nodes of the normal force times the obstacle's velocity along the normal.
+  double obstaclePower() const;
 
  private:
   const ContactManager& contact_;
