@@ -26,6 +26,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "input/ParameterSpec.hpp"
+#include "core/Errors.hpp"
 #include "core/Log.hpp"
 
 namespace choc {
@@ -36,6 +37,11 @@ inline void declareEnergyBalance(Teuchos::ParameterList& p) {
                 "W_external(t) (history column energy:balance), relative to the initial total "
                 "energy (or the largest |W_external| if larger); a warning is logged once when "
                 "it is exceeded",
+                Range::positive());
+  declareDouble(p, "Energy Balance Limit", 10.0,
+                "the run stops as a numerical failure (exit 2) when the energy balance exceeds "
+                "this many times the initial total energy (or the largest |W_external| if "
+                "larger): energy created on that scale is an unstable solution, not a result",
                 Range::positive());
   declareChoice(p, "Energy Balance Warning", "growth", {"growth", "drift", "off"},
                 "growth: warn when the balance exceeds +tol E0 (the scheme created energy); "
@@ -48,6 +54,7 @@ class EnergyBalanceMonitor {
  public:
   EnergyBalanceMonitor(const Teuchos::ParameterList& p, std::string what)
       : what_(std::move(what)), tol_(p.get<double>("Energy Balance Tolerance")),
+        limit_(p.get<double>("Energy Balance Limit")),
         mode_(p.get<std::string>("Energy Balance Warning")) {}
 
   // Called once per recorded state, in time order; the first call fixes E_total(t0).
@@ -79,6 +86,17 @@ class EnergyBalanceMonitor {
     }
     lowest_ = std::min(lowest_, balance);
     highest_ = std::max(highest_, balance);
+    const double fixedRef = std::max(e0_, maxExternal_);  // not the total, which a blow-up grows
+    if (fixedRef > 0 && balance > limit_ * fixedRef) {
+      char b[400];
+      std::snprintf(b, sizeof b,
+                    "%s: energy balance %+.4e J at t = %.6e s exceeds %.3g x %.4e J ('Energy "
+                    "Balance Limit'): the solution is unstable; lower the time step or add "
+                    "numerical damping (with Lagrange or Continuous contact: 'Contact Mass' = "
+                    "'redistributed')",
+                    what_.c_str(), balance, t, limit_, fixedRef);
+      throw NumericalError(b);
+    }
     return balance;
   }
 
@@ -93,7 +111,7 @@ class EnergyBalanceMonitor {
 
  private:
   std::string what_;
-  double tol_;
+  double tol_, limit_;
   std::string mode_;
   bool first_ = true, warned_ = false;
   double e0_ = 0.0, maxExternal_ = 0.0, maxTotal_ = 0.0;
