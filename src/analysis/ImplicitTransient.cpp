@@ -142,7 +142,8 @@ RCP<Vector> ImplicitTransient::assembleLoads(const Model& model) const {
 
 // The contact pairs, and the mass with the contact surfaces massless when redistributed.
 void ImplicitTransient::buildContact(Model& model) {
-  b_->contact = makeContactManager(s_.contact, model.mesh(), model.dofs(), model.map(), inputFile_);
+  b_->contact = makeContactManager(s_.contact, model.mesh(), model.dofs(), model.map(), inputFile_,
+                                   model.kinematics() == Kinematics::Axisymmetric);
   if (!s_.contact.redistributeMass) return;
   const std::vector<char> massless = b_->contact->surfaceNodes(model.mesh());
   for (char c : massless) b_->masslessNodes += c;

@@ -214,6 +214,10 @@ StatusUpdate ContactManager::updateStatus(const Vector& u) {
     if (now != bool(status_[s])) {
       changedLocal = 1;
       (now ? up.entered : up.left)++;
+      const std::string name = "pair '" + pairs_[constraints_[s].geometry.pair].name + "'";
+      if (up.where.find(name) == std::string::npos)
+        up.where += (up.where.empty() ? "" : ", ") + name + " (node " +
+                    std::to_string(constraints_[s].geometry.slaveNode + 1) + ")";
       status_[s] = now;
       if (!now) lambda_[s] = 0.0;
     }

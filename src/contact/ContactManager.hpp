@@ -42,6 +42,7 @@ struct PairingError : std::invalid_argument {
 struct StatusUpdate {
   bool changed = false;
   int active = 0, entered = 0, left = 0;
+  std::string where;  // the pairs whose nodes switched, e.g. "pair 'wall' (node 12, ...)"
 };
 
 class ContactManager {

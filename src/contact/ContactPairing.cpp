@@ -151,7 +151,8 @@ bool insideFace(const Face& f, double xi, double eta) {
 }
 
 // Each slave node's share of the slave surface's area.
-std::map<int, double> tributaryAreas(const std::vector<Face>& slave) {
+// (axisymmetric: the edges are rings, their length element weighted by 2 pi r).
+std::map<int, double> tributaryAreas(const std::vector<Face>& slave, bool axisymmetric) {
   std::map<int, double> area;
   const double g = 1.0 / std::sqrt(3.0);
   for (const Face& f : slave) {
@@ -173,7 +174,8 @@ std::map<int, double> tributaryAreas(const std::vector<Face>& slave) {
     const QuadratureRule& rule = f.edgeNodes ? line : massRule(f.shape);
     for (int k = 0; k < rule.size(); ++k) {
       const FacePoint q = evaluateFace(f, rule.points[k][0], rule.points[k][1]);
-      const double J = norm(cross(q.dxi, q.deta)) * rule.weights[k];
+      const double ring = axisymmetric && f.edgeNodes ? 2.0 * M_PI * q.x[0] : 1.0;
+      const double J = norm(cross(q.dxi, q.deta)) * rule.weights[k] * ring;
       for (int a = 0; a < n; ++a)
         for (int b = 0; b < n; ++b) m(a, b) += q.N[a] * q.N[b] * J;
     }
@@ -209,7 +211,7 @@ bool projectOnQuad(const std::array<Point3, 4>& c, const Point3& x, double& xi, 
 
 PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pairIndex) {
   const std::vector<Face> master = facesOf(mesh, def.masterSideSet);
-  const std::map<int, double> area = tributaryAreas(facesOf(mesh, def.slaveSideSet));
+  const std::map<int, double> area = tributaryAreas(facesOf(mesh, def.slaveSideSet), def.axisymmetric);
   PairingResult res;
   for (const auto& [node, a] : area) {
     const Point3& xs = mesh.coords[node];
@@ -251,7 +253,7 @@ PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pa
 
 PairingResult pairNodeToObstacle(const Mesh& mesh, const PairDefinition& def, int pairIndex) {
   PairingResult res;
-  for (const auto& [node, a] : tributaryAreas(facesOf(mesh, def.slaveSideSet))) {
+  for (const auto& [node, a] : tributaryAreas(facesOf(mesh, def.slaveSideSet), def.axisymmetric)) {
     const ObstacleDistance d = distanceTo(def.obstacle, mesh.coords[node], 0.0);
     SlaveProjection sp;
     sp.pair = pairIndex;

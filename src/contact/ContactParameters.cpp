@@ -146,15 +146,17 @@ void requireSideSet(const Mesh& mesh, const std::string& name, const std::string
 
 std::unique_ptr<ContactManager> makeContactManager(const ContactSettings& s, const Mesh& mesh,
                                                    const DofMap& dofs, RCP<const Map> map,
-                                                   const std::string& file) {
+                                                   const std::string& file, bool axisymmetric) {
   if (!s.enabled()) return nullptr;
+  std::vector<PairDefinition> pairs = s.pairs;
+  for (auto& p : pairs) p.axisymmetric = axisymmetric;
   for (const auto& pair : s.pairs) {
     const std::string pp = s.path + "/Contact/Pairs/" + pair.name;
     if (!pair.hasObstacle) requireSideSet(mesh, pair.masterSideSet, file, pp + "/Master Side Set");
     requireSideSet(mesh, pair.slaveSideSet, file, pp + "/Slave Side Set");
   }
   try {
-    return std::make_unique<ContactManager>(mesh, dofs, map, s.pairs, makeContactMethod(s));
+    return std::make_unique<ContactManager>(mesh, dofs, map, pairs, makeContactMethod(s));
   } catch (const PairingError& e) {
     const PairDefinition& pair = s.pairs[e.pair];
     const std::string pp = s.path + "/Contact/Pairs/" + pair.name;

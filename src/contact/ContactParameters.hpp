@@ -34,8 +34,9 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& analysis, cons
 
 // The manager of the settings' pairs on the model (null when the method is None). Throws
 // InputError naming the pair's parameter for a side set the mesh lacks or a pairing failure.
+// axisymmetric: slave areas of whole rings (the pressure output).
 std::unique_ptr<ContactManager> makeContactManager(const ContactSettings& s, const Mesh& mesh,
                                                    const DofMap& dofs, RCP<const Map> map,
-                                                   const std::string& file);
+                                                   const std::string& file, bool axisymmetric = false);
 
 }  // namespace choc

@@ -15,6 +15,7 @@ std::vector<std::string> ContactReport::historyColumns() const {
   for (int p = 0; p < contact_.numPairs(); ++p) {
     c.push_back(contact_.pair(p).name + ":force");
     c.push_back(contact_.pair(p).name + ":gap");
+    c.push_back(contact_.pair(p).name + ":area");
   }
   return c;
 }
@@ -22,14 +23,16 @@ std::vector<std::string> ContactReport::historyColumns() const {
 std::vector<double> ContactReport::historyValues() const {
   std::vector<double> vals;
   for (int p = 0; p < contact_.numPairs(); ++p) {
-    double force = 0.0, gap = std::numeric_limits<double>::infinity();
+    double force = 0.0, gap = std::numeric_limits<double>::infinity(), area = 0.0;
     for (int s = 0; s < contact_.numConstraints(); ++s)
       if (contact_.constraints()[s].geometry.pair == p) {
         force += forces_[s];
         gap = std::min(gap, gaps_[s]);
+        if (contact_.status()[s]) area += contact_.constraints()[s].geometry.area;
       }
     vals.push_back(force);
     vals.push_back(gap);
+    vals.push_back(area);
   }
   return vals;
 }

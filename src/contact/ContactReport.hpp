@@ -1,5 +1,6 @@
 // What the contact of a direct transient reports at a recorded state: per pair the total
-// normal force and the smallest gap (history '<pair>:force', '<pair>:gap'), per slave node
+// normal force, the smallest gap and the contact area (the tributary areas of the active slave
+// nodes; history '<pair>:force', '<pair>:gap', '<pair>:area'), per slave node
 // the force, pressure, gap and status (Exodus CONTACT_FORCE, CONTACT_PRESSURE, CONTACT_GAP,
 // CONTACT_STATUS) and in total the force and the number of active nodes (Exodus globals).
 // update(u) evaluates the forces and gaps once (collective); the rest reads them.

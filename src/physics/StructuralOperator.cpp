@@ -242,7 +242,7 @@ ConstraintUpdate StructuralOperator::updateConstraints(const Vector& u) {
   up.changed = s.changed;
   up.active = s.active;
   up.summary = std::to_string(s.entered) + " entered, " + std::to_string(s.left) + " left, " +
-               std::to_string(s.active) + " active";
+               std::to_string(s.active) + " active" + (s.where.empty() ? "" : " in " + s.where);
   return up;
 }
 

@@ -15,6 +15,7 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
                                    const NewtonSettings& s) {
   NewtonOutcome out;
   Vector r(op.map()), du(op.map());
+  std::string lastSummary;
   for (int pass = 1; pass <= s.maxActiveSetIterations; ++pass) {
     out.activeSetIterations = pass;
     bool converged = false;
@@ -65,9 +66,10 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
       out.converged = true;
       return out;
     }
+    lastSummary = upd.summary;
   }
   out.message = "the active set did not settle in " + std::to_string(s.maxActiveSetIterations) +
-                " iterations";
+                " iterations (last pass: " + lastSummary + ")";
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include "contact/ContactPairing.hpp"
 #include "contact/RigidObstacle.hpp"
 #include "mesh/BarImpactMesh.hpp"
+#include "mesh/MeshFile.hpp"
 
 namespace choc {
 namespace {
@@ -81,6 +82,27 @@ TEST(RigidObstacle, EverySlaveNodePairsWithItsAreaAndGap) {
     area += p.area;
   }
   EXPECT_NEAR(area, 4e-4, 1e-18);
+}
+
+// The slave areas of LINE3 edges: per unit thickness in plane strain, whole rings when
+// axisymmetric. meshes/sdnl111_2d_quad8.msh's edge CNT_POU2 runs from x = 0 to 0.02 at y = 0:
+// 0.02 m^2 per metre of thickness, pi 0.02^2 as a disc of radius 0.02 m.
+TEST(RigidObstacle, SlaveAreasOfEdgesArePerUnitThicknessOrWholeRings) {
+  const Mesh m = readMeshFile(std::string(CHOC_SOURCE_DIR) + "/meshes/sdnl111_2d_quad8.msh");
+  PairDefinition def{"wall", "", "CNT_POU2", 1e-3};
+  def.hasObstacle = true;
+  def.obstacle = obstacle(RigidObstacle::Shape::Plane, {0, 1, 0}, {0, -1, 0}, 0);
+  for (bool axisymmetric : {false, true}) {
+    def.axisymmetric = axisymmetric;
+    const PairingResult r = pairNodeToObstacle(m, def, 0);
+    ASSERT_EQ(r.projections.size(), 3u);  // one LINE3 edge
+    double area = 0;
+    for (const auto& p : r.projections) {
+      EXPECT_GT(p.area, 0.0);
+      area += p.area;
+    }
+    EXPECT_NEAR(area, axisymmetric ? M_PI * 4e-4 : 0.02, 1e-15) << axisymmetric;
+  }
 }
 
 }  // namespace
