@@ -91,17 +91,22 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
                     t.second});
     localTerms_.push_back(lt);
   }
+  buildSlipTerms(dofs);
   status_.assign(constraints_.size(), 0);
   lambda_.assign(constraints_.size(), 0.0);
   save();
 }
 
 std::vector<double> ContactManager::contactValues(const Vector& u) const {
-  const size_t n = contactDofs_.size();
+  return gather(contactDofs_, u);
+}
+
+std::vector<double> ContactManager::gather(const std::vector<GO>& dofs, const Vector& u) const {
+  const size_t n = dofs.size();
   std::vector<double> mine(n, 0.0), all(n, 0.0);
   auto data = u.getData();
   for (size_t k = 0; k < n; ++k) {
-    const LO l = map_->getLocalElement(contactDofs_[k]);
+    const LO l = map_->getLocalElement(dofs[k]);
     if (l != Teuchos::OrdinalTraits<LO>::invalid()) mine[k] = data[l];
   }
   if (n > 0)
@@ -156,6 +161,50 @@ double ContactManager::addForces(const Vector& u, Vector& out) const {
 
 void ContactManager::applyCorrection(const std::vector<double>& d) {
   for (size_t s = 0; s < lambda_.size(); ++s) lambda_[s] += scale_ * d[s];
+}
+
+// Per constraint and component d: u_s,d - sum_i w_i u_i,d over every component (not only the
+// normal's), for the tangential slip.
+void ContactManager::buildSlipTerms(const DofMap& dofs) {
+  std::vector<std::array<std::vector<std::pair<GO, double>>, 3>> rel(constraints_.size());
+  for (size_t s = 0; s < constraints_.size(); ++s) {
+    const SlaveProjection& g = constraints_[s].geometry;
+    for (int d = 0; d < 3; ++d) {
+      const long long ds = dofs.dof(g.slaveNode, d);
+      if (ds >= 0) rel[s][d].push_back({GO(ds), 1.0});
+      for (size_t i = 0; i < g.masterNodes.size(); ++i) {
+        const long long dm = dofs.dof(g.masterNodes[i], d);
+        if (dm >= 0 && g.weights[i] != 0.0) rel[s][d].push_back({GO(dm), -g.weights[i]});
+      }
+      for (const auto& e : rel[s][d]) slipDofs_.push_back(e.first);
+    }
+  }
+  std::sort(slipDofs_.begin(), slipDofs_.end());
+  slipDofs_.erase(std::unique(slipDofs_.begin(), slipDofs_.end()), slipDofs_.end());
+  slipTerms_.resize(constraints_.size());
+  for (size_t s = 0; s < constraints_.size(); ++s)
+    for (int d = 0; d < 3; ++d)
+      for (const auto& [dof, w] : rel[s][d])
+        slipTerms_[s][d].push_back(
+            {int(std::lower_bound(slipDofs_.begin(), slipDofs_.end(), dof) - slipDofs_.begin()), w});
+}
+
+std::vector<double> ContactManager::slips(const Vector& u, double t) const {
+  const std::vector<double> x = gather(slipDofs_, u);
+  std::vector<double> out(constraints_.size(), 0.0);
+  for (size_t s = 0; s < constraints_.size(); ++s) {
+    const SlaveProjection& g = constraints_[s].geometry;
+    const PairDefinition& pair = pairs_[g.pair];
+    Vec3 d{0, 0, 0};
+    for (int c = 0; c < 3; ++c) {
+      for (const auto& [k, w] : slipTerms_[s][c]) d[c] += w * x[k];
+      if (pair.hasObstacle) d[c] -= pair.obstacle.velocity[c] * t;  // relative to the obstacle
+    }
+    const double dn = dot(d, g.normal);
+    for (int c = 0; c < 3; ++c) d[c] -= dn * g.normal[c];
+    out[s] = norm(d);
+  }
+  return out;
 }
 
 void ContactManager::beginStep(const Vector& u, double t) {

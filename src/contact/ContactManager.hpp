@@ -60,6 +60,10 @@ class ContactManager {
   // Per mesh node: 1 for the nodes of every pair's master and slave side sets.
   std::vector<char> surfaceNodes(const Mesh& mesh) const;
 
+  // Tangential slip of each slave node at u and time t [m]: the length of the tangential part
+  // of its displacement relative to its master point (or to the moving obstacle) since t = 0.
+  // Collective; the same array on every rank.
+  std::vector<double> slips(const Vector& u, double t) const;
   // Gaps at u (the same array on every rank).
   std::vector<double> gaps(const Vector& u) const;
   // Normal force of each node at u with the current statuses and pressures.
@@ -99,6 +103,10 @@ class ContactManager {
 
  private:
   std::vector<double> contactValues(const Vector& u) const;  // u at contactDofs_, replicated
+  std::vector<double> gather(const std::vector<GO>& dofs, const Vector& u) const;  // replicated
+  void buildSlipTerms(const DofMap& dofs);
+  std::vector<GO> slipDofs_;  // every component of the slave and master nodes
+  std::vector<std::array<std::vector<std::pair<int, double>>, 3>> slipTerms_;
   std::vector<PairDefinition> pairs_;
   std::unique_ptr<ContactMethod> method_;
   RCP<const Map> map_;

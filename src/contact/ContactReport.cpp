@@ -5,9 +5,10 @@
 
 namespace choc {
 
-void ContactReport::update(const Vector& u) {
+void ContactReport::update(const Vector& u, double t) {
   forces_ = contact_.forces(u);
   gaps_ = contact_.gaps(u);
+  slips_ = contact_.slips(u, t);
 }
 
 std::vector<std::string> ContactReport::historyColumns() const {
@@ -38,20 +39,21 @@ std::vector<double> ContactReport::historyValues() const {
 }
 
 std::vector<std::string> ContactReport::nodalFieldNames() const {
-  return {"CONTACT_FORCE", "CONTACT_PRESSURE", "CONTACT_GAP", "CONTACT_STATUS"};
+  return {"CONTACT_FORCE", "CONTACT_PRESSURE", "CONTACT_GAP", "CONTACT_STATUS", "CONTACT_SLIP"};
 }
 
 std::vector<std::vector<double>> ContactReport::nodalFields() const {
   std::vector<double> force(numNodes_, 0.0), pressure(numNodes_, 0.0), gap(numNodes_, 0.0),
-      status(numNodes_, 0.0);
+      status(numNodes_, 0.0), slip(numNodes_, 0.0);
   for (int s = 0; s < contact_.numConstraints(); ++s) {
     const auto& geo = contact_.constraints()[s].geometry;
     force[geo.slaveNode] = forces_[s];
     pressure[geo.slaveNode] = geo.area > 0 ? forces_[s] / geo.area : 0.0;
     gap[geo.slaveNode] = gaps_[s];
     status[geo.slaveNode] = contact_.status()[s] ? 1.0 : 0.0;
+    slip[geo.slaveNode] = slips_[s];
   }
-  return {force, pressure, gap, status};
+  return {force, pressure, gap, status, slip};
 }
 
 std::vector<std::string> ContactReport::globalNames() const {

@@ -1,8 +1,8 @@
 // What the contact of a direct transient reports at a recorded state: per pair the total
 // normal force, the smallest gap and the contact area (the tributary areas of the active slave
 // nodes; history '<pair>:force', '<pair>:gap', '<pair>:area'), per slave node
-// the force, pressure, gap and status (Exodus CONTACT_FORCE, CONTACT_PRESSURE, CONTACT_GAP,
-// CONTACT_STATUS) and in total the force and the number of active nodes (Exodus globals).
+// the force, pressure, gap, status and tangential slip (Exodus CONTACT_FORCE, CONTACT_PRESSURE,
+// CONTACT_GAP, CONTACT_STATUS, CONTACT_SLIP) and in total the force and the number of active nodes (Exodus globals).
 // update(u) evaluates the forces and gaps once (collective); the rest reads them.
 #pragma once
 #include "contact/ContactManager.hpp"
@@ -14,7 +14,7 @@ class ContactReport : public InteractionOutput {
  public:
   ContactReport(const ContactManager& contact, int numMeshNodes)
       : contact_(contact), numNodes_(numMeshNodes) {}
-  void update(const Vector& u);
+  void update(const Vector& u, double t);
 
   std::vector<std::string> historyColumns() const override;
   std::vector<double> historyValues() const override;
@@ -30,7 +30,7 @@ class ContactReport : public InteractionOutput {
  private:
   const ContactManager& contact_;
   int numNodes_;
-  std::vector<double> forces_, gaps_;
+  std::vector<double> forces_, gaps_, slips_;
 };
 
 }  // namespace choc

@@ -17,3 +17,10 @@ add_test(NAME cli.hertz_axisymmetric
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/scripts/hertz.sh $<TARGET_FILE:choc>
                  ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/hertz)
 set_tests_properties(cli.hertz_axisymmetric PROPERTIES TIMEOUT 300 LABELS cli)
+
+# A rigid wall sliding tangentially under SDNV100's bar: CONTACT_SLIP = v t at every contact
+# node (and 0 elsewhere), the normal contact and the deck's rows unchanged.
+add_test(NAME cli.obstacle_slip
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/obstacle_slip.py
+                 $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/obstacle_slip)
+set_tests_properties(cli.obstacle_slip PROPERTIES TIMEOUT 120 LABELS cli)
