@@ -74,6 +74,8 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
       throw PairingError(int(p), "contact pair '" + pairs_[p].name + "': " + e.what());
     }
     hasObstacles_ = hasObstacles_ || pairs_[p].hasObstacle;
+    hasCurvedObstacles_ = hasCurvedObstacles_ ||
+                          (pairs_[p].hasObstacle && pairs_[p].obstacle.shape != RigidObstacle::Shape::Plane);
     unpaired_ += static_cast<int>(res.unpaired.size());
     for (const SlaveProjection& sp : res.projections)
       constraints_.push_back(makeConstraint(mesh, dofs, sp, pairs_[p].hasObstacle &&
@@ -209,12 +211,18 @@ std::vector<double> ContactManager::slips(const Vector& u, double t) const {
 
 void ContactManager::beginStep(const Vector& u, double t) {
   if (!hasObstacles_) return;
-  const std::vector<double> x = contactValues(u);
+  // A plane's constraint is exact and does not depend on u: (X + u - p(t)) . n - n . u. Only
+  // curved obstacles need the nodes' current positions (a collective gather).
+  const std::vector<double> x = hasCurvedObstacles_ ? contactValues(u) : std::vector<double>();
   bool turned = false;
   for (size_t s = 0; s < constraints_.size(); ++s) {
     ContactConstraint& c = constraints_[s];
     const PairDefinition& pair = pairs_[c.geometry.pair];
     if (!pair.hasObstacle) continue;
+    if (pair.obstacle.shape == RigidObstacle::Shape::Plane) {
+      c.geometry.gap0 = distanceTo(pair.obstacle, c.reference, t).gap;
+      continue;
+    }
     Point3 pos = c.reference;
     Vec3 us{0, 0, 0};
     for (int d = 0; d < 3; ++d)

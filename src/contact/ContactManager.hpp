@@ -119,7 +119,7 @@ class ContactManager {
   int unpaired_ = 0;
   int version_ = 0;
   int geometryVersion_ = 0;
-  bool hasObstacles_ = false;
+  bool hasObstacles_ = false, hasCurvedObstacles_ = false;
 };
 
 }  // namespace choc

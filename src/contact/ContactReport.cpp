@@ -8,7 +8,8 @@ namespace choc {
 void ContactReport::update(const Vector& u, double t) {
   forces_ = contact_.forces(u);
   gaps_ = contact_.gaps(u);
-  slips_ = contact_.slips(u, t);
+  u_ = &u;  // the slips are gathered only when the nodal fields are written
+  time_ = t;
 }
 
 std::vector<std::string> ContactReport::historyColumns() const {
@@ -45,13 +46,14 @@ std::vector<std::string> ContactReport::nodalFieldNames() const {
 std::vector<std::vector<double>> ContactReport::nodalFields() const {
   std::vector<double> force(numNodes_, 0.0), pressure(numNodes_, 0.0), gap(numNodes_, 0.0),
       status(numNodes_, 0.0), slip(numNodes_, 0.0);
+  const std::vector<double> slips = contact_.slips(*u_, time_);
   for (int s = 0; s < contact_.numConstraints(); ++s) {
     const auto& geo = contact_.constraints()[s].geometry;
     force[geo.slaveNode] = forces_[s];
     pressure[geo.slaveNode] = geo.area > 0 ? forces_[s] / geo.area : 0.0;
     gap[geo.slaveNode] = gaps_[s];
     status[geo.slaveNode] = contact_.status()[s] ? 1.0 : 0.0;
-    slip[geo.slaveNode] = slips_[s];
+    slip[geo.slaveNode] = slips[s];
   }
   return {force, pressure, gap, status, slip};
 }

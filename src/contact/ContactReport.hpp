@@ -3,7 +3,9 @@
 // nodes; history '<pair>:force', '<pair>:gap', '<pair>:area'), per slave node
 // the force, pressure, gap, status and tangential slip (Exodus CONTACT_FORCE, CONTACT_PRESSURE,
 // CONTACT_GAP, CONTACT_STATUS, CONTACT_SLIP) and in total the force and the number of active nodes (Exodus globals).
-// update(u) evaluates the forces and gaps once (collective); the rest reads them.
+// update(u, t) evaluates the forces and gaps once (collective); the rest reads them, except
+// nodalFields(), which gathers the slips (collective: called on every rank, as the Exodus
+// writer does).
 #pragma once
 #include "contact/ContactManager.hpp"
 #include "output/InteractionOutput.hpp"
@@ -30,7 +32,9 @@ class ContactReport : public InteractionOutput {
  private:
   const ContactManager& contact_;
   int numNodes_;
-  std::vector<double> forces_, gaps_, slips_;
+  std::vector<double> forces_, gaps_;
+  const Vector* u_ = nullptr;  // the state of the last update
+  double time_ = 0.0;
 };
 
 }  // namespace choc
