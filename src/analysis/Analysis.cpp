@@ -8,4 +8,19 @@ bool RunContext::failedChecks() const {
   return false;
 }
 
+const StateArchive* Analysis::resumeFor(const RunContext& ctx) const {
+  if (!ctx.restart || ctx.restart->text("identity/analysis") != name_) return nullptr;
+  return ctx.restart.get();
+}
+
+CheckpointPlan Analysis::checkpointPlan(const RunContext& ctx) const {
+  CheckpointPlan p;
+  p.path = ctx.outputDir + "/" + name_ + ".checkpoint";
+  p.identity.analysis = name_;
+  if (ctx.input) p.identity.input = canonicalInput(*ctx.input, name_);
+  p.identity.mesh = meshHash(ctx.model.mesh());
+  p.identity.ranks = ctx.model.comm()->getSize();
+  return p;
+}
+
 }  // namespace choc

@@ -16,6 +16,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "observers/CheckpointObserver.hpp"
 #include "output/Checks.hpp"
 #include "physics/ModalBasis.hpp"
 #include "physics/Model.hpp"
@@ -35,6 +36,8 @@ struct RunContext {
   std::string outputDir;
   std::map<std::string, std::shared_ptr<const ModalBasis>> bases;
   std::vector<CheckResult> checks;
+  const Teuchos::ParameterList* input = nullptr;  // the whole validated input (run identity)
+  std::shared_ptr<const StateArchive> restart;    // a checkpoint to continue (--restart)
   bool failedChecks() const;
 };
 
@@ -51,6 +54,10 @@ class Analysis {
 
  protected:
   std::string path(const std::string& key) const { return "Analyses/" + name_ + "/" + key; }
+  // The checkpoint to continue when this analysis wrote it (else null).
+  const StateArchive* resumeFor(const RunContext& ctx) const;
+  // Where this analysis's checkpoints go and the identity they carry (no state yet).
+  CheckpointPlan checkpointPlan(const RunContext& ctx) const;
   std::string name_;
   Teuchos::ParameterList params_;  // validated, with defaults
   std::string inputFile_;

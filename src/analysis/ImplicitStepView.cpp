@@ -55,12 +55,37 @@ void ImplicitStepView::differenceMassless(const Vector& u, const Vector& v, cons
   a_ = aOut_.get();
 }
 
+void ImplicitStepView::archive(StateArchive& a, const StateVectors& vectors) const {
+  a.putVector("view/integrals", std::vector<double>{dissipated_, lastPower_, obstacleWork_, lastObstaclePower_});
+  vectors.put(a, "view/u0", *u0_);
+  if (uPrev_) {
+    vectors.put(a, "view/uPrevious", *uPrev_);
+    vectors.put(a, "view/vPrevious", *vPrev_);
+  }
+}
+
+void ImplicitStepView::unarchive(const StateArchive& a, const StateVectors& vectors, RCP<const Map> map) {
+  const std::vector<double> w = a.getVector<double>("view/integrals", 4);
+  dissipated_ = w[0];
+  lastPower_ = w[1];
+  obstacleWork_ = w[2];
+  lastObstaclePower_ = w[3];
+  u0_ = rcp(new Vector(map));
+  vectors.get(a, "view/u0", *u0_);
+  if (op_.masslessDofs() == 0) return;
+  for (RCP<Vector>* v : {&vOut_, &aOut_, &uPrev_, &vPrev_}) *v = rcp(new Vector(map));
+  vectors.get(a, "view/uPrevious", *uPrev_);
+  vectors.get(a, "view/vPrevious", *vPrev_);
+}
+
 StepPoint ImplicitStepView::point() const {
   StepPoint p;
   p.step = info_.step;
   p.time = info_.time;
   p.dt = info_.dt;
   p.last = info_.last;
+  p.boundary = info_.boundary;
+  p.nominal = info_.nominal;
   return p;
 }
 

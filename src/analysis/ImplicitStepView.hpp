@@ -15,6 +15,7 @@
 #include "observers/Probes.hpp"
 #include "observers/TransientObserver.hpp"
 #include "physics/StructuralOperator.hpp"
+#include "restart/StateVectors.hpp"
 #include "timeint/TransientDriver.hpp"
 
 namespace choc {
@@ -33,6 +34,11 @@ class ImplicitStepView : public TransientView, public StepObserver {
   const InteractionOutput* interactions() const override { return contact_; }
   void fields(Vector& u, Vector& v, Vector& a) const override;
   std::string stepNote() const override;
+
+  // The integrals (damping and obstacle work), the initial displacement and the previous
+  // reported fields of massless DOFs, for a checkpoint (collective), and back.
+  void archive(StateArchive& a, const StateVectors& vectors) const;
+  void unarchive(const StateArchive& a, const StateVectors& vectors, RCP<const Map> map);
 
  private:
   const StructuralOperator& op_;

@@ -170,11 +170,34 @@ void ImplicitTransient::run(RunContext& ctx) {
   StructuralOperator op(b_->K, b_->M, s_.rayleighK, s_.rayleighM, b_->load, b_->contact.get(),
                         std::move(b_->solver), timer.get());
   describe(ctx.model, op);
+  const StateArchive* resume = resumeFor(ctx);
   ObserverSet outputs;
-  const OutputPlan plan{"transient '" + name_ + "'", ctx.outputDir + "/" + name_, b_->columns,
-                        0.0, s_.time.endTime, 1};
+  std::unique_ptr<ContactReport> report;
+  if (b_->contact) report = std::make_unique<ContactReport>(*b_->contact, ctx.model.mesh().numNodes());
+  ImplicitStepView view(op, report.get(), b_->probes, outputs, timer.get());
+  TransientDriver driver(op, s_.scheme, s_.time);
+  driver.addObserver(&view);
+  const StateVectors vectors(ctx.model.dofs());
+  OutputPlan plan{"transient '" + name_ + "'", ctx.outputDir + "/" + name_, b_->columns,
+                  0.0, s_.time.endTime, 1};
+  plan.resume = resume;
+  plan.checkpoint = checkpointPlan(ctx);
+  plan.checkpoint.archiveRun = [&](StateArchive& a) {
+    driver.archive(a, vectors);
+    view.archive(a, vectors);
+  };
   const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model, params_);
-  const TransientSummary sum = integrate(op, outputs, ctx.model, timer.get());
+  if (resume) {
+    view.unarchive(*resume, vectors, ctx.model.map());
+    log() << format("  continuing from the checkpoint at t = %.6e s (step %lld)\n",
+                    resume->getDouble("point/time"), resume->getInt("point/nominal"));
+  }
+  const StateArchive none;
+  const TransientDriver::Resume from{resume ? *resume : none, vectors};
+  TransientSummary sum;
+  outputs.run(view, [&] {
+    sum = driver.run(*b_->init.displacement, *b_->init.velocity, resume ? &from : nullptr);
+  });
   timer->stopBaseTimer();
   recordFigures(sum, op, *timer, wallStart);
   logFigures(sum, ctx.model, *timer);
@@ -209,18 +232,6 @@ void ImplicitTransient::describe(Model& model, const StructuralOperator& op) con
     if (contact->unpairedNodes() > 0) log() << " (" << contact->unpairedNodes() << " unpaired)";
     log() << "\n";
   }
-}
-
-TransientSummary ImplicitTransient::integrate(StructuralOperator& op, ObserverSet& outputs,
-                                              const Model& model, Teuchos::StackedTimer* timer) {
-  std::unique_ptr<ContactReport> report;
-  if (b_->contact) report = std::make_unique<ContactReport>(*b_->contact, model.mesh().numNodes());
-  ImplicitStepView view(op, report.get(), b_->probes, outputs, timer);
-  TransientDriver driver(op, s_.scheme, s_.time);
-  driver.addObserver(&view);
-  TransientSummary sum;
-  outputs.run(view, [&] { sum = driver.run(*b_->init.displacement, *b_->init.velocity); });
-  return sum;
 }
 
 void ImplicitTransient::recordFigures(const TransientSummary& sum, const StructuralOperator& op,

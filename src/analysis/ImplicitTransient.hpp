@@ -66,8 +66,6 @@ class ImplicitTransient : public Analysis {
   void buildContact(Model& model);
   void buildSolver();
   void describe(Model& model, const StructuralOperator& op) const;
-  TransientSummary integrate(StructuralOperator& op, ObserverSet& outputs, const Model& model,
-                             Teuchos::StackedTimer* timer);
   void recordFigures(const TransientSummary& sum, const StructuralOperator& op,
                      const Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start);
   void logFigures(const TransientSummary& sum, const Model& model, Teuchos::StackedTimer& timer) const;

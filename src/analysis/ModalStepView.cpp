@@ -16,6 +16,7 @@ void ModalStepView::at(long long step, double dt, bool last) {
   point_.time = state_.t;
   point_.dt = dt;
   point_.last = last;
+  point_.nominal = step;
 }
 
 // Velocities: the scheme's own v for symplectic Euler (as the reference deck reports it),

@@ -134,10 +134,26 @@ void ModalTransient::run(RunContext& ctx) {
                      {b_->probes, gatherRows(*basis.vectors, probeDofs)},
                      s_.scheme == ModalScheme::SymplecticEuler);
   ObserverSet outputs;
-  const OutputPlan plan{"modal transient '" + name_ + "'", ctx.outputDir + "/" + name_, b_->columns,
-                        s_.startTime, s_.endTime, ctx.model.comm()->getSize() > 1 ? 50 : 1};
+  OutputPlan plan{"modal transient '" + name_ + "'", ctx.outputDir + "/" + name_, b_->columns,
+                  s_.startTime, s_.endTime, ctx.model.comm()->getSize() > 1 ? 50 : 1};
+  const StateArchive* resume = resumeFor(ctx);
+  plan.resume = resume;
+  plan.checkpoint = checkpointPlan(ctx);
+  plan.checkpoint.archiveRun = [&](StateArchive& a) {
+    integrator.archive(state, a);
+    a.putVector("modal/eigenvalues", basis.eigenvalues);
+  };
+  long long first = 1;  // the first step to take
+  if (resume) {
+    if (resume->getVector<double>("modal/eigenvalues") != basis.eigenvalues)
+      throw InputError("option '--restart': the modal basis recomputed for analysis '" + name_ +
+                       "' differs from the checkpoint's (another build or number of ranks?); run from the start");
+    integrator.unarchive(state, *resume);
+    first = resume->getInt("point/nominal") + 1;
+    log() << format("  continuing from the checkpoint at t = %.6e s (step %lld)\n", state.t, first - 1);
+  }
   const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model, params_);
-  integrate(integrator, state, view, outputs, substeps);
+  integrate(integrator, state, view, outputs, substeps, first);
   evaluateChecks(b_->checks, history.history(), ctx.checks);
 }
 
@@ -209,12 +225,14 @@ int ModalTransient::stepsPerStep(const Generalized& g, const ModalLinks& links) 
 }
 
 void ModalTransient::integrate(ModalIntegrator& integrator, ModalState& state, ModalStepView& view,
-                               ObserverSet& outputs, int substeps) const {
+                               ObserverSet& outputs, int substeps, long long first) const {
   const auto start = std::chrono::steady_clock::now();
   outputs.run(view, [&] {
-    view.at(0, 0.0, false);
-    outputs.step(view);
-    for (long long n = 1; n <= s_.steps; ++n) {
+    if (first == 1) {
+      view.at(0, 0.0, false);
+      outputs.step(view);
+    }
+    for (long long n = first; n <= s_.steps; ++n) {
       integrator.advance(state, s_.dt, substeps);
       state.t = s_.startTime + n * s_.dt;
       view.at(n, s_.dt, n == s_.steps);
@@ -222,8 +240,9 @@ void ModalTransient::integrate(ModalIntegrator& integrator, ModalState& state, M
     }
   });
   const double loop = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const long long taken = s_.steps - first + 1;
   log() << format("  %lld steps, %lld sub-steps in %.4f s (%.2f us per step, output included)\n",
-                  s_.steps, integrator.subStepsTaken(), loop, 1e6 * loop / s_.steps);
+                  taken, integrator.subStepsTaken(), loop, 1e6 * loop / std::max(1LL, taken));
 }
 
 }  // namespace choc

@@ -52,7 +52,7 @@ class ModalTransient : public Analysis {
   void describe(const Model& model, const ModalBasis& basis, const Generalized& g,
                 const ModalLinks& links, const double residuals[2]) const;
   void integrate(ModalIntegrator& integrator, ModalState& state, ModalStepView& view,
-                 ObserverSet& outputs, int substeps) const;
+                 ObserverSet& outputs, int substeps, long long first) const;
 
   Settings s_;
   std::unique_ptr<Built> b_;

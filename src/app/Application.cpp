@@ -20,14 +20,19 @@ const char* kUsage =
     "usage: choc <command> [arguments]\n"
     "  run INPUT.xml [-o DIR]   run every analysis of the input (results in DIR, default\n"
     "                           results/<input name>/)\n"
+    "  run INPUT.xml --restart F.checkpoint\n"
+    "                           continue a transient from its checkpoint (the same input,\n"
+    "                           'End Time' may be raised; any number of ranks)\n"
     "  check INPUT.xml          validate the input and print the resolved parameter list\n"
     "  parameters               print every valid parameter with its documentation\n"
     "  mesh [options] -o F.exo  generate a bar-impact mesh (choc mesh --help)\n"
     "  --help                   this text\n"
-    "exit codes: 0 success, 1 input error, 2 numerical failure, 3 a declared check failed,\n"
+    "exit codes: 0 success, 1 input error, 2 numerical failure or a result that cannot be\n"
+    "            written (disk full, file-size limit), 3 a declared check failed,\n"
     "            4 internal error, 130 interrupted by SIGINT, 143 interrupted by SIGTERM\n"
     "            (a failed or interrupted run stops at a step boundary and leaves its partial\n"
-    "            results as <name>.incomplete.<ext>, listed in the log)\n";
+    "            results as <name>.incomplete.<ext>, listed in the log, and a transient\n"
+    "            its last checkpoint <name>.checkpoint)\n";
 
 // One line always: a message relayed from a library (Teuchos, Anasazi) may span several.
 void reportError(const std::string& kind, const std::string& message) {
@@ -76,6 +81,9 @@ int runApplication(int argc, char** argv) {
   } catch (const Interrupted& e) {
     reportError("interrupted", e.what());
     return e.exitCode();
+  } catch (const OutputError& e) {
+    reportError("output failure", e.what());
+    return kExitNumericalFailure;
   } catch (const NumericalError& e) {
     reportError("numerical failure", e.what());
     return kExitNumericalFailure;

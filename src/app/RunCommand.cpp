@@ -19,14 +19,17 @@
 #include "core/Resources.hpp"
 #include "output/Checks.hpp"
 #include "output/Interrupt.hpp"
+#include "core/Format.hpp"
 #include "core/Log.hpp"
+#include "restart/CheckpointFile.hpp"
+#include "restart/RunIdentity.hpp"
 
 namespace choc {
 
 namespace {
 
 struct RunArgs {
-  std::string input, outputDir;
+  std::string input, outputDir, restart;
 };
 
 RunArgs parseRunArgs(const std::vector<std::string>& args, const std::string& cmd) {
@@ -35,6 +38,9 @@ RunArgs parseRunArgs(const std::vector<std::string>& args, const std::string& cm
     if (args[i] == "-o" || args[i] == "--output") {
       if (i + 1 >= args.size()) throw InputError("choc " + cmd + ": option -o needs a directory");
       r.outputDir = args[++i];
+    } else if (args[i] == "--restart" && cmd == "run") {
+      if (i + 1 >= args.size()) throw InputError("choc run: option --restart needs a checkpoint file");
+      r.restart = args[++i];
     } else if (!args[i].empty() && args[i][0] == '-') {
       throw InputError("choc " + cmd + ": unknown option '" + args[i] + "'; valid: -o DIR");
     } else if (r.input.empty()) {
@@ -74,6 +80,46 @@ void logResources(const Teuchos::Comm<int>& comm, long long unknowns) {
   log() << "cpu time per rank [s]: " << cpu << "\n";
 }
 
+// The checkpoint of --restart, refused (one line, exit 1) unless this input and mesh wrote it
+// and it is before the analysis's end time.
+std::shared_ptr<const StateArchive> loadRestart(const std::string& file, const Teuchos::ParameterList& input,
+                                                const std::string& inputFile, const Model& model) {
+  auto archive = std::make_shared<StateArchive>(readCheckpointFile(file));
+  const auto refuse = [&](const std::string& why) {
+    throw InputError(file + ": option '--restart': " + why);
+  };
+  RunIdentity was;
+  try {
+    was = RunIdentity::load(*archive);
+  } catch (const StateRecordError& e) {
+    refuse(std::string("not a checkpoint of a transient (") + e.what() + ")");
+  }
+  const Teuchos::ParameterList& analyses = input.sublist("Analyses");
+  if (!analyses.isSublist(was.analysis))
+    refuse("written by analysis '" + was.analysis + "', which " + inputFile + " does not have");
+  RunIdentity now;
+  now.analysis = was.analysis;
+  now.input = canonicalInput(input, was.analysis);
+  now.mesh = meshHash(model.mesh());
+  now.ranks = model.comm()->getSize();
+  const std::string differs = was.mismatch(now);
+  if (!differs.empty()) refuse("written by another input or mesh: " + differs);
+  const Teuchos::ParameterList& an = analyses.sublist(was.analysis);
+  const double t = archive->getDouble("point/time"), end = an.get<double>("End Time");
+  if (!(t < end))
+    refuse(format("the checkpoint is at t = %.6e s, not before 'Analyses/%s/End Time' = %.6e s; "
+                  "raise End Time to continue the run",
+                  t, was.analysis.c_str(), end));
+  if (an.get<std::string>("Type") == "Modal Transient" && was.ranks != now.ranks)
+    refuse(format("a modal transient continues on the number of ranks that wrote it (%d, not %d): "
+                  "its modal basis is recomputed, and bases computed on different ranks differ "
+                  "within the eigen-solver's tolerance",
+                  was.ranks, now.ranks));
+  log() << format("restart: analysis '%s' continues from %s (t = %.6e s, written on %d rank(s))\n",
+                  was.analysis.c_str(), file.c_str(), t, was.ranks);
+  return archive;
+}
+
 }  // namespace
 
 int runRunCommand(const std::vector<std::string>& args) {
@@ -88,6 +134,8 @@ int runRunCommand(const std::vector<std::string>& args) {
   log() << "model: " << model.mesh().numNodes() << " nodes, " << model.mesh().numElements()
         << " elements, " << model.dofs().numGlobal() << " unknowns on " << comm->getSize()
         << " rank(s)\n";
+  std::shared_ptr<const StateArchive> restart;
+  if (!a.restart.empty()) restart = loadRestart(a.restart, *input, a.input, model);
   auto analyses = createAnalyses(input->sublist("Analyses"), a.input);
   setupAnalyses(analyses, model);
   if (isRootRank()) {
@@ -96,16 +144,18 @@ int runRunCommand(const std::vector<std::string>& args) {
     if (ec) throw InputError("choc run: cannot create output directory '" + a.outputDir + "': " + ec.message());
   }
   comm->barrier();
-  RunContext ctx{model, a.outputDir, {}, {}};
+  RunContext ctx{model, a.outputDir, {}, {}, input.get(), restart};
   const std::string checksPath = a.outputDir + "/checks.csv";
   std::filesystem::remove(checksPath);
   // Results of an earlier run under the names this run writes would pass for this run's if
   // it fails before writing them: remove them first.
+  // (Not those of the analysis a restart continues.)
   if (isRootRank())
     for (auto& an : analyses)
       for (const char* ext : {".exo", ".incomplete.exo", ".exo.part", ".history.csv",
                               ".history.incomplete.csv", ".history.csv.part", ".modes.csv",
-                              ".modes.incomplete.csv", ".modes.csv.part"}) {
+                              ".modes.incomplete.csv", ".modes.csv.part", ".checkpoint"}) {
+        if (restart && restart->text("identity/analysis") == an->name()) break;
         std::error_code ignored;
         std::filesystem::remove(a.outputDir + "/" + an->name() + ext, ignored);
       }

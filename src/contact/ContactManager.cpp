@@ -289,6 +289,20 @@ StatusUpdate ContactManager::updateStatus(const Vector& u) {
   return up;
 }
 
+void ContactManager::archive(StateArchive& a) const {
+  a.putVector("contact/status", savedStatus_);
+  a.putVector("contact/pressure", savedLambda_);
+  a.putDouble("contact/scale", scale_);
+}
+
+void ContactManager::unarchive(const StateArchive& a) {
+  status_ = a.getVector<char>("contact/status", constraints_.size());
+  lambda_ = a.getVector<double>("contact/pressure", constraints_.size());
+  scale_ = a.getDouble("contact/scale");
+  ++version_;
+  save();
+}
+
 void ContactManager::save() {
   savedStatus_ = status_;
   savedLambda_ = lambda_;

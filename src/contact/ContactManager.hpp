@@ -19,6 +19,7 @@
 #include "fem/DofMap.hpp"
 #include "core/TpetraTypes.hpp"
 #include "mesh/Mesh.hpp"
+#include "restart/StateArchive.hpp"
 
 namespace choc {
 
@@ -88,6 +89,9 @@ class ContactManager {
   StatusUpdate updateStatus(const Vector& u);  // complementarity test, all ranks agree
   void save();
   void restore();
+  // Statuses, pressures and the multiplier scale in a checkpoint ("contact/*"), and back.
+  void archive(StateArchive& a) const;
+  void unarchive(const StateArchive& a);
 
   const std::vector<char>& status() const { return status_; }
   const std::vector<double>& pressures() const { return lambda_; }  // lambda_s [N]

@@ -8,7 +8,7 @@ namespace choc {
 enum ExitCode : int {
   kExitOk = 0,
   kExitInputError = 1,       // bad input: file, parameter, value
-  kExitNumericalFailure = 2, // a solver, Newton or the active set failed
+  kExitNumericalFailure = 2, // a solver, Newton or the active set failed; a result not writable
   kExitCheckFailed = 3,      // a declared check is NOOK
   kExitInternalError = 4,    // an unexpected exception (a bug): please report it
   kExitInterruptBase = 128,  // + the signal: 130 after SIGINT, 143 after SIGTERM
@@ -22,6 +22,13 @@ class InputError : public std::runtime_error {
 
 // A solver did not converge, a matrix is singular, a result is not finite (exit 2).
 class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A results or checkpoint file that cannot be written (disk full, file-size limit): exit 2,
+// like a numerical failure (the run cannot produce its result), one line naming the file.
+class OutputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

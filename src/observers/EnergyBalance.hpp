@@ -60,33 +60,33 @@ class EnergyBalanceMonitor {
   // Called once per recorded state, in time order; the first call fixes E_total(t0).
   // Returns energy:balance.
   double update(double t, double total, double dissipated, double external) {
-    if (first_) {
-      e0_ = total;
-      first_ = false;
+    if (st_.first) {
+      st_.e0 = total;
+      st_.first = false;
     }
-    maxExternal_ = std::max(maxExternal_, std::abs(external));
-    maxTotal_ = std::max(maxTotal_, total);
-    const double balance = total + dissipated - e0_ - external;
-    double ref = std::max(e0_, maxExternal_);
-    if (!(ref > 0)) ref = maxTotal_;
+    st_.maxExternal = std::max(st_.maxExternal, std::abs(external));
+    st_.maxTotal = std::max(st_.maxTotal, total);
+    const double balance = total + dissipated - st_.e0 - external;
+    double ref = std::max(st_.e0, st_.maxExternal);
+    if (!(ref > 0)) ref = st_.maxTotal;
     const bool over = mode_ == "growth" ? balance > tol_ * ref
                       : mode_ == "drift" ? std::abs(balance) > tol_ * ref
                                          : false;
-    if (over && !warned_) {
-      warned_ = true;
+    if (over && !st_.warned) {
+      st_.warned = true;
       char b[400];
       std::snprintf(b, sizeof b,
                     "  warning: %s: energy balance %+.4e J at t = %.6e s exceeds %s%.3g x %.4e J "
                     "(%s; 'Energy Balance Tolerance'): %s\n",
                     what_.c_str(), balance, t, mode_ == "growth" ? "+" : "+/-", tol_, ref,
-                    e0_ > 0 ? "initial total energy" : "reference energy",
+                    st_.e0 > 0 ? "initial total energy" : "reference energy",
                     balance > 0 ? "the scheme creates energy (time step, contact stiffness?)"
                                 : "numerical dissipation of the scheme");
       log() << b;
     }
-    lowest_ = std::min(lowest_, balance);
-    highest_ = std::max(highest_, balance);
-    const double fixedRef = std::max(e0_, maxExternal_);  // not the total, which a blow-up grows
+    st_.lowest = std::min(st_.lowest, balance);
+    st_.highest = std::max(st_.highest, balance);
+    const double fixedRef = std::max(st_.e0, st_.maxExternal);  // not the total, which a blow-up grows
     if (fixedRef > 0 && balance > limit_ * fixedRef) {
       char b[400];
       std::snprintf(b, sizeof b,
@@ -103,19 +103,26 @@ class EnergyBalanceMonitor {
   // One summary line for the end of the run.
   std::string summary() const {
     char b[240];
-    std::snprintf(b, sizeof b, "  energy balance: E0 = %.6e J, balance in [%+.4e, %+.4e] J%s\n", e0_,
-                  first_ ? 0.0 : lowest_, first_ ? 0.0 : highest_, warned_ ? " (warned)" : "");
+    std::snprintf(b, sizeof b, "  energy balance: E0 = %.6e J, balance in [%+.4e, %+.4e] J%s\n", st_.e0,
+                  st_.first ? 0.0 : st_.lowest, st_.first ? 0.0 : st_.highest, st_.warned ? " (warned)" : "");
     return b;
   }
-  bool warned() const { return warned_; }
+  bool warned() const { return st_.warned; }
+
+  // What the balance carries from one state to the next (a checkpoint stores it).
+  struct State {
+    bool first = true, warned = false;
+    double e0 = 0.0, maxExternal = 0.0, maxTotal = 0.0;
+    double lowest = INFINITY, highest = -INFINITY;
+  };
+  State state() const { return st_; }
+  void setState(const State& s) { st_ = s; }
 
  private:
   std::string what_;
   double tol_, limit_;
   std::string mode_;
-  bool first_ = true, warned_ = false;
-  double e0_ = 0.0, maxExternal_ = 0.0, maxTotal_ = 0.0;
-  double lowest_ = INFINITY, highest_ = -INFINITY;
+  State st_;
 };
 
 }  // namespace choc

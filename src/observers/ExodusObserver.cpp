@@ -2,22 +2,40 @@
 
 #include <Tpetra_Vector.hpp>
 
+#include "core/Errors.hpp"
 #include "core/Log.hpp"
+#include "solvers/CollectiveFailure.hpp"
 #include "fem/Components.hpp"
 #include "fem/FieldGather.hpp"
 
 namespace choc {
 
 ExodusObserver::ExodusObserver(const std::string& path, const Model& model,
-                               const HistoryObserver& history, int interval)
-    : path_(path), model_(model), history_(history), interval_(interval) {
+                               const HistoryObserver& history, int interval,
+                               const StateArchive* resume)
+    : path_(path), model_(model), history_(history), interval_(interval), resume_(resume) {
   u_ = rcp(new Vector(model.map()));
   v_ = rcp(new Vector(model.map()));
   a_ = rcp(new Vector(model.map()));
 }
 
 void ExodusObserver::begin(TransientView& view) {
-  if (!isRootRank()) return;
+  std::string failure;
+  try {
+    if (isRootRank()) open(view);
+  } catch (const std::exception& e) {
+    failure = e.what();
+  }
+  failure = collectiveFailure(*model_.comm(), failure);
+  if (!failure.empty()) throw InputError(failure);
+}
+
+void ExodusObserver::archive(StateArchive& a) const {
+  a.putInt("exodus/steps", exo_ ? exo_->stepsWritten() : 0);
+  a.putDouble("exodus/time", exo_ ? exo_->lastTime() : 0.0);
+}
+
+void ExodusObserver::open(TransientView& view) {
   std::vector<std::string> nodal;
   for (const char* field : {"DISP_", "VEL_", "ACC_"})
     for (int c : spatialComponents(model_.mesh().dimension)) nodal.push_back(field + std::string(1, "XYZ"[c - DX]));
@@ -27,7 +45,13 @@ void ExodusObserver::begin(TransientView& view) {
     for (const auto& n : io->nodalFieldNames()) nodal.push_back(n);
     for (const auto& g : io->globalNames()) globals.push_back(g);
   }
-  exo_ = std::make_unique<ExodusResultsWriter>(path_, model_.mesh(), nodal, globals);
+  if (resume_)
+    exo_ = std::make_unique<ExodusResultsWriter>(
+        path_, model_.mesh(), nodal, globals,
+        ExodusResultsWriter::Resume{static_cast<int>(resume_->getInt("exodus/steps")),
+                                    resume_->getDouble("exodus/time")});
+  else
+    exo_ = std::make_unique<ExodusResultsWriter>(path_, model_.mesh(), nodal, globals);
 }
 
 void ExodusObserver::step(TransientView& view) {
@@ -46,7 +70,14 @@ void ExodusObserver::step(TransientView& view) {
     for (auto& f : io->nodalFields()) nodal.push_back(std::move(f));
     for (double g : io->globalValues()) globals.push_back(g);
   }
-  if (exo_) exo_->writeStep(pt.time, nodal, globals);
+  std::string failure;
+  try {
+    if (exo_) exo_->writeStep(pt.time, nodal, globals);
+  } catch (const OutputError& e) {
+    failure = e.what();
+  }
+  failure = collectiveFailure(*model_.comm(), failure);
+  if (!failure.empty()) throw OutputError(failure);
 }
 
 void ExodusObserver::end(bool ok) {

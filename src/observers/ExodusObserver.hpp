@@ -13,17 +13,21 @@ namespace choc {
 
 class ExodusObserver : public TransientObserver {
  public:
+  // resume (may be null): continue the file of a checkpointed run.
   ExodusObserver(const std::string& path, const Model& model, const HistoryObserver& history,
-                 int interval);
+                 int interval, const StateArchive* resume = nullptr);
   void begin(TransientView& view) override;
   void step(TransientView& view) override;
   void end(bool ok) override;
+  void archive(StateArchive& a) const override;
 
  private:
+  void open(TransientView& view);  // rank 0
   std::string path_;
   const Model& model_;
   const HistoryObserver& history_;
   int interval_;
+  const StateArchive* resume_;
   std::unique_ptr<ExodusResultsWriter> exo_;
   RCP<Vector> u_, v_, a_;
 };

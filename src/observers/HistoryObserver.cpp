@@ -5,6 +5,9 @@
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
 #include "core/Log.hpp"
+#include "solvers/CollectiveFailure.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
 
 namespace choc {
 
@@ -27,6 +30,46 @@ HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> colu
                                  const std::string& csvPath, const Teuchos::ParameterList& analysis)
     : what_(std::move(what)), columns_(std::move(columns)), balance_(analysis, what_) {
   if (!csvPath.empty() && isRootRank()) csv_ = std::make_unique<HistoryCsv>(csvPath, columns_);
+}
+
+HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> columns,
+                                 const std::string& csvPath, const Teuchos::ParameterList& analysis,
+                                 const StateArchive& resume, const Comm& comm)
+    : what_(std::move(what)), columns_(std::move(columns)), balance_(analysis, what_) {
+  balance_.setState(resume.getPod<EnergyBalanceMonitor::State>("history/balance"));
+  energies_ = resume.getPod<EnergyTerms>("history/energies");
+  const auto rows = static_cast<std::size_t>(resume.getInt("history/rows"));
+  std::vector<double> flat;  // rows x (1 + columns), time first
+  std::string failure;
+  if (isRootRank()) {
+    try {
+      std::string prefix;
+      HistoryCsv::Resume at{rows, resume.getInt("history/bytes")};
+      if (!csvPath.empty()) csv_ = std::make_unique<HistoryCsv>(csvPath, columns_, at, prefix);
+      const HistoryTable t = parseHistoryCsv(prefix, csvPath);
+      for (const auto& r : t.rows) flat.insert(flat.end(), r.begin(), r.end());
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+  }
+  failure = collectiveFailure(comm, failure);
+  if (!failure.empty()) throw InputError(failure);
+  flat.resize(rows * (columns_.size() + 1));
+  if (!flat.empty())
+    Teuchos::broadcast<int, double>(comm, 0, static_cast<int>(flat.size()), flat.data());
+  const std::size_t width = columns_.size() + 1;
+  for (std::size_t i = 0; i < rows; ++i) {
+    history_.times.push_back(flat[i * width]);
+    for (std::size_t k = 0; k < columns_.size(); ++k)
+      history_.columns[columns_[k]].push_back(flat[i * width + 1 + k]);
+  }
+}
+
+void HistoryObserver::archive(StateArchive& a) const {
+  a.putPod("history/balance", balance_.state());
+  a.putPod("history/energies", energies_);
+  a.putInt("history/rows", static_cast<long long>(history_.times.size()));
+  a.putInt("history/bytes", csv_ ? csv_->flush() : 0);
 }
 
 void HistoryObserver::step(TransientView& view) {

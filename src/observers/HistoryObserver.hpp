@@ -13,6 +13,7 @@
 #include "observers/TransientObserver.hpp"
 #include "output/HistoryCsv.hpp"
 #include "output/RecordedHistory.hpp"
+#include "core/TpetraTypes.hpp"
 
 namespace choc {
 
@@ -29,8 +30,14 @@ class HistoryObserver : public TransientObserver {
   // energy balance settings.
   HistoryObserver(std::string what, std::vector<std::string> columns, const std::string& csvPath,
                   const Teuchos::ParameterList& analysis);
+  // Continues a checkpointed run: the rows of the history file up to the checkpoint (read
+  // by rank 0, shared with every rank) and the energy balance's state.
+  HistoryObserver(std::string what, std::vector<std::string> columns, const std::string& csvPath,
+                  const Teuchos::ParameterList& analysis, const StateArchive& resume,
+                  const Comm& comm);
   void step(TransientView& view) override;
   void end(bool ok) override;
+  void archive(StateArchive& a) const override;
 
   const RecordedHistory& history() const { return history_; }
   const EnergyTerms& lastEnergies() const { return energies_; }

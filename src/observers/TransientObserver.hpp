@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "observers/TransientView.hpp"
+#include "restart/StateArchive.hpp"
 
 namespace choc {
 
@@ -17,6 +18,9 @@ class TransientObserver {
   virtual void begin(TransientView&) {}
   virtual void step(TransientView& view) = 0;
   virtual void end(bool /*ok*/) {}
+  // What the observer carries between states (energy integrals, file positions), for a
+  // checkpoint; called on every rank at the same state (it may be collective).
+  virtual void archive(StateArchive& /*a*/) const {}
 };
 
 class ObserverSet {
@@ -29,6 +33,9 @@ class ObserverSet {
   }
   void step(TransientView& view) {
     for (auto& o : observers_) o->step(view);
+  }
+  void archive(StateArchive& a) const {
+    for (const auto& o : observers_) o->archive(a);
   }
   // begin, the loop, end(true); end(false) and rethrow if anything throws.
   void run(TransientView& view, const std::function<void()>& loop) {

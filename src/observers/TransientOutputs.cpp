@@ -3,7 +3,6 @@
 #include "core/Log.hpp"
 #include "input/ParameterSpec.hpp"
 #include "observers/ExodusObserver.hpp"
-#include "observers/InterruptObserver.hpp"
 #include "observers/ProgressObserver.hpp"
 
 namespace choc {
@@ -19,6 +18,16 @@ void declareTransientOutput(Teuchos::ParameterList& p) {
                 "left) every this many seconds of wall time (0: none)",
                 Range::nonNegative());
   declareEnergyBalance(p);
+  Teuchos::ParameterList& c = declareSublist(
+      p, "Checkpoint",
+      "checkpoints <analysis>.checkpoint (the state to continue the run with 'choc run INPUT "
+      "--restart FILE'); one is always written on SIGINT/SIGTERM");
+  declareInt(c, "Interval Steps", 0, "write a checkpoint every N steps (0: not by step count)",
+             Range::atLeast(0));
+  declareDouble(c, "Interval Seconds", 0.0,
+                "write a checkpoint when this many seconds of wall time have passed since the "
+                "last one (0: not by wall time)",
+                Range::nonNegative());
 }
 
 namespace {
@@ -52,20 +61,27 @@ TransientOutputSettings readTransientOutput(const Teuchos::ParameterList& p) {
   s.history = p.get<std::string>("History");
   s.exodusInterval = p.get<int>("Exodus Interval");
   s.progressInterval = p.get<double>("Progress Interval");
+  s.checkpoint.intervalSteps = p.sublist("Checkpoint").get<int>("Interval Steps");
+  s.checkpoint.intervalSeconds = p.sublist("Checkpoint").get<double>("Interval Seconds");
   return s;
 }
 
 const HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSettings& s,
                                              const OutputPlan& plan, const Model& model,
                                              const Teuchos::ParameterList& analysis) {
-  auto history = std::make_unique<HistoryObserver>(plan.what, plan.columns,
-                                                   plan.base + ".history.csv", analysis);
+  const std::string csv = plan.base + ".history.csv";
+  auto history = plan.resume ? std::make_unique<HistoryObserver>(plan.what, plan.columns, csv, analysis,
+                                                                 *plan.resume, *model.comm())
+                             : std::make_unique<HistoryObserver>(plan.what, plan.columns, csv, analysis);
   const HistoryObserver& h = *history;
   set.add(std::move(history));
   if (s.exodusInterval > 0)
-    set.add(std::make_unique<ExodusObserver>(plan.base + ".exo", model, h, s.exodusInterval));
+    set.add(std::make_unique<ExodusObserver>(plan.base + ".exo", model, h, s.exodusInterval, plan.resume));
   set.add(std::make_unique<ProgressObserver>(plan.startTime, plan.endTime, s.progressInterval));
-  set.add(std::make_unique<InterruptObserver>(plan.what, model.rawComm(), plan.interruptEvery));
+  CheckpointPlan cp = plan.checkpoint;
+  cp.settings = s.checkpoint;
+  set.add(std::make_unique<CheckpointObserver>(plan.what, model.rawComm(), plan.interruptEvery,
+                                               std::move(cp), set));
   return h;
 }
 

@@ -10,6 +10,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "observers/CheckpointObserver.hpp"
 #include "observers/HistoryObserver.hpp"
 #include "physics/Model.hpp"
 
@@ -27,6 +28,7 @@ struct TransientOutputSettings {
   std::string history;          // 'History': "A:DX A:VX"
   int exodusInterval = 10;      // 0: no Exodus file
   double progressInterval = 10; // seconds of wall time; 0: no progress lines
+  CheckpointSettings checkpoint;
 };
 TransientOutputSettings readTransientOutput(const Teuchos::ParameterList& analysis);
 
@@ -36,9 +38,12 @@ struct OutputPlan {
   std::vector<std::string> columns;  // the history's columns after "time"
   double startTime = 0, endTime = 0;
   long long interruptEvery = 1;      // recorded states between two interrupt tests
+  CheckpointPlan checkpoint;         // path, identity and the analysis's state (settings: from s)
+  const StateArchive* resume = nullptr;  // continue a checkpointed run's files
 };
 
-// Adds history, Exodus, progress and interrupt observers, in that order; returns the history.
+// Adds history, Exodus, progress and checkpoint/interrupt observers, in that order; returns the
+// history.
 const HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSettings& s,
                                              const OutputPlan& plan, const Model& model,
                                              const Teuchos::ParameterList& analysis);

@@ -15,6 +15,8 @@ struct StepPoint {
   double time = 0.0;
   double dt = 0.0;     // of the step just taken (0 for the initial state)
   bool last = false;   // the final state of the run
+  bool boundary = true;    // a state a checkpoint may hold (not a sub-step of a cut step)
+  long long nominal = 0;   // nominal steps completed (the step index without cuts)
 };
 
 // Energies of the state [J]; dissipated and external are the work done since the start.

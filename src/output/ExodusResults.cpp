@@ -84,6 +84,54 @@ ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& me
   }
 }
 
+ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& mesh,
+                                         std::vector<std::string> nodalVariables,
+                                         std::vector<std::string> globalVariables, const Resume& at)
+    : path_(path),
+      numNodes_(mesh.numNodes()),
+      nodalNames_(std::move(nodalVariables)),
+      globalNames_(std::move(globalVariables)) {
+  std::string source;
+  for (const std::string& p : {partPath(), incompletePath(), path_})
+    if (std::filesystem::exists(p)) {
+      source = p;
+      break;
+    }
+  const auto refuse = [&](const std::string& file, const std::string& why) {
+    if (exoid_ >= 0) ex_close(exoid_);
+    exoid_ = -1;
+    throw InputError(file + ": cannot continue the results of the checkpointed run: " + why +
+                     "; restart with the results the checkpoint was written with, or run from the start");
+  };
+  if (source.empty()) refuse(partPath(), "no such file (nor " + incompletePath() + " or " + path_ + ")");
+  if (source != partPath()) renameFile(source, partPath());
+  int cpu = sizeof(double), io = 0;
+  float version = 0;
+  exoid_ = ex_open(partPath().c_str(), EX_WRITE, &cpu, &io, &version);
+  if (exoid_ < 0) refuse(partPath(), "not a readable Exodus file");
+  const auto names = [&](ex_entity_type type) {
+    int n = 0;
+    std::vector<std::string> out;
+    if (ex_get_variable_param(exoid_, type, &n) < 0 || n < 0) return out;
+    std::vector<std::vector<char>> buf(n, std::vector<char>(kExodusMaxNameLength + 1, '\0'));
+    std::vector<char*> ptr;
+    for (auto& b : buf) ptr.push_back(b.data());
+    if (n > 0 && ex_get_variable_names(exoid_, type, n, ptr.data()) < 0) return out;
+    for (auto& b : buf) out.emplace_back(b.data());
+    return out;
+  };
+  if (ex_inquire_int(exoid_, EX_INQ_NODES) != numNodes_) refuse(partPath(), "its node count differs");
+  if (names(EX_NODAL) != nodalNames_ || names(EX_GLOBAL) != globalNames_)
+    refuse(partPath(), "its variables differ");
+  const int stored = static_cast<int>(ex_inquire_int(exoid_, EX_INQ_TIME));
+  double t = 0.0;
+  if (stored < at.steps || (at.steps > 0 && (ex_get_time(exoid_, at.steps, &t) < 0 || t != at.lastTime)))
+    refuse(partPath(), "it holds " + std::to_string(stored) + " time steps, not the checkpoint's " +
+                           std::to_string(at.steps));
+  steps_ = at.steps;
+  lastTime_ = at.lastTime;
+}
+
 ExodusResultsWriter::~ExodusResultsWriter() {
   try {
     abandon();
@@ -93,7 +141,7 @@ ExodusResultsWriter::~ExodusResultsWriter() {
 }
 
 void ExodusResultsWriter::check(int rc, const std::string& what) const {
-  if (rc < 0) throw std::runtime_error(exodusFailure(what, partPath()));
+  if (rc < 0) throw OutputError(exodusFailure(what, partPath()) + " (disk full or file-size limit?)");
 }
 
 void ExodusResultsWriter::writeStep(double time, const std::vector<std::vector<double>>& nodal,
@@ -135,6 +183,7 @@ void ExodusResultsWriter::writeStep(double time, const std::vector<std::vector<d
           "writing the global variables at step " + std::to_string(step));
   check(ex_update(exoid_), "flushing step " + std::to_string(step));
   steps_ = step;
+  lastTime_ = time;
 }
 
 void ExodusResultsWriter::close() {

@@ -20,6 +20,17 @@ class ExodusResultsWriter {
   ExodusResultsWriter(const std::string& path, const Mesh& mesh,
                       std::vector<std::string> nodalVariables,
                       std::vector<std::string> globalVariables);
+  // Continues the results of a checkpointed run: <path>.part (or the .incomplete or final
+  // file when that run ended), which must hold this mesh's node count, these variables and at
+  // least `steps` time steps, the last of them at `lastTime`; later steps are overwritten as
+  // the run goes on. Throws InputError naming the file otherwise.
+  struct Resume {
+    int steps = 0;
+    double lastTime = 0.0;
+  };
+  ExodusResultsWriter(const std::string& path, const Mesh& mesh,
+                      std::vector<std::string> nodalVariables,
+                      std::vector<std::string> globalVariables, const Resume& at);
   ~ExodusResultsWriter();  // abandon() unless finish() or abandon() was called
   ExodusResultsWriter(const ExodusResultsWriter&) = delete;
   ExodusResultsWriter& operator=(const ExodusResultsWriter&) = delete;
@@ -34,6 +45,7 @@ class ExodusResultsWriter {
   void finish();   // closes and renames <path>.part → <path>
   void abandon();  // closes and renames <path>.part → <stem>.incomplete<ext>; quiet if closed
   int stepsWritten() const { return steps_; }
+  double lastTime() const { return lastTime_; }
 
   const std::string& path() const { return path_; }
   std::string partPath() const { return path_ + ".part"; }
@@ -48,6 +60,7 @@ class ExodusResultsWriter {
   std::vector<std::string> nodalNames_, globalNames_;
   int exoid_ = -1;
   int steps_ = 0;
+  double lastTime_ = 0.0;
 };
 
 }  // namespace choc

@@ -6,6 +6,9 @@
 #include <cstring>
 #include <fstream>
 #include <set>
+#include <sstream>
+
+#include <unistd.h>
 #include <stdexcept>
 
 #include "core/Errors.hpp"
@@ -88,10 +91,58 @@ HistoryCsv::HistoryCsv(const std::string& path, const std::vector<std::string>& 
   if (!file_)
     throwInput(partPath(), "output directory", "", std::string("cannot be opened for writing (") +
                std::strerror(errno) + ")", "check that the output directory exists and is writable");
-  std::string header = "time";
-  for (const auto& c : columns_) header += "," + c;
-  header += "\n";
-  std::fputs(header.c_str(), file_);
+  if (std::fputs(header().c_str(), file_) == EOF)
+    throw OutputError("history " + partPath() + ": write failed (" + std::strerror(errno) + ")");
+}
+
+std::string HistoryCsv::header() const {
+  std::string h = "time";
+  for (const auto& c : columns_) h += "," + c;
+  return h + "\n";
+}
+
+HistoryCsv::HistoryCsv(const std::string& path, const std::vector<std::string>& columns,
+                       const Resume& at, std::string& prefix)
+    : path_(path), columns_(columns) {
+  std::string source;
+  for (const std::string& p : {partPath(), incompletePath(path_), path_})
+    if (std::ifstream(p).good()) {
+      source = p;
+      break;
+    }
+  const auto refuse = [&](const std::string& file, const std::string& why) {
+    throw InputError(file + ": cannot continue the history of the checkpointed run: " + why +
+                     "; restart with the results the checkpoint was written with, or run from the start");
+  };
+  if (source.empty()) refuse(partPath(), "no such file (nor " + incompletePath(path_) + " or " + path_ + ")");
+  {
+    std::ifstream in(source, std::ios::binary);
+    prefix.assign(static_cast<std::size_t>(std::max(0LL, at.bytes)), '\0');
+    in.read(prefix.data(), at.bytes);
+    if (in.gcount() != at.bytes)
+      refuse(source, "it has " + std::to_string(in.gcount()) + " bytes, the checkpoint needs " +
+                         std::to_string(at.bytes));
+  }
+  std::size_t lines = 0;
+  for (char c : prefix) lines += c == '\n';
+  if (prefix.compare(0, header().size(), header()) != 0 || lines != at.rows + 1 ||
+      (!prefix.empty() && prefix.back() != '\n'))
+    refuse(source, "its first " + std::to_string(at.rows) + " rows are not the checkpoint's");
+  if (source != partPath() && std::rename(source.c_str(), partPath().c_str()) != 0)
+    refuse(source, std::string("cannot rename it to ") + partPath() + " (" + std::strerror(errno) + ")");
+  if (::truncate(partPath().c_str(), at.bytes) != 0)
+    refuse(partPath(), std::string("cannot truncate it (") + std::strerror(errno) + ")");
+  file_ = std::fopen(partPath().c_str(), "a");
+  if (!file_) refuse(partPath(), std::string("cannot open it for writing (") + std::strerror(errno) + ")");
+  rows_ = at.rows;
+}
+
+long long HistoryCsv::flush() {
+  if (!file_) throw std::logic_error("history " + path_ + ": flush after finish/abandon");
+  if (std::fflush(file_) != 0 || std::ferror(file_))
+    throw OutputError("history " + partPath() + ": write failed (" + std::strerror(errno) +
+                      "; disk full or file-size limit?)");
+  return static_cast<long long>(std::ftell(file_));
 }
 
 HistoryCsv::~HistoryCsv() {
@@ -119,8 +170,11 @@ void HistoryCsv::appendRow(double time, const std::vector<double>& values) {
   std::string line = csvNumber(time);
   for (double v : values) line += "," + csvNumber(v);
   line += "\n";
-  std::fputs(line.c_str(), file_);
-  if (++rows_ % kFlushEvery == 0) std::fflush(file_);
+  const bool failed = std::fputs(line.c_str(), file_) == EOF ||
+                      (++rows_ % kFlushEvery == 0 && std::fflush(file_) != 0);
+  if (failed)
+    throw OutputError("history " + partPath() + ": write failed (" + std::strerror(errno) +
+                      "; disk full or file-size limit?)");
 }
 
 void HistoryCsv::closeAndRename(bool complete) {
@@ -135,7 +189,7 @@ void HistoryCsv::closeAndRename(bool complete) {
     throw std::runtime_error("history " + path_ + ": cannot rename " + partPath() + " to " +
                              target + " (" + std::strerror(errno) + ")");
   if (writeFailed || closeFailed)
-    throw std::runtime_error("history " + path_ + ": write failed (disk full?); kept as " + target);
+    throw OutputError("history " + path_ + ": write failed (disk full or file-size limit?); kept as " + target);
 }
 
 void HistoryCsv::finish() {
@@ -169,8 +223,15 @@ std::vector<double> HistoryTable::column(const std::string& name) const {
 }
 
 HistoryTable readHistoryCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot be opened for reading");
+  std::ifstream file(path);
+  if (!file) throw std::runtime_error(path + ": cannot be opened for reading");
+  std::ostringstream text;
+  text << file.rdbuf();
+  return parseHistoryCsv(text.str(), path);
+}
+
+HistoryTable parseHistoryCsv(const std::string& content, const std::string& path) {
+  std::istringstream in(content);
   HistoryTable t;
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(path + ": empty file (no header)");

@@ -21,6 +21,16 @@ class HistoryCsv {
   // Removes stale <path> and its ".incomplete" file from an earlier run.
   // Throws std::invalid_argument for bad names, choc::InputError if the file cannot be opened.
   HistoryCsv(const std::string& path, const std::vector<std::string>& columns);
+  // Continues the history of a checkpointed run: the first `bytes` bytes (the header and
+  // `rows` rows) of <path>.part, or of the .incomplete or final file when the earlier run
+  // ended; rows after them are dropped. Throws InputError naming the file when it is missing or
+  // does not hold that header and those rows. `prefix` receives the kept text.
+  struct Resume {
+    std::size_t rows = 0;
+    long long bytes = 0;
+  };
+  HistoryCsv(const std::string& path, const std::vector<std::string>& columns, const Resume& at,
+             std::string& prefix);
   ~HistoryCsv();  // abandon() unless finished
   HistoryCsv(const HistoryCsv&) = delete;
   HistoryCsv& operator=(const HistoryCsv&) = delete;
@@ -28,6 +38,9 @@ class HistoryCsv {
   // values: one per column. Throws choc::NumericalError naming the column and the time if
   // a value (or the time) is not finite, std::invalid_argument on a size mismatch.
   void appendRow(double time, const std::vector<double>& values);
+  // Flushes the rows written so far and returns the file's length (for a checkpoint).
+  // Throws OutputError naming the file when the data cannot be written.
+  long long flush();
   void finish();   // flush, close, rename <path>.part -> <path>
   void abandon();  // close, rename <path>.part -> incompletePath(path)
 
@@ -38,6 +51,7 @@ class HistoryCsv {
 
  private:
   void closeAndRename(bool complete);
+  std::string header() const;
   std::string path_;
   std::vector<std::string> columns_;
   std::FILE* file_ = nullptr;
@@ -55,5 +69,7 @@ struct HistoryTable {
 
 // Throws std::runtime_error naming the file and line on a missing file or a malformed row.
 HistoryTable readHistoryCsv(const std::string& path);
+// The same from text already read (`name` for messages).
+HistoryTable parseHistoryCsv(const std::string& text, const std::string& name);
 
 }  // namespace choc

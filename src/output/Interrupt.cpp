@@ -29,6 +29,9 @@ void installInterruptHandlers() {
   sa.sa_flags = SA_RESTART;
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
+  // A file-size limit (ulimit -f) makes write() fail with EFBIG instead of killing the
+  // process, so the writer reports the file and the results so far are kept.
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 bool interruptRequested() { return g_signal != 0; }
@@ -69,13 +72,17 @@ void throwIfInterruptedBefore(const std::string& what) {
     throw Interrupted(sig, std::string(signalName(sig)) + " received: run stopped before " + what);
 }
 
+std::string interruptedMessage(int sig, const std::string& what, double time) {
+  char t[64];
+  std::snprintf(t, sizeof t, "%.6e", time);
+  return std::string(signalName(sig)) + " received: " + what + " stopped at t = " + t +
+         " s (the last completed step)";
+}
+
 void throwIfInterrupted(const std::string& what, double time, MPI_Comm comm) {
   const int sig = agreedSignal(comm);
   if (sig == 0) return;
-  char t[64];
-  std::snprintf(t, sizeof t, "%.6e", time);
-  throw Interrupted(sig, std::string(signalName(sig)) + " received: " + what +
-                             " stopped at t = " + t + " s (the last completed step)");
+  throw Interrupted(sig, interruptedMessage(sig, what, time));
 }
 
 }  // namespace choc

@@ -34,6 +34,8 @@ const char* signalName(int sig);  // "SIGINT", "SIGTERM", ...
 // MPI rank every rank of `comm` (the analysis's communicator) must call it at the same step
 // boundary: the flag is reduced over it (a rank that did not see the signal stops too).
 void throwIfInterrupted(const std::string& what, double time, MPI_Comm comm = MPI_COMM_WORLD);
+// The message throwIfInterrupted gives.
+std::string interruptedMessage(int sig, const std::string& what, double time);
 // The same between two analyses: "<signal> received: run stopped before <what>".
 void throwIfInterruptedBefore(const std::string& what);
 // For tests: as if the signal had been received (0 clears the flag).

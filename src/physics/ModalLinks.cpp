@@ -299,4 +299,30 @@ double ModalLinks::springEnergy() const {
   return e;
 }
 
+void ModalLinks::archive(StateArchive& a) const {
+  std::vector<ShockLawState> states;
+  std::vector<ShockResponse> last;
+  for (const auto& l : links_) {
+    states.push_back(l.state);
+    last.push_back(l.last);
+  }
+  a.putVector("links/states", states);
+  a.putVector("links/responses", last);
+  a.putVector("links/gapRates", lastGapRate_);
+  a.putVector("links/constraintForce", constraintForce_);
+  a.putDouble("links/dissipated", linkDissipated_);
+}
+
+void ModalLinks::unarchive(const StateArchive& a) {
+  const auto states = a.getVector<ShockLawState>("links/states", links_.size());
+  const auto last = a.getVector<ShockResponse>("links/responses", links_.size());
+  for (size_t i = 0; i < links_.size(); ++i) {
+    links_[i].state = states[i];
+    links_[i].last = last[i];
+  }
+  lastGapRate_ = a.getVector<double>("links/gapRates", links_.size());
+  constraintForce_ = a.getVector<double>("links/constraintForce", constraintForce_.size());
+  linkDissipated_ = a.getDouble("links/dissipated");
+}
+
 }  // namespace choc

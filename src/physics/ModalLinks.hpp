@@ -53,6 +53,8 @@ class ModalLinks : public ModalForce, public InteractionOutput {
   double linkDampingRatioBound() const;
   double springEnergy() const;
   double dissipatedEnergy() const { return linkDissipated_; }
+  void archive(StateArchive& a) const override;
+  void unarchive(const StateArchive& a) override;
 
   // Output: force, gap and status per link (history and Exodus globals).
   std::vector<std::string> historyColumns() const override { return shockLinkColumns(links_); }

@@ -255,5 +255,11 @@ void StructuralOperator::saveState() {
 void StructuralOperator::restoreState() {
   if (contact_) contact_->restore();
 }
+void StructuralOperator::archive(StateArchive& a) const {
+  if (contact_) contact_->archive(a);
+}
+void StructuralOperator::unarchive(const StateArchive& a) {
+  if (contact_) contact_->unarchive(a);
+}
 
 }  // namespace choc

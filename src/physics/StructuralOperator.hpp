@@ -42,6 +42,8 @@ class StructuralOperator : public SecondOrderOperator {
   void initializeConstraints(const Vector& u) override;
   void saveState() override;
   void restoreState() override;
+  void archive(StateArchive& a) const override;
+  void unarchive(const StateArchive& a) override;
 
   // Energies of a state, for the output: 1/2 v.M v, 1/2 u.K u, the contact springs' energy,
   // the damping power v.C v (given the kinetic energy), the loads' work f.(u - u0).

@@ -109,6 +109,31 @@ void ModalIntegrator::advance(ModalState& s, double dt, int substeps) const {
   s.t = t0 + dt;  // no drift of the output times
 }
 
+void ModalIntegrator::archive(const ModalState& s, StateArchive& a) const {
+  a.putDouble("modal/t", s.t);
+  a.putVector("modal/q", s.q);
+  a.putVector("modal/v", s.v);
+  a.putVector("modal/a", s.a);
+  a.putVector("modal/f", s.f);
+  a.putInt("modal/substeps", subSteps_);
+  a.putVector("modal/integrals", std::vector<double>{lastStep_, dissipated_});
+  force_.archive(a);
+}
+
+void ModalIntegrator::unarchive(ModalState& s, const StateArchive& a) const {
+  const size_t n = w2_.size();
+  s.t = a.getDouble("modal/t");
+  s.q = a.getVector<double>("modal/q", n);
+  s.v = a.getVector<double>("modal/v", n);
+  s.a = a.getVector<double>("modal/a", n);
+  s.f = a.getVector<double>("modal/f", n);
+  subSteps_ = a.getInt("modal/substeps");
+  const std::vector<double> w = a.getVector<double>("modal/integrals", 2);
+  lastStep_ = w[0];
+  dissipated_ = w[1];
+  force_.unarchive(a);
+}
+
 double explicitCriticalStep(double omegaMax, double xiMax) {
   if (!(omegaMax > 0)) return INFINITY;
   return 2.0 / omegaMax * (std::sqrt(1.0 + xiMax * xiMax) - xiMax);

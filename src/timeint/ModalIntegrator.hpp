@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "restart/StateArchive.hpp"
+
 namespace choc {
 
 class ModalForce {
@@ -27,6 +29,9 @@ class ModalForce {
   virtual void project(double /*h*/, std::vector<double>& /*q*/, std::vector<double>& /*v*/) {}
   // Generalized constraint force B^T lambda of the last project() (nullptr: no constraints).
   virtual const std::vector<double>* constraintForce() const { return nullptr; }
+  // What the force carries between steps, for a checkpoint, and back.
+  virtual void archive(StateArchive& /*a*/) const {}
+  virtual void unarchive(const StateArchive& /*a*/) {}
 };
 
 enum class ModalScheme { SymplecticEuler, CentralDifference, Adaptive };
@@ -54,6 +59,9 @@ class ModalIntegrator {
   std::vector<double> synchronizedVelocity(const ModalState& s) const;
   // Energy dissipated by modal damping since the start (trapezoidal in time).
   double modalDissipation() const { return dissipated_; }
+  // The state s and what the integrator and the force carry ("modal/*"), and back.
+  void archive(const ModalState& s, StateArchive& a) const;
+  void unarchive(ModalState& s, const StateArchive& a) const;
 
  private:
   void euler(ModalState& s, double h) const;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/TpetraTypes.hpp"
+#include "restart/StateArchive.hpp"
 
 namespace choc {
 
@@ -71,6 +72,9 @@ class SecondOrderOperator {
   // restored when a step fails.
   virtual void saveState() {}
   virtual void restoreState() {}
+  // The accepted state of the extra unknowns and statuses in a checkpoint, and back.
+  virtual void archive(StateArchive& /*a*/) const {}
+  virtual void unarchive(const StateArchive& /*a*/) {}
 };
 
 }  // namespace choc

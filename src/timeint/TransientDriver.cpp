@@ -68,39 +68,72 @@ NewtonOutcome TransientDriver::attempt(double t, double dt) {
   return out;
 }
 
-TransientSummary TransientDriver::run(Vector& u, Vector& v) {
-  TransientSummary sum;
+void TransientDriver::initialState(TransientSummary& sum) {
+  // Initial acceleration from equilibrium: M a0 = -(F(u0, v0, t0) + f_c(u0)).
+  const double t0 = s_.startTime;
+  op_.beginStep(*u0_, t0);
+  op_.initializeConstraints(*u0_);
+  Vector r(op_.map());
+  op_.applyForces(*u0_, *v0_, t0, r);
+  fc_->putScalar(0.0);
+  op_.addConstraintForces(*u0_, *fc_);
+  r.update(1.0, *fc_, 1.0);
+  const CorrectionStatus cs = op_.solveInitialAcceleration(*u0_, r, *a0_);
+  if (cs.refactored) ++sum.refactorizations;
+  if (!cs.ok)
+    throw NumericalError(s_.label + ": initial acceleration: linear solve failed: " + cs.message);
+  op_.saveState();
+}
+
+void TransientDriver::archive(StateArchive& a, const StateVectors& vectors) const {
+  vectors.put(a, "driver/u", *u0_);
+  vectors.put(a, "driver/v", *v0_);
+  vectors.put(a, "driver/a", *a0_);
+  a.putDouble("driver/time", t_);
+  a.putInt("driver/nominal", nominal_);
+  a.putPod("driver/summary", sum_);
+  op_.archive(a);
+}
+
+void TransientDriver::resumeState(const Resume& r, TransientSummary& sum) {
+  r.vectors.get(r.archive, "driver/u", *u0_);
+  r.vectors.get(r.archive, "driver/v", *v0_);
+  r.vectors.get(r.archive, "driver/a", *a0_);
+  t_ = r.archive.getDouble("driver/time");
+  nominal_ = r.archive.getInt("driver/nominal");
+  sum = r.archive.getPod<TransientSummary>("driver/summary");
+  op_.unarchive(r.archive);
+  op_.saveState();
+}
+
+TransientSummary TransientDriver::run(Vector& u, Vector& v, const Resume* resume) {
+  TransientSummary& sum = sum_;
+  sum = TransientSummary();
   const double dt = s_.timeStep, t0 = s_.startTime;
   if (!(dt > 0) || !(s_.endTime > t0))
     throw std::invalid_argument("TransientDriver: needs dt > 0 and endTime > startTime");
-  u0_->assign(u);
-  v0_->assign(v);
-  // Initial acceleration from equilibrium: M a0 = -(F(u0, v0, t0) + f_c(u0)).
-  {
-    op_.beginStep(*u0_, t0);
-    op_.initializeConstraints(*u0_);
-    Vector r(op_.map());
-    op_.applyForces(*u0_, *v0_, t0, r);
-    fc_->putScalar(0.0);
-    op_.addConstraintForces(*u0_, *fc_);
-    r.update(1.0, *fc_, 1.0);
-    const CorrectionStatus cs = op_.solveInitialAcceleration(*u0_, r, *a0_);
-    if (cs.refactored) ++sum.refactorizations;
-    if (!cs.ok)
-      throw NumericalError(s_.label + ": initial acceleration: linear solve failed: " + cs.message);
-    op_.saveState();
+  StepInfo info;
+  if (resume) {
+    resumeState(*resume, sum);
+  } else {
+    u0_->assign(u);
+    v0_->assign(v);
+    t_ = t0;
+    nominal_ = 0;
+    initialState(sum);
+    sum.smallestStep = dt;
   }
   op_.applyMass(*a0_, *Ma0_);
-  op_.applyForces(*u0_, *v0_, t0, *F0_);
-  sum.smallestStep = dt;
-  StepInfo info;
-  info.time = t0;
-  notify(info);
+  op_.applyForces(*u0_, *v0_, t_, *F0_);
+  info.time = t_;
+  info.step = sum.steps;
+  info.nominal = nominal_;
+  if (!resume) notify(info);
 
   const double span = s_.endTime - t0;
   const long long nominal = std::max(1LL, (long long)std::ceil(span / dt - 1e-9));
-  double t = t0;
-  for (long long n = 1; n <= nominal; ++n) {
+  double t = t_;
+  for (long long n = nominal_ + 1; n <= nominal; ++n) {
     const double target = n == nominal ? s_.endTime : t0 + double(n) * dt;
     double h = target - t;
     int cuts = 0;
@@ -140,12 +173,16 @@ TransientSummary TransientDriver::run(Vector& u, Vector& v) {
       ++sum.steps;
       sum.maxNewtonPerStep = std::max(sum.maxNewtonPerStep, out.iterations);
       sum.smallestStep = std::min(sum.smallestStep, h);
+      t_ = t;
+      if (t >= target) nominal_ = n;
       info.step = sum.steps;
       info.time = t;
       info.dt = h;
       info.newton = out;
       info.cuts = cuts;
       info.last = n == nominal && t >= target;
+      info.boundary = t >= target;
+      info.nominal = nominal_;
       notify(info);
     }
   }

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "restart/StateArchive.hpp"
+#include "restart/StateVectors.hpp"
 #include "timeint/NewmarkFamily.hpp"
 #include "timeint/NewtonActiveSet.hpp"
 
@@ -30,6 +32,8 @@ struct StepInfo {
   NewtonOutcome newton;   // of this step
   int cuts = 0;           // dt cuts made inside the current nominal step
   bool last = false;      // the final step of the run
+  bool boundary = true;   // the end of a nominal step (not a sub-step of a cut one)
+  long long nominal = 0;  // nominal steps completed
 };
 
 class StepObserver {
@@ -57,18 +61,32 @@ class TransientDriver {
   void addObserver(StepObserver* o) { observers_.push_back(o); }
   // Integrates from (u, v) at startTime to endTime; u and v hold the final state on return.
   // Throws NumericalError when a step fails beyond the allowed cuts.
-  TransientSummary run(Vector& u, Vector& v);
+  // With `resume`, continues from the state a checkpoint holds (archive()), with the
+  // operator's own state restored, and does not report the checkpoint's state again.
+  struct Resume {
+    const StateArchive& archive;
+    const StateVectors& vectors;
+  };
+  TransientSummary run(Vector& u, Vector& v, const Resume* resume = nullptr);
+  // The accepted state and counters (call from a step observer at a nominal boundary):
+  // records "driver/*" and the operator's.
+  void archive(StateArchive& a, const StateVectors& vectors) const;
   const NewmarkFamily& scheme() const { return scheme_; }
 
  private:
   // One attempt from state n to t + dt; returns the outcome, leaves u1, v1, a1.
   NewtonOutcome attempt(double t, double dt);
+  void initialState(TransientSummary& sum);
+  void resumeState(const Resume& r, TransientSummary& sum);
   void notify(const StepInfo& info);
 
   SecondOrderOperator& op_;
   NewmarkFamily scheme_;
   TransientSettings s_;
   std::vector<StepObserver*> observers_;
+  double t_ = 0.0;          // time of the accepted state
+  long long nominal_ = 0;   // nominal steps completed
+  TransientSummary sum_;
   // State at t_n and its weighted terms, and the trial state at t_{n+1}.
   RCP<Vector> u0_, v0_, a0_, Ma0_, F0_, u1_, v1_, a1_;
   RCP<Vector> uTilde_, vTilde_, inertia_, forces_, fc_, change_;
