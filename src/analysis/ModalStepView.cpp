@@ -3,6 +3,8 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "physics/ModalProjection.hpp"
+
 namespace choc {
 
 ModalStepView::ModalStepView(const ModalState& state, const ModalIntegrator& integrator,
@@ -54,10 +56,7 @@ EnergyTerms ModalStepView::energies() {
 void ModalStepView::fields(Vector& u, Vector& v, Vector& a) const {
   const std::vector<double>* x[3] = {&state_.q, &state_.v, &state_.a};
   Vector* out[3] = {&u, &v, &a};
-  for (int i = 0; i < 3; ++i) {
-    out[i]->putScalar(0.0);
-    for (size_t k = 0; k < w2_.size(); ++k) out[i]->update((*x[i])[k], *basis_.vectors->getVector(k), 1.0);
-  }
+  for (int i = 0; i < 3; ++i) expandOnBasis(*basis_.vectors, *x[i], *out[i]);
 }
 
 }  // namespace choc

@@ -11,6 +11,7 @@
 #include "fem/FieldGather.hpp"
 #include "input/ParameterSpec.hpp"
 #include "physics/ModalProjection.hpp"
+#include "restart/StateVectors.hpp"
 
 namespace choc {
 
@@ -139,22 +140,66 @@ void ModalTransient::run(RunContext& ctx) {
   const StateArchive* resume = resumeFor(ctx);
   plan.resume = resume;
   plan.checkpoint = checkpointPlan(ctx);
-  plan.checkpoint.archiveRun = [&](StateArchive& a) {
-    integrator.archive(state, a);
-    a.putVector("modal/eigenvalues", basis.eigenvalues);
-  };
-  long long first = 1;  // the first step to take
-  if (resume) {
-    if (resume->getVector<double>("modal/eigenvalues") != basis.eigenvalues)
-      throw InputError("option '--restart': the modal basis recomputed for analysis '" + name_ +
-                       "' differs from the checkpoint's (another build or number of ranks?); run from the start");
-    integrator.unarchive(state, *resume);
-    first = resume->getInt("point/nominal") + 1;
-    log() << format("  continuing from the checkpoint at t = %.6e s (step %lld)\n", state.t, first - 1);
-  }
+  const StateVectors vectors(ctx.model.dofs());
+  ModalCheckpoint cp{integrator, state, links, basis, *ctx.model.mass(), vectors};
+  plan.checkpoint.archiveRun = [&](StateArchive& a) { archiveState(cp, a); };
+  const long long first = resume ? resumeState(cp, *resume) + 1 : 1;  // the first step to take
   const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model, params_);
   integrate(integrator, state, view, outputs, substeps, first);
   evaluateChecks(b_->checks, history.history(), ctx.checks);
+}
+
+namespace {
+
+// The modal vectors of the state (coordinates, velocities, accelerations, link forces and the
+// rigid links' constraint force), by record name.
+std::vector<std::pair<std::string, std::vector<double>*>> modalVectors(ModalState& s, std::vector<double>* cf) {
+  std::vector<std::pair<std::string, std::vector<double>*>> v = {{"q", &s.q}, {"v", &s.v}, {"a", &s.a}, {"f", &s.f}};
+  if (cf) v.emplace_back("constraintForce", cf);
+  return v;
+}
+
+}  // namespace
+
+// The integrator's records, the eigenvalues (which tell whether a restart recomputed the same
+// basis) and every modal vector expanded on the basis (physical fields in node order), from
+// which a restart on a basis computed on another number of ranks projects its coordinates.
+void ModalTransient::archiveState(ModalCheckpoint& c, StateArchive& a) const {
+  c.integrator.archive(c.state, a);
+  a.putVector("modal/eigenvalues", c.basis.eigenvalues);
+  std::vector<double> cf = c.links.constraintForce() ? *c.links.constraintForce() : std::vector<double>();
+  Vector x(c.mass.getRowMap());
+  for (auto& [name, vec] : modalVectors(c.state, c.links.constraintForce() ? &cf : nullptr)) {
+    expandOnBasis(*c.basis.vectors, *vec, x);
+    c.vectors.put(a, "modal/physical/" + name, x);
+  }
+}
+
+// Restores the state; returns the step of the checkpoint.
+long long ModalTransient::resumeState(ModalCheckpoint& c, const StateArchive& a) const {
+  c.integrator.unarchive(c.state, a);
+  const std::vector<double> was = a.getVector<double>("modal/eigenvalues");
+  if (was != c.basis.eigenvalues) {
+    // Another basis of (nearly) the same space: q' = Phi'^T M (Phi q) for every modal vector.
+    double change = 0.0, largest = 0.0;
+    for (size_t k = 0; k < was.size() && k < c.basis.eigenvalues.size(); ++k) {
+      change = std::max(change, std::abs(was[k] - c.basis.eigenvalues[k]));
+      largest = std::max(largest, std::abs(was[k]));
+    }
+    change /= std::max(largest, 1e-300);
+    std::vector<double> cf;
+    Vector x(c.mass.getRowMap());
+    for (auto& [name, vec] : modalVectors(c.state, c.links.constraintForce() ? &cf : nullptr)) {
+      c.vectors.get(a, "modal/physical/" + name, x);
+      *vec = projectOnBasis(*c.basis.vectors, c.mass, x, "mass-weighted");
+    }
+    if (c.links.constraintForce()) c.links.setConstraintForce(cf);
+    log() << format("  the modal basis differs from the checkpoint's (eigenvalues changed by up to "
+                    "%.2e of the largest): the state is projected on this one\n", change);
+  }
+  const long long step = a.getInt("point/nominal");
+  log() << format("  continuing from the checkpoint at t = %.6e s (step %lld)\n", c.state.t, step);
+  return step;
 }
 
 ModalTransient::Generalized ModalTransient::generalizedSystem(const ModalBasis& basis) const {

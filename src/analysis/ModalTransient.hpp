@@ -10,6 +10,7 @@
 #include "checks/HistoryCheck.hpp"
 #include "observers/TransientOutputs.hpp"
 #include "physics/InitialConditions.hpp"
+#include "restart/StateVectors.hpp"
 
 namespace choc {
 
@@ -51,6 +52,17 @@ class ModalTransient : public Analysis {
   int stepsPerStep(const Generalized& g, const ModalLinks& links) const;
   void describe(const Model& model, const ModalBasis& basis, const Generalized& g,
                 const ModalLinks& links, const double residuals[2]) const;
+  // What a checkpoint of the run reads and restores.
+  struct ModalCheckpoint {
+    ModalIntegrator& integrator;
+    ModalState& state;
+    ModalLinks& links;
+    const ModalBasis& basis;
+    const CrsMatrix& mass;
+    const StateVectors& vectors;
+  };
+  void archiveState(ModalCheckpoint& c, StateArchive& a) const;
+  long long resumeState(ModalCheckpoint& c, const StateArchive& a) const;
   void integrate(ModalIntegrator& integrator, ModalState& state, ModalStepView& view,
                  ObserverSet& outputs, int substeps, long long first) const;
 

@@ -110,11 +110,6 @@ std::shared_ptr<const StateArchive> loadRestart(const std::string& file, const T
     refuse(format("the checkpoint is at t = %.6e s, not before 'Analyses/%s/End Time' = %.6e s; "
                   "raise End Time to continue the run",
                   t, was.analysis.c_str(), end));
-  if (an.get<std::string>("Type") == "Modal Transient" && was.ranks != now.ranks)
-    refuse(format("a modal transient continues on the number of ranks that wrote it (%d, not %d): "
-                  "its modal basis is recomputed, and bases computed on different ranks differ "
-                  "within the eigen-solver's tolerance",
-                  was.ranks, now.ranks));
   log() << format("restart: analysis '%s' continues from %s (t = %.6e s, written on %d rank(s))\n",
                   was.analysis.c_str(), file.c_str(), t, was.ranks);
   return archive;

@@ -54,6 +54,9 @@ class ModalLinks : public ModalForce, public InteractionOutput {
   double springEnergy() const;
   double dissipatedEnergy() const { return linkDissipated_; }
   void archive(StateArchive& a) const override;
+  // The constraint force of the last project() expressed on another basis (a restart on a
+  // basis recomputed on another number of ranks).
+  void setConstraintForce(std::vector<double> f) { constraintForce_ = std::move(f); }
   void unarchive(const StateArchive& a) override;
 
   // Output: force, gap and status per link (history and Exodus globals).

@@ -33,6 +33,11 @@ std::vector<double> projectOnBasis(const MultiVector& Phi, const CrsMatrix& M, c
   return q;
 }
 
+void expandOnBasis(const MultiVector& Phi, const std::vector<double>& q, Vector& u) {
+  u.putScalar(0.0);
+  for (size_t k = 0; k < q.size(); ++k) u.update(q[k], *Phi.getVector(k), 1.0);
+}
+
 double projectionResidual(const MultiVector& Phi, const Vector& u, const std::vector<double>& q) {
   Vector r(u, Teuchos::Copy);
   for (size_t k = 0; k < q.size(); ++k) r.update(-q[k], *Phi.getVector(k), 1.0);

@@ -10,6 +10,8 @@ namespace choc {
 
 std::vector<double> projectOnBasis(const MultiVector& Phi, const CrsMatrix& M, const Vector& u,
                                    const std::string& method);
+// u = Phi q.
+void expandOnBasis(const MultiVector& Phi, const std::vector<double>& q, Vector& u);
 // ||u - Phi q|| / ||u|| (0 when u = 0).
 double projectionResidual(const MultiVector& Phi, const Vector& u, const std::vector<double>& q);
 
