@@ -26,3 +26,5 @@ gmsh -3 -format msh41 "$here/sdnv100_bar.geo" -o "$here/sdnv100_bar.msh" > /dev/
 # Hertz (issue 14): the sphere (axisymmetric half disc) and its lower half for the static press.
 gmsh -2 -order 2 -format msh41 "$here/hertz_axisymmetric.geo" -o "$here/hertz_axisymmetric.msh" > /dev/null
 gmsh -2 -order 2 -format msh41 "$here/hertz_hemisphere.geo" -o "$here/hertz_hemisphere.msh" > /dev/null
+# SDND101 (issue 16): the oscillator on a stop, one beam standing for the discrete spring and mass.
+gmsh -1 -format msh41 "$here/sdnd101.geo" -o "$here/sdnd101.msh" > /dev/null

@@ -4,7 +4,7 @@
     compare_results.py DIR_A DIR_B [--names c1 c2] [--tolerance T]
 
 For each analysis name (default: every <name>.history.csv of DIR_A), compares
-<name>.history.csv and <name>.exo of both directories:
+<name>.history.csv, <name>.exo and <name>.impacts.csv (when present) of both directories:
   - default (bit for bit): the history files are byte-identical and every time value,
     nodal and global variable of the Exodus files is exactly equal;
   - --tolerance T: the same shapes, and every column / variable agrees to T times its
@@ -38,6 +38,19 @@ def compare_history(a, b, tol):
         err = np.max(np.abs(ra[:, j] - rb[:, j])) / scale
         if err > tol:
             return f"column {name} differs by {err:.3e} of its peak (tolerance {tol:g})"
+    return None
+
+
+def compare_impacts(a, b, tol):
+    if tol is None:
+        return None if open(a, "rb").read() == open(b, "rb").read() else "the files differ"
+    ra, rb = open(a).read().splitlines(), open(b).read().splitlines()
+    if len(ra) != len(rb):
+        return f"{len(ra) - 1} impacts against {len(rb) - 1}"
+    for la, lb in zip(ra[1:], rb[1:]):
+        for x, y in zip(la.split(",")[2:], lb.split(",")[2:]):
+            if abs(float(x) - float(y)) > tol * max(abs(float(x)), 1e-300):
+                return f"impact row '{la}' against '{lb}'"
     return None
 
 
@@ -87,9 +100,10 @@ def main():
         print(f"no history in {args.a}")
         return 1
     for n in names:
-        for ext, fn in ((".history.csv", compare_history), (".exo", compare_exodus)):
+        for ext, fn in ((".history.csv", compare_history), (".exo", compare_exodus),
+                        (".impacts.csv", compare_impacts)):
             fa, fb = os.path.join(args.a, n + ext), os.path.join(args.b, n + ext)
-            if ext == ".exo" and not os.path.exists(fa) and not os.path.exists(fb):
+            if ext != ".history.csv" and not os.path.exists(fa) and not os.path.exists(fb):
                 continue
             for f in (fa, fb):
                 if not os.path.exists(f):

@@ -1,6 +1,7 @@
 #include "checks/HistoryCheck.hpp"
 
 #include "checks/BarImpactCheck.hpp"
+#include "checks/ImpactCheck.hpp"
 #include "checks/ValueCheck.hpp"
 #include "core/DidYouMean.hpp"
 #include "core/Errors.hpp"
@@ -17,6 +18,10 @@ const std::vector<CheckKind>& checkKinds() {
        "the whole history of point A against the d'Alembert solution of the two-bar impact "
        "(BRIEF section 1): max and RMS error relative to the peak",
        &barImpactCheckParameters, &makeBarImpactCheck},
+      {"Impact",
+       "a statistic of a shock link's impacts (peak force, peak time, duration, impulse, impact "
+       "velocity of impact k, or the number of impacts, largest peak force... of the run)",
+       &impactCheckParameters, &makeImpactCheck},
   };
   return kinds;
 }

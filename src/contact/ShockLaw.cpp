@@ -7,7 +7,7 @@ namespace choc {
 
 const std::vector<std::string>& obstacleShapeNames() {
   static const std::vector<std::string> names = {"BI_PLAN_Y", "BI_PLAN_Z", "BI_CERCLE",
-                                                 "BI_CERC_INT"};
+                                                 "BI_CERC_INT", "PLAN_Y", "PLAN_Z"};
   return names;
 }
 
@@ -16,6 +16,8 @@ ObstacleShape parseObstacleShape(const std::string& name) {
   if (name == "BI_PLAN_Z") return ObstacleShape::BiPlanZ;
   if (name == "BI_CERCLE") return ObstacleShape::BiCercle;
   if (name == "BI_CERC_INT") return ObstacleShape::BiCercInt;
+  if (name == "PLAN_Y") return ObstacleShape::PlanY;
+  if (name == "PLAN_Z") return ObstacleShape::PlanZ;
   throw std::invalid_argument("unknown obstacle shape '" + name + "'");
 }
 
@@ -34,6 +36,14 @@ ShockGeometry shockGeometry(const ShockLawParameters& p, const Vec3& d) {
       const double s = dot(d, e);
       g.normal = scaled(e, s >= 0 ? 1.0 : -1.0);
       g.gap = std::abs(s) - p.dist1 - p.dist2;
+      break;
+    }
+    case ObstacleShape::PlanY:
+    case ObstacleShape::PlanZ: {
+      // e is the obstacle's outward normal: node 1 stays on its +e side.
+      const Vec3& e = p.shape == ObstacleShape::PlanY ? p.frame.e2 : p.frame.e3;
+      g.normal = scaled(e, -1.0);
+      g.gap = -dot(d, e) - p.dist1 - p.dist2;
       break;
     }
     case ObstacleShape::BiCercle:

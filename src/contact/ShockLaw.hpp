@@ -9,6 +9,9 @@
 //   BI_CERCLE: two circles in the plane orthogonal to e1: delta = r - DIST_1 - DIST_2
 //   BI_CERC_INT: inner circle (radius DIST_1) in an outer one (DIST_2):
 //                delta = (DIST_2 - DIST_1) - r, the link pulls the nodes together.
+//   PLAN_Y / PLAN_Z: one plane (a unilateral stop) whose outward normal is e2 / e3: node 1
+//                stays on its +e side, delta = (x1 - x2).e - DIST_1 - DIST_2 (with one node:
+//                x2 is node 1's initial position, so delta = u1.e - DIST_1 - DIST_2).
 // With one node (a fixed obstacle), node 2 is the obstacle at its origin.
 // Normal law "rigid": no penetration at all. The link is then a unilateral constraint
 // enforced by the integrator with a forward-increment Lagrange multiplier (the force at t_n is
@@ -21,7 +24,7 @@
 
 namespace choc {
 
-enum class ObstacleShape { BiPlanY, BiPlanZ, BiCercle, BiCercInt };
+enum class ObstacleShape { BiPlanY, BiPlanZ, BiCercle, BiCercInt, PlanY, PlanZ };
 
 ObstacleShape parseObstacleShape(const std::string& name);  // std::invalid_argument if unknown
 const std::vector<std::string>& obstacleShapeNames();

@@ -85,19 +85,23 @@ class GmshFile {
   Mesh build() {
     Mesh mesh;
     mesh.title = std::filesystem::path(path_).filename().string();
-    mesh.dimension = gmsh::model::getDimension();
-    if (mesh.dimension < 2) fail("the mesh has dimension " + std::to_string(mesh.dimension), "mesh a surface (2D) or a volume (3D)");
+    // A 1D mesh is a beam structure (BEAM2 blocks, node sets from its physical points) in
+    // 3D space; a 2D or 3D one has side sets one dimension below its blocks.
+    const int dim = gmsh::model::getDimension();
+    if (dim < 1) fail("the mesh has dimension " + std::to_string(dim), "mesh curves (beams), a surface (2D) or a volume (3D)");
+    mesh.dimension = dim == 1 ? 3 : dim;
     readNodes(mesh);
     const std::vector<Group> groups = physicalGroups();
     for (const Group& g : groups)
-      if (g.dim == mesh.dimension) readBlock(mesh, g);
+      if (g.dim == dim) readBlock(mesh, g);
     if (mesh.blocks.empty())
-      fail("no physical group of dimension " + std::to_string(mesh.dimension) + " (the element blocks)",
-           std::string("define ") + (mesh.dimension == 3 ? "Physical Volume" : "Physical Surface") + " groups");
-    indexSides(mesh);
+      fail("no physical group of dimension " + std::to_string(dim) + " (the element blocks)",
+           std::string("define ") + (dim == 3 ? "Physical Volume" : dim == 2 ? "Physical Surface" : "Physical Curve") +
+               " groups");
+    if (dim >= 2) indexSides(mesh);
     for (const Group& g : groups)
-      if (g.dim == mesh.dimension - 1) readSideSet(mesh, g);
-      else if (g.dim < mesh.dimension - 1) readNodeSet(mesh, g, groupNodes(g));
+      if (dim >= 2 && g.dim == dim - 1) readSideSet(mesh, g);
+      else if (g.dim < dim && (dim >= 2 ? g.dim < dim - 1 : true)) readNodeSet(mesh, g, groupNodes(g));
     return mesh;
   }
 

@@ -40,6 +40,7 @@ class HistoryObserver : public TransientObserver {
   void archive(StateArchive& a) const override;
 
   const RecordedHistory& history() const { return history_; }
+  void setStatistics(std::map<std::string, double> s) { history_.statistics = std::move(s); }
   const EnergyTerms& lastEnergies() const { return energies_; }
   const EnergyBalanceMonitor& balance() const { return balance_; }
 

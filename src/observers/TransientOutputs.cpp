@@ -3,6 +3,7 @@
 #include "core/Log.hpp"
 #include "input/ParameterSpec.hpp"
 #include "observers/ExodusObserver.hpp"
+#include "observers/ImpactObserver.hpp"
 #include "observers/ProgressObserver.hpp"
 
 namespace choc {
@@ -18,6 +19,7 @@ void declareTransientOutput(Teuchos::ParameterList& p) {
                 "left) every this many seconds of wall time (0: none)",
                 Range::nonNegative());
   declareEnergyBalance(p);
+  declareImpactStatistics(p);
   Teuchos::ParameterList& c = declareSublist(
       p, "Checkpoint",
       "checkpoints <analysis>.checkpoint (the state to continue the run with 'choc run INPUT "
@@ -66,15 +68,16 @@ TransientOutputSettings readTransientOutput(const Teuchos::ParameterList& p) {
   return s;
 }
 
-const HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSettings& s,
+HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSettings& s,
                                              const OutputPlan& plan, const Model& model,
                                              const Teuchos::ParameterList& analysis) {
   const std::string csv = plan.base + ".history.csv";
   auto history = plan.resume ? std::make_unique<HistoryObserver>(plan.what, plan.columns, csv, analysis,
                                                                  *plan.resume, *model.comm())
                              : std::make_unique<HistoryObserver>(plan.what, plan.columns, csv, analysis);
-  const HistoryObserver& h = *history;
+  HistoryObserver& h = *history;
   set.add(std::move(history));
+  set.add(std::make_unique<ImpactObserver>(plan.base + ".impacts.csv", analysis, h, plan.resume));
   if (s.exodusInterval > 0)
     set.add(std::make_unique<ExodusObserver>(plan.base + ".exo", model, h, s.exodusInterval, plan.resume));
   set.add(std::make_unique<ProgressObserver>(plan.startTime, plan.endTime, s.progressInterval));

@@ -44,7 +44,7 @@ struct OutputPlan {
 
 // Adds history, Exodus, progress and checkpoint/interrupt observers, in that order; returns the
 // history.
-const HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSettings& s,
+HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSettings& s,
                                              const OutputPlan& plan, const Model& model,
                                              const Teuchos::ParameterList& analysis);
 

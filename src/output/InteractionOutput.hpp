@@ -8,6 +8,12 @@
 
 namespace choc {
 
+// One interaction's state for the impact statistics: normal force (>= 0), gap, gap rate
+// d(gap)/dt (negative when closing), tangential force and slip speed.
+struct ImpactSample {
+  double force = 0, gap = 0, gapRate = 0, tangentialForce = 0, slipSpeed = 0;
+};
+
 class InteractionOutput {
  public:
   virtual ~InteractionOutput() = default;
@@ -21,6 +27,9 @@ class InteractionOutput {
   virtual std::vector<double> globalValues() const = 0;
   // A few words for the progress line, e.g. "12 active".
   virtual std::string progressNote() const = 0;
+  // The interactions whose impacts are counted (names) and their samples at this state.
+  virtual std::vector<std::string> impactNames() const { return {}; }
+  virtual std::vector<ImpactSample> impactSamples() const { return {}; }
 };
 
 }  // namespace choc

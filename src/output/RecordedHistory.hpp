@@ -9,6 +9,8 @@ namespace choc {
 struct RecordedHistory {
   std::vector<double> times;
   std::map<std::string, std::vector<double>> columns;
+  // Scalars of the whole run for the checks, e.g. "stop:impact 2:peak force" (ImpactObserver).
+  std::map<std::string, double> statistics;
 };
 
 }  // namespace choc

@@ -21,8 +21,9 @@ void declareShockLinks(Teuchos::ParameterList& p) {
   declareString(l, "Node 2", "",
                 "node set of the second node; empty: a fixed obstacle at node 1's initial position");
   declareChoice(l, "Obstacle", "BI_PLAN_Z", obstacleShapeNames(),
-                "shape: two planes normal to the local y or z axis, two circles, or an inner "
-                "circle moving in an outer circle");
+                "shape: two planes normal to the local y or z axis, two circles, an inner "
+                "circle moving in an outer circle, or one plane (a unilateral stop, PLAN_Y / "
+                "PLAN_Z) whose outward normal is the local y / z axis");
   declareString(l, "Axis", "0 0 1", "obstacle axis n (NORM_OBST) 'x y z'");
   declareDouble(l, "Twist", 0.0, "rotation of the local y, z axes about n [degrees] (ANGL_VRIL)");
   declareDouble(l, "DIST_1", 0.0, "offset of node 1 (inner radius for BI_CERC_INT) [m]",
@@ -155,10 +156,19 @@ Vec3 ModalLinks::relative(const ModalLink& l, const std::vector<double>& x, bool
 void ModalLinks::evaluate(double, const std::vector<double>& q, const std::vector<double>& v,
                           double dt, std::vector<double>& f) {
   std::fill(f.begin(), f.end(), 0.0);
+  gapRate_.assign(links_.size(), 0.0);
+  slipSpeed_.assign(links_.size(), 0.0);
   for (size_t i = 0; i < links_.size(); ++i) {
     ModalLink& l = links_[i];
-    if (l.law.rigid) continue;  // enforced in project(); l.last was set there
     const Vec3 d = relative(l, q, true), w = relative(l, v, false);
+    {  // kinematics along the shape's normal, open or closed (impact statistics)
+      const ShockGeometry g = shockGeometry(l.law, d);
+      gapRate_[i] = dot(w, g.normal);
+      const Vec3 wt{w[0] - gapRate_[i] * g.normal[0], w[1] - gapRate_[i] * g.normal[1],
+                    w[2] - gapRate_[i] * g.normal[2]};
+      slipSpeed_[i] = std::sqrt(dot(wt, wt));
+    }
+    if (l.law.rigid) continue;  // enforced in project(); l.last was set there
     const double prevPower = l.last.closed ? l.law.normalDamping * lastGapRate_[i] * lastGapRate_[i] : 0.0;
     l.last = evaluateShock(l.law, d, w, dt, l.state, true);
     // f_q = Phi2^T F - Phi1^T F
@@ -323,6 +333,25 @@ void ModalLinks::unarchive(const StateArchive& a) {
   lastGapRate_ = a.getVector<double>("links/gapRates", links_.size());
   constraintForce_ = a.getVector<double>("links/constraintForce", constraintForce_.size());
   linkDissipated_ = a.getDouble("links/dissipated");
+}
+
+std::vector<std::string> ModalLinks::impactNames() const {
+  std::vector<std::string> n;
+  for (const auto& l : links_) n.push_back(l.name);
+  return n;
+}
+
+std::vector<ImpactSample> ModalLinks::impactSamples() const {
+  std::vector<ImpactSample> out(links_.size());
+  for (size_t i = 0; i < links_.size(); ++i) {
+    const ShockResponse& r = links_[i].last;
+    out[i].force = r.normalForce;
+    out[i].gap = r.gap;
+    out[i].gapRate = i < gapRate_.size() ? gapRate_[i] : 0.0;
+    out[i].tangentialForce = r.tangentialForce;
+    out[i].slipSpeed = i < slipSpeed_.size() ? slipSpeed_[i] : 0.0;
+  }
+  return out;
 }
 
 }  // namespace choc

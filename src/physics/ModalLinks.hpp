@@ -65,6 +65,8 @@ class ModalLinks : public ModalForce, public InteractionOutput {
   std::vector<std::string> globalNames() const override;
   std::vector<double> globalValues() const override { return historyValues(); }
   std::string progressNote() const override;
+  std::vector<std::string> impactNames() const override;
+  std::vector<ImpactSample> impactSamples() const override;
 
  private:
   Vec3 relative(const ModalLink& l, const std::vector<double>& x, bool position) const;
@@ -76,6 +78,7 @@ class ModalLinks : public ModalForce, public InteractionOutput {
   std::vector<double> lastGapRate_;
   bool hasRigid_ = false;
   std::vector<double> constraintForce_;  // B^T lambda of the last project()
+  std::vector<double> gapRate_, slipSpeed_;  // along the shape's normal, at the last evaluate()
 };
 
 }  // namespace choc

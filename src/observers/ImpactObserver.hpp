@@ -1,0 +1,61 @@
+// Impact statistics of a transient's interactions (the shock links of a modal transient): per
+// impact its start and end (the instants the normal force crosses 'Force Threshold', by
+// linear interpolation between states; on the gap itself when the threshold is 0), the
+// instant and value of the peak force (the vertex of the parabola through the largest sample
+// and its neighbours), the contact duration, the impulse (trapezoidal), the impact velocity
+// (the gap rate d(gap)/dt at the last state before the impact: negative when closing) and the
+// wear work (integral of tangential force x slip speed); per interaction the number of impacts,
+// the largest and mean peak force, the total impulse and wear work. Two contacts separated by
+// less than 'Minimum Rest Time' are one impact. Written to <analysis>.impacts.csv when the run
+// ends (".incomplete" when it fails), summarised in the log, and given to the checks (type
+// 'Impact') as statistics "<name>:impact <k>:<quantity>" and "<name>:<quantity>".
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "observers/HistoryObserver.hpp"
+#include "observers/TransientObserver.hpp"
+
+namespace choc {
+
+void declareImpactStatistics(Teuchos::ParameterList& analysis);
+
+struct Impact {
+  double start = 0, end = 0, peakTime = 0, peakForce = 0, impulse = 0, velocity = 0, wear = 0;
+  bool open = false;  // still in contact when the run ended
+};
+
+// The statistic names an 'Impact' check may ask for.
+const std::vector<std::string>& impactQuantities();         // per impact
+const std::vector<std::string>& impactSummaryQuantities();  // per interaction
+
+class ImpactObserver : public TransientObserver {
+ public:
+  ImpactObserver(std::string csvPath, const Teuchos::ParameterList& analysis, HistoryObserver& history,
+                 const StateArchive* resume);
+  void step(TransientView& view) override;
+  void end(bool ok) override;
+  void archive(StateArchive& a) const override;
+
+ private:
+  struct Track {  // one interaction
+    std::vector<Impact> impacts;
+    bool active = false;
+    bool havePrevious = false;
+    double t0 = 0, f0 = 0, g0 = 0, rate0 = 0, p0 = 0;  // the previous state (p: wear power)
+    double tm = 0, fm = 0;                             // the state before it
+  };
+  void sample(Track& k, double t, const ImpactSample& s);
+  std::map<std::string, double> statistics() const;
+  void write(bool complete) const;
+  std::string csvPath_;
+  double threshold_, rest_;
+  HistoryObserver& history_;
+  std::vector<std::string> names_;
+  std::vector<Track> tracks_;
+};
+
+}  // namespace choc
