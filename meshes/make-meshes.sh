@@ -28,3 +28,5 @@ gmsh -2 -order 2 -format msh41 "$here/hertz_axisymmetric.geo" -o "$here/hertz_ax
 gmsh -2 -order 2 -format msh41 "$here/hertz_hemisphere.geo" -o "$here/hertz_hemisphere.msh" > /dev/null
 # SDND101 (issue 16): the oscillator on a stop, one beam standing for the discrete spring and mass.
 gmsh -1 -format msh41 "$here/sdnd101.geo" -o "$here/sdnd101.msh" > /dev/null
+# SDNL32 (issue 16): the articulated beam, the deck's 11 nodes.
+gmsh -1 -format msh41 "$here/sdnl32.geo" -o "$here/sdnl32.msh" > /dev/null
