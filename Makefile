@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-inputs bench-mesh study-modal study-bar clean
+.PHONY: all deps configure build run test study bench bench-inputs bench-mesh bench-modal study-modal study-bar clean
 
 all: build
 
@@ -33,6 +33,11 @@ test: build
 # sizes of the same scene (README "Scale"); generates meshes/scale_3d.exo when missing.
 bench: build
 	$(PYTHON) tools/bench_scale.py --build $(BUILD) --sizes $(BENCH_ARGS)
+	$(PYTHON) tools/bench_modal_direct.py --build $(BUILD)
+
+# The same 3D scene direct and reduced to 40 modes with shock links (README "Impact statistics").
+bench-modal: build
+	$(PYTHON) tools/bench_modal_direct.py --build $(BUILD)
 
 # The speed-accuracy study: sweeps, results/study/study.csv, Pareto plots and README.md.
 study: build

@@ -13,6 +13,7 @@ here="$(cd "$(dirname "$0")" && pwd)"
 cfg="$case_dir/case.cfg"
 [ -f "$cfg" ] || { echo "regression: missing $cfg"; exit 1; }
 # shellcheck disable=SC1090
+RANK_COLUMNS=""  # optional in case.cfg: the columns compared across ranks (default: all)
 source "$cfg"   # sets INPUT, CHECKS, HISTORIES, BASELINE_COLUMNS, BASELINE_RTOL, RANK_RTOL
 input="$case_dir/../../$INPUT"
 case "$mode" in
@@ -43,7 +44,7 @@ case "$mode" in
     for h in $HISTORIES; do
       echo "2 ranks vs 1 rank, $h:"
       python3 "$here/compare_histories.py" "$out/serial/$h.history.csv" "$out/mpi2/$h.history.csv" \
-        --rtol-peak "$RANK_RTOL"
+        --rtol-peak "$RANK_RTOL" ${RANK_COLUMNS:+--columns "$RANK_COLUMNS"}
     done
     ;;
   baseline-update)

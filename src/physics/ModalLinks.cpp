@@ -17,9 +17,13 @@ namespace choc {
 void declareShockLinks(Teuchos::ParameterList& p) {
   ParameterList& l = declareNamedSublists(
       p, "Shock Links", "nonlinear two-node shock links (or node-to-fixed-obstacle), by name");
-  declareRequiredString(l, "Node 1", "node set of the first node (its first node)");
+  declareRequiredString(l, "Node 1",
+                        "node set of the first node; a set of k nodes makes k links '<name>.1' .. "
+                        "'<name>.k', one per node, each with these parameters");
   declareString(l, "Node 2", "",
-                "node set of the second node; empty: a fixed obstacle at node 1's initial position");
+                "node set of the second node (with k nodes: each node of 'Node 1' is linked to "
+                "the nearest of these, one to one); empty: a fixed obstacle at node 1's initial "
+                "position");
   declareChoice(l, "Obstacle", "BI_PLAN_Z", obstacleShapeNames(),
                 "shape: two planes normal to the local y or z axis, two circles, an inner "
                 "circle moving in an outer circle, or one plane (a unilateral stop, PLAN_Y / "
@@ -44,14 +48,14 @@ void declareShockLinks(Teuchos::ParameterList& p) {
 
 namespace {
 
-ModalLink readLink(const ParameterList& lp, const std::string& name, const Model& model,
-                   const std::string& lpath) {
+ModalLink readLink(const ParameterList& lp, const std::string& name, int node1, int node2,
+                   const Model& model, const std::string& lpath) {
   const std::string& file = model.inputFile();
+  const std::string n2 = lp.get<std::string>("Node 2");
   ModalLink l;
   l.name = name;
-  l.node1 = model.nodeSet(lp.get<std::string>("Node 1"), lpath + "/Node 1").nodes.front();
-  const std::string n2 = lp.get<std::string>("Node 2");
-  if (!n2.empty()) l.node2 = model.nodeSet(n2, lpath + "/Node 2").nodes.front();
+  l.node1 = node1;
+  l.node2 = node2;
   if (l.node2 == l.node1)
     throwInput(file, lpath + "/Node 2", n2, "is the same node as Node 1",
                "link two different nodes, or leave Node 2 empty for a fixed obstacle");
@@ -81,17 +85,60 @@ ModalLink readLink(const ParameterList& lp, const std::string& name, const Model
   return l;
 }
 
+
+// The node pairs of one 'Shock Links' entry: every node of 'Node 1' with the nearest node of
+// 'Node 2' (one to one), or with a fixed obstacle (-1).
+std::vector<std::pair<int, int>> linkNodePairs(const ParameterList& lp, const Model& model,
+                                               const std::string& lpath) {
+  const std::vector<int>& set1 = model.nodeSet(lp.get<std::string>("Node 1"), lpath + "/Node 1").nodes;
+  const std::string n2 = lp.get<std::string>("Node 2");
+  std::vector<std::pair<int, int>> pairs;
+  if (n2.empty()) {
+    for (int n : set1) pairs.emplace_back(n, -1);
+    return pairs;
+  }
+  const std::vector<int>& set2 = model.nodeSet(n2, lpath + "/Node 2").nodes;
+  if (set2.size() != set1.size())
+    throwInput(model.inputFile(), lpath + "/Node 2", n2,
+               "has " + std::to_string(set2.size()) + " nodes, 'Node 1' has " + std::to_string(set1.size()),
+               "give two node sets of as many nodes, facing each other");
+  const auto& X = model.mesh().coords;
+  std::vector<char> used(set2.size(), 0);
+  for (int a : set1) {
+    int best = -1;
+    double bestD = INFINITY;
+    for (size_t j = 0; j < set2.size(); ++j) {
+      double d = 0;
+      for (int c = 0; c < 3; ++c) d += (X[a][c] - X[set2[j]][c]) * (X[a][c] - X[set2[j]][c]);
+      if (d < bestD) bestD = d, best = int(j);
+    }
+    if (used[best])
+      throwInput(model.inputFile(), lpath + "/Node 2", n2,
+                 "node " + std::to_string(set2[best] + 1) + " is the nearest of two nodes of 'Node 1'",
+                 "give node sets whose nodes face each other one to one");
+    used[best] = 1;
+    pairs.emplace_back(a, set2[best]);
+  }
+  return pairs;
+}
+
 }  // namespace
 
 std::vector<ModalLink> readShockLinks(const Teuchos::ParameterList& p, const Model& model,
                                       const std::string& path) {
   std::vector<ModalLink> out;
   const ParameterList& links = p.sublist("Shock Links");
-  for (auto it = links.begin(); it != links.end(); ++it)
-    out.push_back(readLink(links.sublist(links.name(it)), links.name(it), model,
-                           path + "/Shock Links/" + links.name(it)));
+  for (auto it = links.begin(); it != links.end(); ++it) {
+    const std::string name = links.name(it), lpath = path + "/Shock Links/" + name;
+    const ParameterList& lp = links.sublist(name);
+    const auto pairs = linkNodePairs(lp, model, lpath);
+    for (size_t i = 0; i < pairs.size(); ++i)
+      out.push_back(readLink(lp, pairs.size() == 1 ? name : name + "." + std::to_string(i + 1),
+                             pairs[i].first, pairs[i].second, model, lpath));
+  }
   return out;
 }
+
 
 std::vector<std::string> shockLinkColumns(const std::vector<ModalLink>& links) {
   std::vector<std::string> c;
