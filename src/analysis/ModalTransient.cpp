@@ -11,6 +11,7 @@
 #include "fem/FieldGather.hpp"
 #include "input/ParameterSpec.hpp"
 #include "physics/ModalProjection.hpp"
+#include "physics/StaticCorrection.hpp"
 #include "restart/StateVectors.hpp"
 
 namespace choc {
@@ -38,6 +39,9 @@ Teuchos::ParameterList ModalTransient::parameters() {
                 "when dt exceeds the critical step (modes + link stiffness): refuse the run, "
                 "warn and go on, or sub-step each step (at 0.9 of the critical step, 0.5 with "
                 "penalty links)");
+  declareBool(p, "Static Correction", false,
+              "enrich the basis with the static responses to unit forces at the links' nodes "
+              "along their normal directions (M- and K-orthogonalised; the log says how many)");
   declareChoice(p, "Projection", "mass-weighted", {"mass-weighted", "least-squares"},
                 "projection of the initial fields on the basis");
   declareInitialConditions(p);
@@ -74,6 +78,12 @@ ModalTransient::ModalTransient(const std::string& name, const Teuchos::Parameter
                                     path("Modal Damping List"));
   s_.rigidFrequency = params_.get<double>("Rigid Body Frequency");
   s_.projection = params_.get<std::string>("Projection");
+  s_.staticCorrection = params_.get<bool>("Static Correction");
+  if (s_.staticCorrection && !s_.dampingList.empty())
+    throwInput(inputFile_, path("Modal Damping List"), params_.get<std::string>("Modal Damping List"),
+               "cannot be combined with 'Static Correction' (the enriched basis has more modes, mixed "
+               "by its Rayleigh-Ritz step)",
+               "give one 'Modal Damping' for every mode");
   s_.stability = params_.get<std::string>("Stability Check");
   s_.scheme = parseModalScheme(params_.get<std::string>("Scheme"));
   s_.refinement = params_.get<int>("Refinement Factor");
@@ -119,8 +129,35 @@ void ModalTransient::setup(SetupContext& ctx) {
   b_->init = buildInitialFields(params_, ctx.model, "Analyses/" + name_);
 }
 
+// The basis named, or that basis enriched with the links' static modes.
+const ModalBasis& ModalTransient::basisFor(RunContext& ctx) {
+  basis_ = ctx.bases.at(s_.basis);
+  if (!s_.staticCorrection) return *basis_;
+  std::vector<StaticLoad> loads;
+  for (const ModalLink& l : b_->links) {
+    std::vector<Vec3> dirs;
+    switch (l.law.shape) {
+      case ObstacleShape::BiPlanY:
+      case ObstacleShape::PlanY: dirs = {l.law.frame.e2}; break;
+      case ObstacleShape::BiPlanZ:
+      case ObstacleShape::PlanZ: dirs = {l.law.frame.e3}; break;
+      default: dirs = {l.law.frame.e2, l.law.frame.e3}; break;
+    }
+    for (int node : {l.node1, l.node2})
+      if (node >= 0)
+        for (const Vec3& d : dirs) loads.push_back({node, d});
+  }
+  const StaticCorrection sc = enrichWithStaticModes(*basis_, ctx.model, loads, s_.rigidFrequency);
+  log() << format("  static correction: %d static mode(s) added to the %zu modes of '%s' (%d already in "
+                  "their span); the enriched basis reaches %.1f Hz\n",
+                  sc.added, basis_->eigenvalues.size(), s_.basis.c_str(), sc.dropped,
+                  sc.basis->frequencyHz(int(sc.basis->eigenvalues.size()) - 1));
+  basis_ = sc.basis;
+  return *basis_;
+}
+
 void ModalTransient::run(RunContext& ctx) {
-  const ModalBasis& basis = *ctx.bases.at(s_.basis);
+  const ModalBasis& basis = basisFor(ctx);
   const Generalized g = generalizedSystem(basis);
   double residuals[2];
   ModalState state = initialState(ctx.model, basis, residuals);

@@ -25,6 +25,7 @@ class ModalTransient : public Analysis {
  private:
   struct Settings {
     std::string basis, projection, stability;
+    bool staticCorrection = false;
     double damping = 0, rigidFrequency = 0;
     std::vector<double> dampingList;  // empty: 'Modal Damping' for every mode
     double startTime = 0, endTime = 0, dt = 0;
@@ -66,8 +67,11 @@ class ModalTransient : public Analysis {
   void integrate(ModalIntegrator& integrator, ModalState& state, ModalStepView& view,
                  ObserverSet& outputs, int substeps, long long first) const;
 
+  const ModalBasis& basisFor(RunContext& ctx);
+
   Settings s_;
   std::unique_ptr<Built> b_;
+  std::shared_ptr<const ModalBasis> basis_;
 };
 
 }  // namespace choc
