@@ -21,7 +21,7 @@ void ImplicitStepView::stepAccepted(const StepInfo& info, const Vector& u, const
   v_ = vScheme_ = &v;
   a_ = &a;
   differenceMassless(u, v, a);
-  if (contact_) contact_->update(u, info.time);
+  if (contact_) contact_->update(u, *v_, info.time);  // the reported velocity (massless DOFs differenced)
   outputs_.step(*this);
 }
 

@@ -128,6 +128,19 @@ std::vector<double> ContactManager::gaps(const Vector& u) const {
   return g;
 }
 
+std::vector<double> ContactManager::gapRates(const Vector& v) const {
+  const std::vector<double> x = contactValues(v);
+  std::vector<double> r(constraints_.size());
+  for (size_t s = 0; s < constraints_.size(); ++s) {
+    double rate = 0.0;
+    for (const auto& [k, coeff] : localTerms_[s]) rate += coeff * x[k];
+    const PairDefinition& pair = pairs_[constraints_[s].geometry.pair];
+    if (pair.hasObstacle) rate -= dot(constraints_[s].geometry.normal, pair.obstacle.velocity);
+    r[s] = rate;
+  }
+  return r;
+}
+
 std::vector<double> ContactManager::forces(const Vector& u) const {
   const std::vector<double> g = gaps(u);
   std::vector<double> f(g.size());

@@ -67,6 +67,8 @@ class ContactManager {
   std::vector<double> slips(const Vector& u, double t) const;
   // Gaps at u (the same array on every rank).
   std::vector<double> gaps(const Vector& u) const;
+  // d(gap)/dt at velocity v (B_s v, less the obstacle's velocity along its normal). Collective.
+  std::vector<double> gapRates(const Vector& v) const;
   // Normal force of each node at u with the current statuses and pressures.
   std::vector<double> forces(const Vector& u) const;
   // out -= f_s B_s^T on the rows this rank owns; returns the norm of the constraint

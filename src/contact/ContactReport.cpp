@@ -5,9 +5,10 @@
 
 namespace choc {
 
-void ContactReport::update(const Vector& u, double t) {
+void ContactReport::update(const Vector& u, const Vector& v, double t) {
   forces_ = contact_.forces(u);
   gaps_ = contact_.gaps(u);
+  rates_ = contact_.gapRates(v);
   u_ = &u;  // the slips are gathered only when the nodal fields are written
   time_ = t;
 }
@@ -66,6 +67,28 @@ std::vector<double> ContactReport::globalValues() const {
   double total = 0.0;
   for (double f : forces_) total += f;
   return {total, double(contact_.activeCount())};
+}
+
+std::vector<std::string> ContactReport::impactNames() const {
+  std::vector<std::string> n;
+  for (int p = 0; p < contact_.numPairs(); ++p) n.push_back(contact_.pair(p).name);
+  return n;
+}
+
+std::vector<ImpactSample> ContactReport::impactSamples() const {
+  std::vector<ImpactSample> out(contact_.numPairs());
+  std::vector<char> first(contact_.numPairs(), 1);
+  for (int s = 0; s < contact_.numConstraints(); ++s) {
+    ImpactSample& o = out[contact_.constraints()[s].geometry.pair];
+    o.force += forces_[s];
+    if (first[contact_.constraints()[s].geometry.pair] || gaps_[s] < o.gap) {
+      o.gap = gaps_[s];
+      o.gapRate = rates_[s];
+      first[contact_.constraints()[s].geometry.pair] = 0;
+    }
+  }
+  for (ImpactSample& o : out) o.force = std::max(0.0, o.force);
+  return out;
 }
 
 double ContactReport::obstaclePower() const {

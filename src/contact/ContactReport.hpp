@@ -16,7 +16,7 @@ class ContactReport : public InteractionOutput {
  public:
   ContactReport(const ContactManager& contact, int numMeshNodes)
       : contact_(contact), numNodes_(numMeshNodes) {}
-  void update(const Vector& u, double t);
+  void update(const Vector& u, const Vector& v, double t);
 
   std::vector<std::string> historyColumns() const override;
   std::vector<double> historyValues() const override;
@@ -25,6 +25,9 @@ class ContactReport : public InteractionOutput {
   std::vector<std::string> globalNames() const override;
   std::vector<double> globalValues() const override;
   std::string progressNote() const override;
+  // Per pair: the total normal force, the smallest gap and that node's gap rate.
+  std::vector<std::string> impactNames() const override;
+  std::vector<ImpactSample> impactSamples() const override;
   // Power [W] the moving rigid obstacles give the body at the recorded state: sum over their
   // slave nodes of the normal force times the obstacle's velocity along the normal.
   double obstaclePower() const;
@@ -32,7 +35,7 @@ class ContactReport : public InteractionOutput {
  private:
   const ContactManager& contact_;
   int numNodes_;
-  std::vector<double> forces_, gaps_;
+  std::vector<double> forces_, gaps_, rates_;
   const Vector* u_ = nullptr;  // the state of the last update
   double time_ = 0.0;
 };

@@ -54,8 +54,9 @@ ImpactObserver::ImpactObserver(std::string csvPath, const Teuchos::ParameterList
     Track& k = tracks_[i];
     k.impacts.assign(all.begin() + at, all.begin() + at + n[i]);
     at += n[i];
-    k.active = flags.at(2 * i);
-    k.havePrevious = flags.at(2 * i + 1);
+    k.active = flags.at(3 * i);
+    k.havePrevious = flags.at(3 * i + 1);
+    k.rateKnown = flags.at(3 * i + 2);
     const double* x = &state.at(7 * i);
     k.t0 = x[0], k.f0 = x[1], k.g0 = x[2], k.rate0 = x[3], k.p0 = x[4], k.tm = x[5], k.fm = x[6];
   }
@@ -72,6 +73,7 @@ void ImpactObserver::archive(StateArchive& a) const {
     for (double x : {k.t0, k.f0, k.g0, k.rate0, k.p0, k.tm, k.fm}) state.push_back(x);
     flags.push_back(k.active);
     flags.push_back(k.havePrevious);
+    flags.push_back(k.rateKnown);
   }
   a.putVector("impacts/tracks", n);
   a.putVector("impacts/impacts", all);
@@ -113,7 +115,13 @@ void parabolaVertex(double tm, double fm, double t0, double f0, double t1, doubl
 
 }  // namespace
 
-void ImpactObserver::sample(Track& k, double t, const ImpactSample& s) {
+void ImpactObserver::sample(Track& k, double t, const ImpactSample& given) {
+  ImpactSample s = given;
+  bool rateKnown = true;
+  if (std::isnan(s.gapRate)) {  // not given (contact pairs): the backward difference of the gap
+    rateKnown = k.havePrevious && t > k.t0;
+    s.gapRate = rateKnown ? (s.gap - k.g0) / (t - k.t0) : 0.0;
+  }
   const bool on = s.force > threshold_;
   const double power = s.tangentialForce * s.slipSpeed;
   // The level whose crossing starts or ends an impact: the gap when the threshold is 0.
@@ -154,7 +162,11 @@ void ImpactObserver::sample(Track& k, double t, const ImpactSample& s) {
     if (!merge) {
       Impact im;
       im.start = ts;
-      im.velocity = k.havePrevious ? k.rate0 : s.gapRate;
+      // The gap rate before the impact; for a differenced rate from the first state, the
+      // secant over the interval where the impact starts.
+      im.velocity = !k.havePrevious ? s.gapRate
+                    : k.rateKnown ? k.rate0
+                                  : (s.gap - k.g0) / (t - k.t0);
       k.impacts.push_back(im);
     }
     Impact& im = k.impacts.back();
@@ -175,6 +187,7 @@ void ImpactObserver::sample(Track& k, double t, const ImpactSample& s) {
   k.g0 = s.gap;
   k.rate0 = s.gapRate;
   k.p0 = power;
+  k.rateKnown = rateKnown;
   k.havePrevious = true;
 }
 

@@ -3,7 +3,9 @@
 // linear interpolation between states; on the gap itself when the threshold is 0), the
 // instant and value of the peak force (the vertex of the parabola through the largest sample
 // and its neighbours), the contact duration, the impulse (trapezoidal), the impact velocity
-// (the gap rate d(gap)/dt at the last state before the impact: negative when closing) and the
+// (the gap rate d(gap)/dt at the last state before the impact: negative when closing; for a
+// contact pair, whose gap rate is the backward difference of its smallest gap, the secant over
+// the interval where the impact starts when it starts at the first state) and the
 // wear work (integral of tangential force x slip speed); per interaction the number of impacts,
 // the largest and mean peak force, the total impulse and wear work. Two contacts separated by
 // less than 'Minimum Rest Time' are one impact. Written to <analysis>.impacts.csv when the run
@@ -45,6 +47,7 @@ class ImpactObserver : public TransientObserver {
     std::vector<Impact> impacts;
     bool active = false;
     bool havePrevious = false;
+    bool rateKnown = true;  // rate0 is a rate, not a placeholder (first state of a differenced gap)
     double t0 = 0, f0 = 0, g0 = 0, rate0 = 0, p0 = 0;  // the previous state (p: wear power)
     double tm = 0, fm = 0;                             // the state before it
   };

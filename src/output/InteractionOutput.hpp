@@ -9,7 +9,8 @@
 namespace choc {
 
 // One interaction's state for the impact statistics: normal force (>= 0), gap, gap rate
-// d(gap)/dt (negative when closing), tangential force and slip speed.
+// d(gap)/dt (negative when closing; NaN: the statistics difference successive gaps), tangential
+// force and slip speed.
 struct ImpactSample {
   double force = 0, gap = 0, gapRate = 0, tangentialForce = 0, slipSpeed = 0;
 };
