@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-inputs bench-mesh bench-modal study-modal study-bar clean
+.PHONY: all deps configure build run test study bench bench-inputs bench-mesh bench-modal study-modal study-bar study-modal-direct clean
 
 all: build
 
@@ -35,6 +35,10 @@ bench: build
 	$(PYTHON) tools/bench_scale.py --build $(BUILD) --sizes $(BENCH_ARGS)
 	$(PYTHON) tools/bench_modal_direct.py --build $(BUILD)
 
+# SDNL32 by the modal transient on 4 to 31 modes and by the direct transient (README).
+study-modal-direct: build
+	$(PYTHON) tools/modal_direct_study.py --build $(BUILD)
+
 # The same 3D scene direct and reduced to 40 modes with shock links (README "Impact statistics").
 bench-modal: build
 	$(PYTHON) tools/bench_modal_direct.py --build $(BUILD)
@@ -43,6 +47,7 @@ bench-modal: build
 study: build
 	$(PYTHON) tools/study.py --build $(BUILD) --out results/study
 	$(PYTHON) tools/study_report.py results/study
+	$(PYTHON) tools/modal_direct_study.py --build $(BUILD) --out results/study/modal-direct
 
 # A ~1M-unknown TET10 gmsh mesh read, partitioned and assembled on 2 ranks (time, memory per phase).
 bench-mesh: build

@@ -47,10 +47,16 @@ def compare_impacts(a, b, tol):
     ra, rb = open(a).read().splitlines(), open(b).read().splitlines()
     if len(ra) != len(rb):
         return f"{len(ra) - 1} impacts against {len(rb) - 1}"
-    for la, lb in zip(ra[1:], rb[1:]):
-        for x, y in zip(la.split(",")[2:], lb.split(",")[2:]):
-            if abs(float(x) - float(y)) > tol * max(abs(float(x)), 1e-300):
-                return f"impact row '{la}' against '{lb}'"
+    va = [[float(x) for x in l.split(",")[2:]] for l in ra[1:]]
+    vb = [[float(x) for x in l.split(",")[2:]] for l in rb[1:]]
+    if not va:
+        return None
+    names = ra[0].split(",")[2:]
+    for j, name in enumerate(names):  # each column to T of its largest magnitude, as histories
+        scale = max(max(abs(r[j]) for r in va), 1e-300)
+        worst = max(abs(x[j] - y[j]) for x, y in zip(va, vb)) / scale
+        if worst > tol:
+            return f"impacts column {name} differs by {worst:.3e} of its peak (tolerance {tol:g})"
     return None
 
 

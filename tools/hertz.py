@@ -126,6 +126,24 @@ def main():
             tol = a.rebound_tolerance if q == "rebound velocity" else a.tolerance
             if not abs(err) <= tol:
                 failures.append(f"{name} {q} {100 * err:+.2f}%")
+        # The impact statistics (<analysis>.impacts.csv): one impact, closing at -5 m/s, whose
+        # impulse is the momentum change of an elastic rebound, 2 m V, to 0.5 % (what the sphere
+        # keeps as vibration after the impact, a fraction of a percent of E0, lowers it).
+        impacts = os.path.join(a.run_dir, f"{name}.impacts.csv")
+        if os.path.exists(impacts):
+            rows = open(impacts).read().splitlines()[1:]
+            if len(rows) != 1:
+                failures.append(f"{name}: {len(rows)} impacts in {impacts}, one expected")
+            else:
+                f = rows[0].split(",")
+                impulse, velocity = float(f[7]), float(f[8])
+                ref = 2 * h["m"] * V
+                print(f"{name:14s} {'impulse':18s} {impulse:12.6g}  2 m V {ref:12.6g}  "
+                      f"{100 * (impulse / ref - 1):+6.3f}%; impact velocity {velocity:+.6g} m/s")
+                if not abs(impulse / ref - 1) <= 5e-3:
+                    failures.append(f"{name} impulse {100 * (impulse / ref - 1):+.3f}% of 2 m V")
+                if not abs(velocity + V) <= 1e-3 * V:
+                    failures.append(f"{name} impact velocity {velocity} m/s, -{V} expected")
         print(f"{name:14s} {'energy balance':18s} max {100 * m['_balance']:+.4f}% of E0")
         if not m["_balance"] <= a.energy_tolerance:
             failures.append(f"{name} energy balance {100 * m['_balance']:+.4f}% of E0")

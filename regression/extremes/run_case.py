@@ -105,7 +105,9 @@ def main():
             stem, ext = re.match(r"(.*)\.incomplete\.(\w+)$", inc).groups()
             if os.path.exists(f"{stem}.{ext}"):
                 fail(f"{stem}.{ext} exists beside {inc}")
-            if ext == "csv":
+            if ext == "csv" and stem.endswith(".impacts"):  # rows of text and numbers
+                print(f"  {os.path.basename(inc)}: {len(open(inc).read().splitlines()) - 1} impacts")
+            elif ext == "csv":
                 names, data = read_history(inc)
                 print(f"  {os.path.basename(inc)}: {len(data)} finite rows")
             elif ext == "exo":

@@ -14,12 +14,15 @@ namespace choc {
 
 std::vector<char> ContactManager::surfaceNodes(const Mesh& mesh) const {
   std::vector<char> flags(mesh.numNodes(), 0);
-  for (const auto& pair : pairs_)
+  for (const auto& pair : pairs_) {
+    if (const NodeSet* ns = pair.slaveNodeSet.empty() ? nullptr : mesh.findNodeSet(pair.slaveNodeSet))
+      for (int n : ns->nodes) flags[n] = 1;
     for (const std::string& name : {pair.masterSideSet, pair.slaveSideSet}) {
       const SideSet* ss = mesh.findSideSet(name);  // checked by the pairing
       for (size_t k = 0; ss && k < ss->elements.size(); ++k)
         for (int n : mesh.sideNodes(ss->elements[k], ss->sides[k])) flags[n] = 1;
     }
+  }
   return flags;
 }
 

@@ -253,7 +253,14 @@ PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pa
 
 PairingResult pairNodeToObstacle(const Mesh& mesh, const PairDefinition& def, int pairIndex) {
   PairingResult res;
-  for (const auto& [node, a] : tributaryAreas(facesOf(mesh, def.slaveSideSet), def.axisymmetric)) {
+  std::map<int, double> slaves;
+  if (!def.slaveNodeSet.empty()) {
+    if (const NodeSet* ns = mesh.findNodeSet(def.slaveNodeSet))
+      for (int n : ns->nodes) slaves[n] = 0.0;  // nodes of beams or point masses: no area
+  } else {
+    slaves = tributaryAreas(facesOf(mesh, def.slaveSideSet), def.axisymmetric);
+  }
+  for (const auto& [node, a] : slaves) {
     const ObstacleDistance d = distanceTo(def.obstacle, mesh.coords[node], 0.0);
     SlaveProjection sp;
     sp.pair = pairIndex;

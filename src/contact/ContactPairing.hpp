@@ -27,6 +27,7 @@ struct PairDefinition {
   bool hasObstacle = false;   // the master is a rigid obstacle (masterSideSet empty)
   bool axisymmetric = false;  // slave areas of the whole ring: edge length weighted by 2 pi r
   RigidObstacle obstacle{};
+  std::string slaveNodeSet;   // instead of a side set, against an obstacle: nodes without area
 };
 
 struct SlaveProjection {

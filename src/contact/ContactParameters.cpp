@@ -27,7 +27,11 @@ void declareContactParameters(Teuchos::ParameterList& p) {
   declareString(pr, "Master Side Set", "",
                 "faces of solids (QUAD4, QUAD8, TRI3, TRI6) or edges of planar elements (LINE2, "
                 "LINE3), outward normal; or give an 'Obstacle' instead");
-  declareRequiredString(pr, "Slave Side Set", "faces whose nodes are the slave nodes");
+  declareString(pr, "Slave Side Set", "", "faces whose nodes are the slave nodes");
+  declareString(pr, "Slave Node Set", "",
+                "instead of a slave side set, against an 'Obstacle' only: nodes without faces "
+                "(beam structures, point masses), each a spring of 'Penalty Stiffness' or a "
+                "multiplier; their pressure is not defined (0 in the output)");
   declareDouble(pr, "Search Distance", 1e-3,
                 "largest initial |gap| of a pairing with a master side set [m]", Range::positive());
   ParameterList& ob = declareSublist(pr, "Obstacle",
@@ -81,8 +85,18 @@ PairDefinition readPair(const ParameterList& pl, const std::string& name, const 
                         const std::string& path) {
   PairDefinition d{name, pl.get<std::string>("Master Side Set"), pl.get<std::string>("Slave Side Set"),
                    pl.get<double>("Search Distance")};
+  d.slaveNodeSet = pl.get<std::string>("Slave Node Set");
   const ParameterList& ob = pl.sublist("Obstacle");
   d.hasObstacle = ob.get<std::string>("Shape") != "none";
+  if (d.slaveSideSet.empty() == d.slaveNodeSet.empty())
+    throwInput(file, path + "/Slave Side Set", d.slaveSideSet,
+               d.slaveSideSet.empty() ? "the pair has no slave surface"
+                                      : "the pair also has a 'Slave Node Set'",
+               "give either 'Slave Side Set' or (against an 'Obstacle') 'Slave Node Set'");
+  if (!d.slaveNodeSet.empty() && !d.hasObstacle)
+    throwInput(file, path + "/Slave Node Set", d.slaveNodeSet,
+               "a slave node set has no faces to pair with a master side set",
+               "give an 'Obstacle', or a 'Slave Side Set'");
   if (d.hasObstacle && !d.masterSideSet.empty())
     throwInput(file, path + "/Master Side Set", d.masterSideSet, "the pair also has an 'Obstacle'",
                "give either a master side set or an obstacle");
@@ -153,7 +167,13 @@ std::unique_ptr<ContactManager> makeContactManager(const ContactSettings& s, con
   for (const auto& pair : s.pairs) {
     const std::string pp = s.path + "/Contact/Pairs/" + pair.name;
     if (!pair.hasObstacle) requireSideSet(mesh, pair.masterSideSet, file, pp + "/Master Side Set");
-    requireSideSet(mesh, pair.slaveSideSet, file, pp + "/Slave Side Set");
+    if (!pair.slaveNodeSet.empty()) {
+      if (!mesh.findNodeSet(pair.slaveNodeSet))
+        throwInput(file, pp + "/Slave Node Set", pair.slaveNodeSet, "no node set of that name in the mesh",
+                   "node sets: " + joinNames(mesh.nodeSetNames()));
+    } else {
+      requireSideSet(mesh, pair.slaveSideSet, file, pp + "/Slave Side Set");
+    }
   }
   try {
     return std::make_unique<ContactManager>(mesh, dofs, map, pairs, makeContactMethod(s));

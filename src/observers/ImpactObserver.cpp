@@ -57,8 +57,10 @@ ImpactObserver::ImpactObserver(std::string csvPath, const Teuchos::ParameterList
     k.active = flags.at(3 * i);
     k.havePrevious = flags.at(3 * i + 1);
     k.rateKnown = flags.at(3 * i + 2);
-    const double* x = &state.at(7 * i);
+    const double* x = &state.at(9 * i);
     k.t0 = x[0], k.f0 = x[1], k.g0 = x[2], k.rate0 = x[3], k.p0 = x[4], k.tm = x[5], k.fm = x[6];
+    k.largest = x[7];
+    k.gapScale = x[8];
   }
 }
 
@@ -70,7 +72,7 @@ void ImpactObserver::archive(StateArchive& a) const {
   for (const Track& k : tracks_) {
     n.push_back(static_cast<long long>(k.impacts.size()));
     all.insert(all.end(), k.impacts.begin(), k.impacts.end());
-    for (double x : {k.t0, k.f0, k.g0, k.rate0, k.p0, k.tm, k.fm}) state.push_back(x);
+    for (double x : {k.t0, k.f0, k.g0, k.rate0, k.p0, k.tm, k.fm, k.largest, k.gapScale}) state.push_back(x);
     flags.push_back(k.active);
     flags.push_back(k.havePrevious);
     flags.push_back(k.rateKnown);
@@ -122,18 +124,25 @@ void ImpactObserver::sample(Track& k, double t, const ImpactSample& given) {
     rateKnown = k.havePrevious && t > k.t0;
     s.gapRate = rateKnown ? (s.gap - k.g0) / (t - k.t0) : 0.0;
   }
-  const bool on = s.force > threshold_;
+  // Forces below 1e-6 of the largest so far are round-off (a released multiplier of exactly
+  // enforced contact), not contact: they would split one impact into several on some ranks.
+  const double floor = std::max(threshold_, 1e-6 * k.largest);
+  const bool on = s.force > floor;
+  k.largest = std::max(k.largest, s.force);
   const double power = s.tangentialForce * s.slipSpeed;
-  // The level whose crossing starts or ends an impact: the gap when the threshold is 0.
+  // The level whose crossing starts or ends an impact: the gap when the threshold is 0, where
+  // gaps within 1e-9 of the largest seen are round-off of a closed contact (0).
   const bool onGap = threshold_ == 0.0;
+  k.gapScale = std::max(k.gapScale, std::abs(s.gap));
+  const double tol = 1e-9 * k.gapScale;
   if (k.active) {
     Impact& im = k.impacts.back();
     if (on) {
       im.impulse += 0.5 * (k.f0 + s.force) * (t - k.t0);
       im.wear += 0.5 * (k.p0 + power) * (t - k.t0);
     } else {
-      const double te = onGap && s.gap > 0 && k.g0 <= 0 ? crossing(k.t0, k.g0, t, s.gap)
-                                                       : crossing(k.t0, k.f0 - threshold_, t, s.force - threshold_);
+      const double te = onGap && s.gap > tol && k.g0 <= tol ? crossing(k.t0, std::min(k.g0, 0.0), t, s.gap)
+                                                           : crossing(k.t0, k.f0 - threshold_, t, s.force - threshold_);
       im.impulse += 0.5 * (k.f0 + threshold_) * (te - k.t0);
       im.wear += k.p0 * (te - k.t0);
       im.end = te;
@@ -156,8 +165,8 @@ void ImpactObserver::sample(Track& k, double t, const ImpactSample& given) {
   } else if (on) {
     double ts = t, f0 = threshold_;
     if (k.havePrevious)
-      ts = onGap && k.g0 > 0 && s.gap <= 0 ? crossing(k.t0, k.g0, t, s.gap)
-                                            : crossing(k.t0, k.f0 - threshold_, t, s.force - threshold_);
+      ts = onGap && k.g0 > tol && s.gap <= tol ? crossing(k.t0, k.g0, t, std::min(s.gap, 0.0))
+                                                : crossing(k.t0, k.f0 - threshold_, t, s.force - threshold_);
     const bool merge = !k.impacts.empty() && ts - k.impacts.back().end < rest_;
     if (!merge) {
       Impact im;

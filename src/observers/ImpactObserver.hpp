@@ -7,6 +7,7 @@
 // contact pair, whose gap rate is the backward difference of its smallest gap, the secant over
 // the interval where the impact starts when it starts at the first state) and the
 // wear work (integral of tangential force x slip speed); per interaction the number of impacts,
+// (a force below 1e-6 of the largest so far counts as none: round-off of exactly enforced contact)
 // the largest and mean peak force, the total impulse and wear work. Two contacts separated by
 // less than 'Minimum Rest Time' are one impact. Written to <analysis>.impacts.csv when the run
 // ends (".incomplete" when it fails), summarised in the log, and given to the checks (type
@@ -50,6 +51,8 @@ class ImpactObserver : public TransientObserver {
     bool rateKnown = true;  // rate0 is a rate, not a placeholder (first state of a differenced gap)
     double t0 = 0, f0 = 0, g0 = 0, rate0 = 0, p0 = 0;  // the previous state (p: wear power)
     double tm = 0, fm = 0;                             // the state before it
+    double largest = 0;                                // largest force so far
+    double gapScale = 0;                               // largest |gap| so far
   };
   void sample(Track& k, double t, const ImpactSample& s);
   std::map<std::string, double> statistics() const;

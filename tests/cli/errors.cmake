@@ -237,3 +237,11 @@ add_test(NAME cli.modal_sdnl111a
          COMMAND sh ${CLI_SCRIPTS}/modal_run.sh $<TARGET_FILE:choc>
                  ${CMAKE_SOURCE_DIR}/input/sdnl111a.xml ${CLI_WORK}/modal_sdnl111a)
 set_tests_properties(cli.parameters_documented cli.modal_sdnl111a PROPERTIES TIMEOUT 120 LABELS cli)
+
+# Contact on nodes without faces (issue 16: beam structures against an obstacle).
+choc_cli_reference_error(contact_slave_side_and_node_set bad_contact_slave_both.xml
+  "parameter 'Analyses/impact/Contact/Pairs/interface/Slave Side Set' = 'CNT_POU2': the pair also has a 'Slave Node Set'. give either 'Slave Side Set' or \\(against an 'Obstacle'\\) 'Slave Node Set'")
+choc_cli_reference_error(contact_node_set_with_master bad_contact_node_set_master.xml
+  "parameter 'Analyses/impact/Contact/Pairs/interface/Slave Node Set' = 'FACE_POU2': a slave node set has no faces to pair with a master side set. give an 'Obstacle', or a 'Slave Side Set'")
+choc_cli_reference_error(contact_node_set_missing bad_contact_node_set_missing.xml
+  "parameter 'Analyses/impact/Contact/Pairs/interface/Slave Node Set' = 'TIP': no node set of that name in the mesh. node sets: POU1, POU2, N1, A, B, C, D, CL_POU2, FACE_POU1, FACE_POU2")
