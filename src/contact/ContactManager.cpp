@@ -15,8 +15,9 @@ namespace choc {
 std::vector<char> ContactManager::surfaceNodes(const Mesh& mesh) const {
   std::vector<char> flags(mesh.numNodes(), 0);
   for (const auto& pair : pairs_) {
-    if (const NodeSet* ns = pair.slaveNodeSet.empty() ? nullptr : mesh.findNodeSet(pair.slaveNodeSet))
-      for (int n : ns->nodes) flags[n] = 1;
+    for (const std::string& set : {pair.slaveNodeSet, pair.masterNodeSet})
+      if (const NodeSet* ns = set.empty() ? nullptr : mesh.findNodeSet(set))
+        for (int n : ns->nodes) flags[n] = 1;
     for (const std::string& name : {pair.masterSideSet, pair.slaveSideSet}) {
       const SideSet* ss = mesh.findSideSet(name);  // checked by the pairing
       for (size_t k = 0; ss && k < ss->elements.size(); ++k)
@@ -72,7 +73,8 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
     PairingResult res;
     try {
       res = pairs_[p].hasObstacle ? pairNodeToObstacle(mesh, pairs_[p], static_cast<int>(p))
-                                  : pairNodeToFace(mesh, pairs_[p], static_cast<int>(p));
+            : !pairs_[p].masterNodeSet.empty() ? pairNodeToNode(mesh, pairs_[p], static_cast<int>(p))
+                                               : pairNodeToFace(mesh, pairs_[p], static_cast<int>(p));
     } catch (const std::exception& e) {
       throw PairingError(int(p), "contact pair '" + pairs_[p].name + "': " + e.what());
     }

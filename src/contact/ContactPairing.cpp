@@ -273,4 +273,39 @@ PairingResult pairNodeToObstacle(const Mesh& mesh, const PairDefinition& def, in
   return res;
 }
 
+PairingResult pairNodeToNode(const Mesh& mesh, const PairDefinition& def, int pairIndex) {
+  const NodeSet* slaves = mesh.findNodeSet(def.slaveNodeSet);
+  const NodeSet* masters = mesh.findNodeSet(def.masterNodeSet);
+  if (!slaves || !masters) throw std::invalid_argument("node set not found");
+  if (slaves->nodes.size() != masters->nodes.size())
+    throw std::invalid_argument("slave node set '" + def.slaveNodeSet + "' has " +
+                                std::to_string(slaves->nodes.size()) + " nodes, master node set '" +
+                                def.masterNodeSet + "' " + std::to_string(masters->nodes.size()));
+  PairingResult res;
+  std::vector<char> used(masters->nodes.size(), 0);
+  std::vector<int> sorted = slaves->nodes;
+  std::sort(sorted.begin(), sorted.end());
+  for (int s : sorted) {
+    size_t best = 0;
+    double bestD = INFINITY;
+    for (size_t j = 0; j < masters->nodes.size(); ++j) {
+      const Vec3 d = mesh.coords[s] - mesh.coords[masters->nodes[j]];
+      if (dot(d, d) < bestD) bestD = dot(d, d), best = j;
+    }
+    if (used[best])
+      throw std::invalid_argument("master node " + std::to_string(masters->nodes[best] + 1) +
+                                  " is the nearest of two slave nodes");
+    used[best] = 1;
+    SlaveProjection sp;
+    sp.pair = pairIndex;
+    sp.slaveNode = s;
+    sp.masterNodes = {masters->nodes[best]};
+    sp.weights = {1.0};
+    sp.normal = def.nodeNormal;
+    sp.gap0 = dot(def.nodeNormal, mesh.coords[s] - mesh.coords[masters->nodes[best]]) - def.nodeOffset;
+    res.projections.push_back(sp);
+  }
+  return res;
+}
+
 }  // namespace choc

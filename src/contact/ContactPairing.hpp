@@ -28,6 +28,11 @@ struct PairDefinition {
   bool axisymmetric = false;  // slave areas of the whole ring: edge length weighted by 2 pi r
   RigidObstacle obstacle{};
   std::string slaveNodeSet;   // instead of a side set, against an obstacle: nodes without area
+  // Node to node (a shock link's plane in the direct transient): each node of slaveNodeSet
+  // with the nearest of masterNodeSet, gap = n . (x_s - x_m) - offset, n fixed.
+  std::string masterNodeSet;
+  Vec3 nodeNormal{0, 0, 0};
+  double nodeOffset = 0;
 };
 
 struct SlaveProjection {
@@ -63,5 +68,7 @@ PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pa
 // nodes; normal and gap from the obstacle's geometry). Throws std::invalid_argument as above,
 // or when a node lies where the obstacle's normal is undefined.
 PairingResult pairNodeToObstacle(const Mesh& mesh, const PairDefinition& def, int pairIndex);
+// Each slave node with the nearest master node (one to one; std::invalid_argument otherwise).
+PairingResult pairNodeToNode(const Mesh& mesh, const PairDefinition& def, int pairIndex);
 
 }  // namespace choc

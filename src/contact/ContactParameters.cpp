@@ -32,6 +32,12 @@ void declareContactParameters(Teuchos::ParameterList& p) {
                 "instead of a slave side set, against an 'Obstacle' only: nodes without faces "
                 "(beam structures, point masses), each a spring of 'Penalty Stiffness' or a "
                 "multiplier; their pressure is not defined (0 in the output)");
+  declareString(pr, "Master Node Set", "",
+                "node to node (the plane of a shock link, for beam structures): each node of "
+                "'Slave Node Set' with the nearest of these, gap = n . (x_slave - x_master) - "
+                "'Node Offset', n = 'Node Normal'");
+  declareString(pr, "Node Normal", "0 0 0", "'x y z': n of a node-to-node pair (normalised)");
+  declareDouble(pr, "Node Offset", 0.0, "gap offset of a node-to-node pair [m] (DIST_1 + DIST_2)");
   declareDouble(pr, "Search Distance", 1e-3,
                 "largest initial |gap| of a pairing with a master side set [m]", Range::positive());
   ParameterList& ob = declareSublist(pr, "Obstacle",
@@ -86,8 +92,24 @@ PairDefinition readPair(const ParameterList& pl, const std::string& name, const 
   PairDefinition d{name, pl.get<std::string>("Master Side Set"), pl.get<std::string>("Slave Side Set"),
                    pl.get<double>("Search Distance")};
   d.slaveNodeSet = pl.get<std::string>("Slave Node Set");
+  d.masterNodeSet = pl.get<std::string>("Master Node Set");
   const ParameterList& ob = pl.sublist("Obstacle");
   d.hasObstacle = ob.get<std::string>("Shape") != "none";
+  if (!d.masterNodeSet.empty()) {  // node to node
+    if (d.slaveNodeSet.empty() || !d.slaveSideSet.empty() || !d.masterSideSet.empty() || d.hasObstacle)
+      throwInput(file, path + "/Master Node Set", d.masterNodeSet,
+                 "a node-to-node pair takes a 'Slave Node Set' and nothing else",
+                 "give 'Slave Node Set', 'Node Normal' and 'Node Offset' only");
+    const std::string n = pl.get<std::string>("Node Normal");
+    d.nodeNormal = parseVector3(n, file, path + "/Node Normal");
+    const double len = norm(d.nodeNormal);
+    if (!(len > 0))
+      throwInput(file, path + "/Node Normal", n, "the normal of a node-to-node pair is zero",
+                 "give the direction 'x y z' from the master node to the slave node");
+    for (double& x : d.nodeNormal) x /= len;
+    d.nodeOffset = pl.get<double>("Node Offset");
+    return d;
+  }
   if (d.slaveSideSet.empty() == d.slaveNodeSet.empty())
     throwInput(file, path + "/Slave Side Set", d.slaveSideSet,
                d.slaveSideSet.empty() ? "the pair has no slave surface"
@@ -166,11 +188,14 @@ std::unique_ptr<ContactManager> makeContactManager(const ContactSettings& s, con
   for (auto& p : pairs) p.axisymmetric = axisymmetric;
   for (const auto& pair : s.pairs) {
     const std::string pp = s.path + "/Contact/Pairs/" + pair.name;
-    if (!pair.hasObstacle) requireSideSet(mesh, pair.masterSideSet, file, pp + "/Master Side Set");
+    if (!pair.hasObstacle && pair.masterNodeSet.empty())
+      requireSideSet(mesh, pair.masterSideSet, file, pp + "/Master Side Set");
     if (!pair.slaveNodeSet.empty()) {
-      if (!mesh.findNodeSet(pair.slaveNodeSet))
-        throwInput(file, pp + "/Slave Node Set", pair.slaveNodeSet, "no node set of that name in the mesh",
-                   "node sets: " + joinNames(mesh.nodeSetNames()));
+      for (const auto& [set, key] : {std::make_pair(pair.slaveNodeSet, "Slave Node Set"),
+                                     std::make_pair(pair.masterNodeSet, "Master Node Set")})
+        if (!set.empty() && !mesh.findNodeSet(set))
+          throwInput(file, pp + "/" + key, set, "no node set of that name in the mesh",
+                     "node sets: " + joinNames(mesh.nodeSetNames()));
     } else {
       requireSideSet(mesh, pair.slaveSideSet, file, pp + "/Slave Side Set");
     }
@@ -183,6 +208,9 @@ std::unique_ptr<ContactManager> makeContactManager(const ContactSettings& s, con
     if (pair.hasObstacle)
       throwInput(file, pp + "/Obstacle", shapeName(pair.obstacle.shape), e.what(),
                  "move the obstacle or the slave side set");
+    if (!pair.masterNodeSet.empty())
+      throwInput(file, pp + "/Master Node Set", pair.masterNodeSet, e.what(),
+                 "give node sets whose nodes face each other one to one");
     throwInput(file, pp + "/Search Distance", format("%g", pair.searchDistance), e.what(),
                "check the side set names, or raise 'Search Distance' above the initial gaps");
   }
