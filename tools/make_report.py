@@ -485,6 +485,28 @@ def main():
                 L.append(f"| {run.name} | {m} | {len(rows)} | {min(f):.6g} to {max(f):.6g} | {res_:.2e} |")
             except (KeyError, ValueError):
                 L.append(f"| {run.name} | {m} | {len(rows)} | unreadable | |")
+    impacts = [(run, f) for run in runs for f in sorted(glob.glob(os.path.join(run.dir, "*.impacts.csv")))]
+    if impacts:
+        L += ["", "## Impact statistics", "",
+              "Per link or contact pair (`<analysis>.impacts.csv`): the number of impacts, the "
+              "largest and mean peak force, the total impulse, and the first impact's start, peak "
+              "instant and duration.", "",
+              "| input | analysis | link / pair | impacts | largest peak force [N] | mean peak force [N] "
+              "| total impulse [N s] | first impact: start, peak at, duration [s] |",
+              "|---|---|---|---|---|---|---|---|"]
+        for run, f in impacts:
+            with open(f) as h:
+                rows = list(csv.DictReader(h))
+            for link in sorted({r["link"] for r in rows}):
+                mine = [r for r in rows if r["link"] == link]
+                peaks = [float(r["peak_force"]) for r in mine]
+                first = mine[0]
+                L.append("| " + " | ".join(md_escape(x) for x in (
+                    run.name, os.path.basename(f)[:-len(".impacts.csv")], link, str(len(mine)),
+                    f"{max(peaks):.6g}", f"{sum(peaks) / len(peaks):.6g}",
+                    f"{sum(float(r['impulse']) for r in mine):.6g}",
+                    f"{float(first['start_time']):.6g}, {float(first['peak_time']):.6g}, "
+                    f"{float(first['duration']):.6g}")) + " |")
     L += ["", "## Plots", "",
           "Per run: u_A, v_A and the contact force (thin blue: choc; wide grey underneath: the "
           "exact solution; red circles: the declared checks' reference values), and the error of "
