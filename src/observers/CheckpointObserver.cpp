@@ -8,6 +8,7 @@
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
 #include "core/Log.hpp"
+#include "observers/HistoryObserver.hpp"
 #include "output/Interrupt.hpp"
 #include "restart/CheckpointFile.hpp"
 #include "solvers/CollectiveFailure.hpp"
@@ -32,23 +33,28 @@ long long testSignalStep(const std::string& what) {
 }  // namespace
 
 CheckpointObserver::CheckpointObserver(std::string what, MPI_Comm comm, long long every,
-                                       CheckpointPlan plan, const ObserverSet& outputs)
+                                       CheckpointPlan plan, const ObserverSet& outputs,
+                                       const HistoryObserver* history)
     : what_(std::move(what)), comm_(comm), every_(every), plan_(std::move(plan)), outputs_(outputs),
-      last_(std::chrono::steady_clock::now()), testStep_(testSignalStep(what_)) {}
+      last_(std::chrono::steady_clock::now()), testStep_(testSignalStep(what_)), history_(history) {}
 
 void CheckpointObserver::step(TransientView& view) {
   const StepPoint pt = view.point();
   if (pt.boundary && pt.nominal == testStep_) setInterruptForTesting(SIGTERM);
-  if (!pt.boundary || pt.step % every_ != 0) return;
+  if (!pt.boundary || (pt.step % every_ != 0 && !pt.last)) return;  // and always at the end
   const CheckpointSettings& s = plan_.settings;
-  // [signal, wall time due], agreed by every rank.
-  int flags[2] = {interruptSignal(), 0};
+  // [signal, wall time due, a result not written], agreed by every rank.
+  int flags[3] = {interruptSignal(), 0, history_ && !history_->pendingFailure().empty()};
   if (s.intervalSeconds > 0)
     flags[1] = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_).count() >=
                s.intervalSeconds;
   int size = 1;
   MPI_Comm_size(comm_, &size);
-  if (size > 1) MPI_Allreduce(MPI_IN_PLACE, flags, 2, MPI_INT, MPI_MAX, comm_);
+  if (size > 1) MPI_Allreduce(MPI_IN_PLACE, flags, 3, MPI_INT, MPI_MAX, comm_);
+  if (flags[2] != 0) {
+    const Teuchos::MpiComm<int> comm(comm_);
+    throw OutputError(collectiveFailure(comm, history_ ? history_->pendingFailure() : std::string()));
+  }
   const bool due = flags[0] != 0 || flags[1] != 0 ||
                    (s.intervalSteps > 0 && pt.nominal > 0 && pt.nominal % s.intervalSteps == 0);
   if (due && !pt.last && pt.step > 0) write(pt);

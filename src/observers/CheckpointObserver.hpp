@@ -32,8 +32,9 @@ struct CheckpointPlan {
 
 class CheckpointObserver : public TransientObserver {
  public:
+  // history (may be null): its pending write failure is agreed on with the signal.
   CheckpointObserver(std::string what, MPI_Comm comm, long long every, CheckpointPlan plan,
-                     const ObserverSet& outputs);
+                     const ObserverSet& outputs, const class HistoryObserver* history = nullptr);
   void step(TransientView& view) override;
 
  private:
@@ -45,6 +46,7 @@ class CheckpointObserver : public TransientObserver {
   const ObserverSet& outputs_;
   std::chrono::steady_clock::time_point last_;
   long long testStep_;  // CHOC_TEST_SIGNAL_AT_STEP (-1: none)
+  const class HistoryObserver* history_;
 };
 
 }  // namespace choc

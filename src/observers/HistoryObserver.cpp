@@ -65,6 +65,8 @@ HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> colu
   }
 }
 
+void HistoryObserver::setRanks(int ranks) { single_ = ranks == 1; }
+
 void HistoryObserver::archive(StateArchive& a) const {
   a.putPod("history/balance", balance_.state());
   a.putPod("history/energies", energies_);
@@ -89,7 +91,16 @@ void HistoryObserver::step(TransientView& view) {
                                   what_.c_str(), pt.time, columns_[k].c_str(), row[k]));
   history_.times.push_back(pt.time);
   for (size_t k = 0; k < columns_.size(); ++k) history_.columns[columns_[k]].push_back(row[k]);
-  if (csv_) csv_->appendRow(pt.time, row);
+  if (csv_ && pending_.empty()) {
+    try {
+      csv_->appendRow(pt.time, row);
+    } catch (const OutputError& e) {
+      // One rank writes the file: on several, the others learn of it at the next state the
+      // checkpoint observer agrees on (pendingFailure), instead of waiting for this rank.
+      if (single_) throw;
+      pending_ = e.what();
+    }
+  }
 }
 
 void HistoryObserver::end(bool ok) {

@@ -41,6 +41,10 @@ class HistoryObserver : public TransientObserver {
 
   const RecordedHistory& history() const { return history_; }
   void setStatistics(std::map<std::string, double> s) { history_.statistics = std::move(s); }
+  // On several ranks a failed write of the history (rank 0) is kept here until every rank
+  // agrees to stop (CheckpointObserver); on one rank it is thrown at once.
+  void setRanks(int ranks);
+  const std::string& pendingFailure() const { return pending_; }
   const EnergyTerms& lastEnergies() const { return energies_; }
   const EnergyBalanceMonitor& balance() const { return balance_; }
 
@@ -51,6 +55,8 @@ class HistoryObserver : public TransientObserver {
   EnergyBalanceMonitor balance_;
   RecordedHistory history_;
   EnergyTerms energies_;
+  std::string pending_;
+  bool single_ = true;
 };
 
 }  // namespace choc

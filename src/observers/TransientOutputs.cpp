@@ -76,6 +76,7 @@ HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSe
                                                                  *plan.resume, *model.comm())
                              : std::make_unique<HistoryObserver>(plan.what, plan.columns, csv, analysis);
   HistoryObserver& h = *history;
+  h.setRanks(model.comm()->getSize());
   set.add(std::move(history));
   set.add(std::make_unique<ImpactObserver>(plan.base + ".impacts.csv", analysis, h, plan.resume));
   if (s.exodusInterval > 0)
@@ -84,7 +85,7 @@ HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSe
   CheckpointPlan cp = plan.checkpoint;
   cp.settings = s.checkpoint;
   set.add(std::make_unique<CheckpointObserver>(plan.what, model.rawComm(), plan.interruptEvery,
-                                               std::move(cp), set));
+                                               std::move(cp), set, &h));
   return h;
 }
 
