@@ -26,6 +26,29 @@ const std::vector<CheckKind>& checkKinds() {
   return kinds;
 }
 
+void declareReferenceParameters(Teuchos::ParameterList& c) {
+  declareRequiredDouble(c, "Reference", "reference value");
+  declareChoice(c, "Criterion", "relative", {"relative", "absolute"},
+                "relative: |computed-reference|/|reference|; absolute: |computed-reference|");
+  declareRequiredDouble(c, "Tolerance", "largest accepted error (a fraction when relative)",
+                        Range::positive());
+  declareChoice(c, "Kind", "analytic", {"analytic", "exact", "regression"},
+                "where the reference comes from");
+  declareString(c, "Note", "", "remark printed with the row (e.g. a known inconsistency)");
+}
+
+CheckSpec referenceSpec(const Teuchos::ParameterList& row, const CheckSite& site) {
+  CheckSpec s;
+  s.name = site.name;
+  s.analysis = site.analysis;
+  s.reference = row.get<double>("Reference");
+  s.criterion = *parseCriterion(row.get<std::string>("Criterion"));
+  s.kind = *parseReferenceKind(row.get<std::string>("Kind"));
+  s.tolerance = row.get<double>("Tolerance");
+  s.note = row.get<std::string>("Note");
+  return s;
+}
+
 void declareChecks(Teuchos::ParameterList& p) {
   declareOpenSublist(p, "Checks",
                      "checks of the history, by name; each has a 'Type' (default 'Value'), see "

@@ -44,6 +44,12 @@ struct CheckKind {
 
 const std::vector<CheckKind>& checkKinds();
 
+// The parameters every row check against a reference shares: Reference, Criterion, Tolerance,
+// Kind, Note; and the spec they give (name and analysis from the site; quantity and time are
+// the check's own).
+void declareReferenceParameters(Teuchos::ParameterList& row);
+CheckSpec referenceSpec(const Teuchos::ParameterList& row, const CheckSite& site);
+
 // Declares the (open) 'Checks' list of an analysis.
 void declareChecks(Teuchos::ParameterList& analysis);
 // The 'Exact Solution' sublist of earlier releases becomes the check 'exact solution' of type

@@ -43,14 +43,7 @@ Teuchos::ParameterList impactCheckParameters() {
                 "per impact: start time, end time, peak time, peak force, duration, impulse, impact "
                 "velocity (d(gap)/dt before the impact), wear work; with Impact = 0: number of "
                 "impacts, largest peak force, mean peak force, total impulse, total wear work");
-  declareRequiredDouble(c, "Reference", "reference value");
-  declareChoice(c, "Criterion", "relative", {"relative", "absolute"},
-                "relative: |computed-reference|/|reference|; absolute: |computed-reference|");
-  declareRequiredDouble(c, "Tolerance", "largest accepted error (a fraction when relative)",
-                        Range::positive());
-  declareChoice(c, "Kind", "analytic", {"analytic", "exact", "regression"},
-                "where the reference comes from");
-  declareString(c, "Note", "", "remark printed with the row");
+  declareReferenceParameters(c);
   return c;
 }
 
@@ -72,15 +65,8 @@ ImpactCheck::ImpactCheck(const Teuchos::ParameterList& row, const CheckSite& sit
     throwInput(site.file, site.path + "/Impact", std::to_string(impact_),
                "'" + q + "' is a quantity of the whole run", "set 'Impact' to 0");
   statistic_ = link_ + ":" + (impact_ > 0 ? "impact " + std::to_string(impact_) + ":" : "") + q;
-  CheckSpec& s = spec_;
-  s.name = site.name;
-  s.analysis = site.analysis;
-  s.quantity = statistic_;
-  s.reference = row.get<double>("Reference");
-  s.criterion = *parseCriterion(row.get<std::string>("Criterion"));
-  s.kind = *parseReferenceKind(row.get<std::string>("Kind"));
-  s.tolerance = row.get<double>("Tolerance");
-  s.note = row.get<std::string>("Note");
+  spec_ = referenceSpec(row, site);
+  spec_.quantity = statistic_;
 }
 
 void ImpactCheck::verify(const std::vector<std::string>& columns, double) const {

@@ -25,14 +25,7 @@ Teuchos::ParameterList valueCheckParameters() {
   declareChoice(c, "Type", "Value", {"Value"}, "check type");
   declareRequiredString(c, "Quantity", "history column, e.g. 'A:DX'");
   declareRequiredDouble(c, "Time", "time of the check [s]", Range::nonNegative());
-  declareRequiredDouble(c, "Reference", "reference value");
-  declareChoice(c, "Criterion", "relative", {"relative", "absolute"},
-                "relative: |computed-reference|/|reference|; absolute: |computed-reference|");
-  declareRequiredDouble(c, "Tolerance", "largest accepted error (a fraction when relative)",
-                        Range::positive());
-  declareChoice(c, "Kind", "analytic", {"analytic", "exact", "regression"},
-                "where the reference comes from");
-  declareString(c, "Note", "", "remark printed with the row (e.g. a known inconsistency)");
+  declareReferenceParameters(c);
   return c;
 }
 
@@ -42,16 +35,9 @@ std::unique_ptr<HistoryCheck> makeValueCheck(const Teuchos::ParameterList& row, 
 }
 
 ValueCheck::ValueCheck(const Teuchos::ParameterList& row, const CheckSite& site) : site_(site) {
-  CheckSpec& s = spec_;
-  s.name = site.name;
-  s.analysis = site.analysis;
-  s.quantity = row.get<std::string>("Quantity");
-  s.time = row.get<double>("Time");
-  s.reference = row.get<double>("Reference");
-  s.criterion = *parseCriterion(row.get<std::string>("Criterion"));
-  s.kind = *parseReferenceKind(row.get<std::string>("Kind"));
-  s.tolerance = row.get<double>("Tolerance");
-  s.note = row.get<std::string>("Note");
+  spec_ = referenceSpec(row, site);
+  spec_.quantity = row.get<std::string>("Quantity");
+  spec_.time = row.get<double>("Time");
 }
 
 void ValueCheck::verify(const std::vector<std::string>& columns, double endTime) const {
