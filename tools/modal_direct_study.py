@@ -23,9 +23,14 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
 
+def read_input(name):
+    """input/NAME with its mesh path made absolute (the variants are written elsewhere)."""
+    s = open(os.path.join(ROOT, "input", name)).read()
+    return s.replace("../meshes/", os.path.join(ROOT, "meshes") + "/")
+
+
 def modal_input_sdnl111a(m):
-    s = open(os.path.join(ROOT, "input", "sdnl111a.xml")).read()
-    s = s.replace("../meshes/", os.path.join(ROOT, "meshes") + "/")
+    s = read_input("sdnl111a.xml")
     start = s.index("    <!-- run 2: two planes, obstacle axis y -->")
     s = s[:start] + "  </ParameterList>\n</ParameterList>\n"  # modes and plans_z only
     s = s.replace('<Parameter name="Number of Modes" type="int" value="40"/>',
@@ -44,15 +49,11 @@ def modal_input_sdnl111a(m):
 
 
 def direct_input_sdnl111a(dt):
-    s = open(os.path.join(ROOT, "input", "sdnl111a_direct.xml")).read()
-    s = s.replace("../meshes/", os.path.join(ROOT, "meshes") + "/")
-    return s.replace('<Parameter name="Time Step" type="double" value="1e-6"/>',
-                     '<Parameter name="Time Step" type="double" value="%r"/>' % dt)
+    return direct_at(dt, "sdnl111a_direct.xml")
 
 
 def modal_input(m):
-    s = open(os.path.join(ROOT, "input", "sdnl32.xml")).read()
-    s = s.replace("../meshes/", os.path.join(ROOT, "meshes") + "/")
+    s = read_input("sdnl32.xml")
     start = s.index('    <ParameterList name="run1_exact_tip">')
     s = s[:start] + "  </ParameterList>\n</ParameterList>\n"  # modes and run1 only
     s = re.sub(r"      <ParameterList name=\"Checks\">.*?\n      </ParameterList>\n", "", s, flags=re.S)
@@ -64,11 +65,15 @@ def modal_input(m):
     return s
 
 
-def direct_input(dt):
-    s = open(os.path.join(ROOT, "input", "sdnl32_direct.xml")).read()
-    s = s.replace("../meshes/", os.path.join(ROOT, "meshes") + "/")
+def direct_at(dt, name):
+    """input/NAME (a direct input at dt = 1e-6 s) at another dt, its mesh path made absolute."""
+    s = read_input(name)
     return s.replace('<Parameter name="Time Step" type="double" value="1e-6"/>',
                      '<Parameter name="Time Step" type="double" value="%r"/>' % dt)
+
+
+def direct_input(dt):
+    return direct_at(dt, "sdnl32_direct.xml")
 
 
 LAST_EXACT = {}
