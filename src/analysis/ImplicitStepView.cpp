@@ -9,9 +9,9 @@
 namespace choc {
 
 ImplicitStepView::ImplicitStepView(const StructuralOperator& op, ContactReport* contact,
-                                   std::vector<Probe> probes, ObserverSet& outputs,
-                                   Teuchos::StackedTimer* timer)
-    : op_(op), contact_(contact), probes_(std::move(probes)), outputs_(outputs), timer_(timer) {}
+                                   const InteractionOutput* interactions, std::vector<Probe> probes,
+                                   ObserverSet& outputs, Teuchos::StackedTimer* timer)
+    : op_(op), contact_(contact), interactions_(interactions), probes_(std::move(probes)), outputs_(outputs), timer_(timer) {}
 
 void ImplicitStepView::stepAccepted(const StepInfo& info, const Vector& u, const Vector& v,
                                     const Vector& a) {
@@ -112,12 +112,12 @@ EnergyTerms ImplicitStepView::energies() {
   EnergyTerms e;
   e.kinetic = op_.kineticEnergy(*vScheme_);
   e.strain = op_.strainEnergy(*u_);
-  e.contact = op_.contactEnergy(*u_);
+  e.contact = op_.contactEnergy(*u_) + (op_.links() ? op_.links()->springEnergy() : 0.0);
   const double power = op_.dampingPower(*vScheme_, e.kinetic);
   if (info_.step == 0) u0_ = rcp(new Vector(*u_, Teuchos::Copy));
   dissipated_ += 0.5 * info_.dt * (lastPower_ + power);
   lastPower_ = power;
-  e.dissipated = dissipated_;
+  e.dissipated = dissipated_ + (op_.links() ? op_.links()->dissipatedEnergy() : 0.0);
   // Work of moving obstacles: trapezoidal rule on their power.
   const double obstaclePower = contact_ ? contact_->obstaclePower() : 0.0;
   obstacleWork_ += 0.5 * info_.dt * (lastObstaclePower_ + obstaclePower);

@@ -22,8 +22,10 @@ namespace choc {
 
 class ImplicitStepView : public TransientView, public StepObserver {
  public:
-  // contact may be null; timer (may be null) times the output under "Transient: output".
-  ImplicitStepView(const StructuralOperator& op, ContactReport* contact, std::vector<Probe> probes,
+  // contact may be null; interactions: what the output reports (the contact report, the
+  // links, both, or null); timer (may be null) times the output under "Transient: output".
+  ImplicitStepView(const StructuralOperator& op, ContactReport* contact,
+                   const InteractionOutput* interactions, std::vector<Probe> probes,
                    ObserverSet& outputs, Teuchos::StackedTimer* timer);
 
   void stepAccepted(const StepInfo& info, const Vector& u, const Vector& v, const Vector& a) override;
@@ -31,7 +33,7 @@ class ImplicitStepView : public TransientView, public StepObserver {
   StepPoint point() const override;
   std::vector<double> probeValues() const override;
   EnergyTerms energies() override;
-  const InteractionOutput* interactions() const override { return contact_; }
+  const InteractionOutput* interactions() const override { return interactions_; }
   void fields(Vector& u, Vector& v, Vector& a) const override;
   std::string stepNote() const override;
 
@@ -43,6 +45,7 @@ class ImplicitStepView : public TransientView, public StepObserver {
  private:
   const StructuralOperator& op_;
   ContactReport* contact_;
+  const InteractionOutput* interactions_;
   std::vector<Probe> probes_;
   ObserverSet& outputs_;
   Teuchos::StackedTimer* timer_;

@@ -13,6 +13,7 @@
 #include "core/Log.hpp"
 #include "fem/Components.hpp"
 #include "input/ParameterSpec.hpp"
+#include "output/InteractionList.hpp"
 
 namespace choc {
 
@@ -48,6 +49,7 @@ Teuchos::ParameterList ImplicitTransient::parameters() {
   declareDouble(sc, "Cut Factor", 0.5, "dt <- factor dt after a failure", Range{0.0, 1.0, true, true});
   p.set("Linear Solver", linearSolverParameters(), "linear solver of the Newton corrections");
   declareContactParameters(p);
+  declareShockLinks(p);
   ParameterList& nf = declareNamedSublists(p, "Nodal Forces", "constant forces, by name");
   declareRequiredString(nf, "Node Set", "node set receiving the force");
   declareChoice(nf, "Component", "DX", {"DX", "DY", "DZ"}, "direction");
@@ -112,12 +114,19 @@ void ImplicitTransient::setup(SetupContext& ctx) {
   b_->M = model.mass();
   b_->load = assembleLoads(model);
   buildContact(model);
+  std::vector<ShockLink> links = readShockLinks(params_, model, "Analyses/" + name_);
+  if (!links.empty()) b_->links = std::make_unique<DirectLinks>(std::move(links), model, model.map());
   buildSolver();
   b_->probes = parseProbes(s_.output.history, model, path("History"));
   std::vector<std::string> probeColumns;
   for (const auto& p : b_->probes) probeColumns.push_back(p.column);
-  b_->columns = historyColumns(probeColumns, b_->contact ? ContactReport(*b_->contact, 0).historyColumns()
-                                                         : std::vector<std::string>());
+  std::vector<std::string> interactionColumns;
+  if (b_->contact) interactionColumns = ContactReport(*b_->contact, 0).historyColumns();
+  if (b_->links) {
+    const std::vector<std::string> lc = b_->links->historyColumns();
+    interactionColumns.insert(interactionColumns.end(), lc.begin(), lc.end());
+  }
+  b_->columns = historyColumns(probeColumns, interactionColumns);
   b_->checks = makeChecks(params_, model, name_);
   for (const auto& c : b_->checks) c->verify(b_->columns, s_.time.endTime);
   b_->init = buildInitialFields(params_, model, "Analyses/" + name_);
@@ -168,13 +177,14 @@ void ImplicitTransient::run(RunContext& ctx) {
   const auto wallStart = std::chrono::steady_clock::now();
   auto timer = rcp(new Teuchos::StackedTimer(("Transient '" + name_ + "'").c_str()));
   StructuralOperator op(b_->K, b_->M, s_.rayleighK, s_.rayleighM, b_->load, b_->contact.get(),
-                        std::move(b_->solver), timer.get());
+                        b_->links.get(), std::move(b_->solver), timer.get());
   describe(ctx.model, op);
   const StateArchive* resume = resumeFor(ctx);
   ObserverSet outputs;
   std::unique_ptr<ContactReport> report;
   if (b_->contact) report = std::make_unique<ContactReport>(*b_->contact, ctx.model.mesh().numNodes());
-  ImplicitStepView view(op, report.get(), b_->probes, outputs, timer.get());
+  const InteractionList interactions({report.get(), b_->links.get()});
+  ImplicitStepView view(op, report.get(), interactions.simplest(), b_->probes, outputs, timer.get());
   TransientDriver driver(op, s_.scheme, s_.time);
   driver.addObserver(&view);
   const StateVectors vectors(ctx.model.dofs());
@@ -230,6 +240,14 @@ void ImplicitTransient::describe(Model& model, const StructuralOperator& op) con
     log() << "  contact: " << contact->method().name() << ", " << contact->numConstraints()
           << " slave nodes paired";
     if (contact->unpairedNodes() > 0) log() << " (" << contact->unpairedNodes() << " unpaired)";
+    log() << "\n";
+  }
+  if (b_->links) {
+    log() << "  shock links (penalty law, tangent by central differences):";
+    for (const ShockLink& l : b_->links->links())
+      log() << " " << l.name << " (node " << l.node1 + 1
+            << (l.node2 >= 0 ? " to node " + std::to_string(l.node2 + 1) : std::string(" to a fixed obstacle"))
+            << ")";
     log() << "\n";
   }
 }

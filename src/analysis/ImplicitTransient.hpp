@@ -17,6 +17,7 @@
 #include "observers/Probes.hpp"
 #include "observers/TransientOutputs.hpp"
 #include "physics/InitialConditions.hpp"
+#include "physics/DirectLinks.hpp"
 #include "physics/StructuralOperator.hpp"
 #include "solvers/LinearSolver.hpp"
 #include "timeint/TransientDriver.hpp"
@@ -52,6 +53,7 @@ class ImplicitTransient : public Analysis {
     RCP<const CrsMatrix> K, M;
     RCP<Vector> load;
     std::unique_ptr<ContactManager> contact;
+    std::unique_ptr<DirectLinks> links;  // null: no shock links
     long long masslessNodes = 0;
     std::string massFallback;  // why Contact Mass = auto kept the standard mass (empty: it did not)
     std::unique_ptr<LinearSolver> solver;

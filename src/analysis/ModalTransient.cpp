@@ -134,7 +134,7 @@ const ModalBasis& ModalTransient::basisFor(RunContext& ctx) {
   basis_ = ctx.bases.at(s_.basis);
   if (!s_.staticCorrection) return *basis_;
   std::vector<StaticLoad> loads;
-  for (const ModalLink& l : b_->links) {
+  for (const ShockLink& l : b_->links) {
     std::vector<Vec3> dirs;
     switch (l.law.shape) {
       case ObstacleShape::BiPlanY:

@@ -35,7 +35,7 @@ class ModalTransient : public Analysis {
     TransientOutputSettings output;
   };
   struct Built {
-    std::vector<ModalLink> links;
+    std::vector<ShockLink> links;
     std::vector<Probe> probes;
     std::vector<std::string> columns;
     std::vector<std::unique_ptr<HistoryCheck>> checks;

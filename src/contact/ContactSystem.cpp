@@ -21,7 +21,8 @@ double maxDiagonal(const CrsMatrix& A) {
 
 }  // namespace
 
-ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, ContactManager* contact)
+ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, ContactManager* contact,
+                             const std::vector<std::vector<GO>>& couplings)
     : K_(std::move(K)), M_(std::move(M)), contact_(contact) {
   maxDiagK_ = maxDiagonal(*K_);
   maxDiagM_ = maxDiagonal(*M_);
@@ -79,6 +80,11 @@ ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, Con
       row.push_back(nU + s);
     }
   }
+  for (const auto& group : couplings)
+    for (GO di : group) {
+      const LO l = dofMap->getLocalElement(di);
+      if (l != Teuchos::OrdinalTraits<LO>::invalid()) cols[l].insert(cols[l].end(), group.begin(), group.end());
+    }
   std::vector<size_t> counts(gids.size());
   for (size_t i = 0; i < gids.size(); ++i) {
     auto& row = cols[i];
@@ -96,7 +102,7 @@ ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, Con
   A_->fillComplete(map_, map_);
 }
 
-void ContactSystem::fill(double aM, double aK) {
+void ContactSystem::fill(double aM, double aK, const std::vector<MatrixEntry>& extra) {
   if (contact_) contact_->setScale(std::max(aM * maxDiagM_ + aK * maxDiagK_, 1e-300));
   A_->resumeFill();
   A_->setAllToScalar(0.0);
@@ -156,6 +162,9 @@ void ContactSystem::fill(double aM, double aK) {
       }
     }
   }
+  for (const MatrixEntry& e : extra)
+    A_->sumIntoGlobalValues(e.row, Teuchos::ArrayView<const GO>(&e.col, 1),
+                            Teuchos::ArrayView<const double>(&e.value, 1));
   A_->fillComplete(map_, map_);
 }
 

@@ -7,24 +7,34 @@
 // node's rank). S is the manager's scale: the unknowns of those rows are lambda / S, an
 // inactive node's row reads lambda = 0. The graph holds every possible coupling, so a change
 // of active set keeps the sparsity (the direct solver reuses its symbolic factorisation).
+// Other nonlinear forces (shock links) add their tangent on couplings declared up front.
 #pragma once
 #include "contact/ContactManager.hpp"
 #include "core/TpetraTypes.hpp"
 
 namespace choc {
 
+// One entry of a tangent added to the effective matrix (global row and column).
+struct MatrixEntry {
+  GO row = 0, col = 0;
+  double value = 0.0;
+};
+
 class ContactSystem {
  public:
-  // contact may be null (no contact).
-  ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, ContactManager* contact);
+  // contact may be null (no contact). couplings: groups of DOFs (global ids) that extra
+  // tangents couple, each DOF of a group with every other.
+  ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, ContactManager* contact,
+                const std::vector<std::vector<GO>>& couplings = {});
   RCP<const Map> map() const { return map_; }  // DOF map, or extended by the multiplier rows
   bool extended() const { return extended_; }
   size_t numLocalDofs() const { return nLocalDofs_; }  // leading local entries are the DOFs
   // Local row of constraint s on this rank, or -1.
   LO multiplierRow(int s) const { return rowOfConstraint_[s]; }
   // Refills the values: W = aM M + aK K plus the contact block for the current statuses,
-  // the multiplier rows scaled by the largest diagonal of aM M + aK K (a balanced system).
-  void fill(double aM, double aK);
+  // the multiplier rows scaled by the largest diagonal of aM M + aK K (a balanced system),
+  // plus the extra entries (rows this rank owns, within the declared couplings).
+  void fill(double aM, double aK, const std::vector<MatrixEntry>& extra = {});
   RCP<const CrsMatrix> matrix() const { return A_; }
   // What the factored matrix depends on besides (aM, aK): the contact statuses and the
   // version of the constraints' coefficients.

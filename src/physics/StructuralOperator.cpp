@@ -13,11 +13,12 @@ namespace choc {
 
 StructuralOperator::StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
                                        double rayleighK, double rayleighM, RCP<const Vector> load,
-                                       ContactManager* contact, std::unique_ptr<LinearSolver> solver,
-                                       Teuchos::StackedTimer* timer)
+                                       ContactManager* contact, DirectLinks* links,
+                                       std::unique_ptr<LinearSolver> solver, Teuchos::StackedTimer* timer)
     : K_(std::move(K)), M_(std::move(M)), aK_(rayleighK), aM_(rayleighM), load_(std::move(load)),
-      contact_(contact), solver_(std::move(solver)), timer_(timer) {
-  system_ = std::make_unique<ContactSystem>(K_, M_, contact_);
+      contact_(contact), links_(links), solver_(std::move(solver)), timer_(timer) {
+  system_ = std::make_unique<ContactSystem>(K_, M_, contact_,
+                                            links_ ? links_->couplings() : std::vector<std::vector<GO>>());
   tmp_ = rcp(new Vector(K_->getRowMap()));
   energyTmp_ = rcp(new Vector(K_->getRowMap()));
   rhs_ = rcp(new MultiVector(system_->map(), 1));
@@ -91,20 +92,28 @@ void StructuralOperator::applyForces(const Vector& u, const Vector& v, double, V
   if (!load_.is_null()) out.update(-1.0, *load_, 1.0);
 }
 
-double StructuralOperator::addConstraintForces(const Vector& u, Vector& out) {
-  if (!contact_) return 0.0;
+double StructuralOperator::addConstraintForces(const Vector& u, const Vector& v, Vector& out) {
+  if (!contact_ && !links_) return 0.0;
   TimerScope ts(timer_, "Transient: contact");
-  return contact_->addForces(u, out);
+  if (links_) links_->addForces(u, v, out);
+  return contact_ ? contact_->addForces(u, out) : 0.0;
 }
 
 CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients& c,
                                                      const Vector& u, const Vector& r, Vector& du) {
   CorrectionStatus st;
-  const std::vector<char> status = system_->statusKey();
+  std::vector<char> status = system_->statusKey();
+  // The links' tangent, with v following u (dv/du = cv / cd); none for W = M.
+  const bool linkTangent = links_ && c.cd > 0.0;
+  if (linkTangent) {
+    const std::vector<char> lk = links_->tangentKey();
+    status.insert(status.end(), lk.begin(), lk.end());
+  }
   if (!haveKey_ || !(keyCoefficients_ == c) || keyStatus_ != status) {
     {
       TimerScope ts(timer_, "Transient: assembly");
-      system_->fill(c.ca + c.cv * aM_, c.cd + c.cv * aK_);
+      system_->fill(c.ca + c.cv * aM_, c.cd + c.cv * aK_,
+                    linkTangent ? links_->tangent(c.cv / c.cd) : std::vector<MatrixEntry>());
     }
     TimerScope ts(timer_, "Transient: linear solve");
     solver_->setMatrix(system_->matrix());  // throws NumericalError when singular
@@ -228,7 +237,8 @@ CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, c
   return st;
 }
 
-void StructuralOperator::beginStep(const Vector& u, double t) {
+void StructuralOperator::beginStep(const Vector& u, double t, double dt) {
+  if (links_) links_->beginStep(dt);
   if (!contact_) return;
   TimerScope ts(timer_, "Transient: contact");
   contact_->beginStep(u, t);
@@ -250,6 +260,7 @@ void StructuralOperator::initializeConstraints(const Vector& u) {
   if (contact_) contact_->initialize(u);
 }
 void StructuralOperator::saveState() {
+  if (links_) links_->commit();
   if (contact_) contact_->save();
 }
 void StructuralOperator::restoreState() {
@@ -257,9 +268,11 @@ void StructuralOperator::restoreState() {
 }
 void StructuralOperator::archive(StateArchive& a) const {
   if (contact_) contact_->archive(a);
+  if (links_) links_->archive(a);
 }
 void StructuralOperator::unarchive(const StateArchive& a) {
   if (contact_) contact_->unarchive(a);
+  if (links_) links_->unarchive(a);
 }
 
 }  // namespace choc

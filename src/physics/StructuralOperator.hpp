@@ -1,9 +1,9 @@
 // The second-order operator of a linear elastic model with Rayleigh damping, constant nodal
-// loads and contact: what ImplicitTransient gives its integrator.
-//   M a + C v + K u + f_c(u) = f,   C = a_K K + a_M M.
+// loads, contact and shock links: what ImplicitTransient gives its integrator.
+//   M a + C v + K u + f_c(u) + f_l(u, v) = f,   C = a_K K + a_M M.
 // Newton corrections solve with the effective matrix W = ca M + cv C + cd K plus the contact
-// block (ContactSystem), factored by the linear solver only when the key (ca, cv, cd, the
-// statuses of the contact nodes) changes; the key is compared in full, so a stale matrix is
+// block (ContactSystem) and the links' tangent, factored by the linear solver only when the
+// key (ca, cv, cd, the statuses of the contact nodes, the links' tangent key) changes; the key is compared in full, so a stale matrix is
 // impossible. Timings go to the analysis' stacked timer under "Transient: assembly",
 // "Transient: linear solve" and "Transient: contact".
 #pragma once
@@ -16,6 +16,7 @@
 #include "core/TimerScope.hpp"
 #include "contact/ContactManager.hpp"
 #include "contact/ContactSystem.hpp"
+#include "physics/DirectLinks.hpp"
 #include "solvers/LinearSolver.hpp"
 #include "timeint/SecondOrderOperator.hpp"
 
@@ -23,28 +24,31 @@ namespace choc {
 
 class StructuralOperator : public SecondOrderOperator {
  public:
-  // load and contact may be null. The solver is owned; the contact manager is not.
+  // load, contact and links may be null. The solver is owned; the contact manager and the
+  // links are not.
   StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, double rayleighK,
                      double rayleighM, RCP<const Vector> load, ContactManager* contact,
-                     std::unique_ptr<LinearSolver> solver, Teuchos::StackedTimer* timer);
+                     DirectLinks* links, std::unique_ptr<LinearSolver> solver,
+                     Teuchos::StackedTimer* timer);
 
   RCP<const Map> map() const override { return K_->getRowMap(); }
   void applyMass(const Vector& a, Vector& out) override;
   void applyForces(const Vector& u, const Vector& v, double t, Vector& out) override;
-  double addConstraintForces(const Vector& u, Vector& out) override;
+  double addConstraintForces(const Vector& u, const Vector& v, Vector& out) override;
   CorrectionStatus solveCorrection(const EffectiveCoefficients& c, const Vector& u,
                                    const Vector& r, Vector& du) override;
   // With massless DOFs (rows of M that are zero: redistributed contact mass) the initial
   // acceleration is solved by blocks; see the .cpp. Otherwise the default (W = M).
   CorrectionStatus solveInitialAcceleration(const Vector& u, const Vector& r, Vector& a) override;
   ConstraintUpdate updateConstraints(const Vector& u) override;
-  void beginStep(const Vector& u, double t) override;
+  void beginStep(const Vector& u, double t, double dt) override;
   void initializeConstraints(const Vector& u) override;
   void saveState() override;
   void restoreState() override;
   void archive(StateArchive& a) const override;
   void unarchive(const StateArchive& a) override;
 
+  const DirectLinks* links() const { return links_; }
   // Energies of a state, for the output: 1/2 v.M v, 1/2 u.K u, the contact springs' energy,
   // the damping power v.C v (given the kinetic energy), the loads' work f.(u - u0).
   double kineticEnergy(const Vector& v) const;
@@ -64,6 +68,7 @@ class StructuralOperator : public SecondOrderOperator {
   double aK_, aM_;
   RCP<const Vector> load_;
   ContactManager* contact_;
+  DirectLinks* links_;
   std::unique_ptr<LinearSolver> solver_;
   Teuchos::StackedTimer* timer_;
   std::unique_ptr<ContactSystem> system_;

@@ -82,7 +82,7 @@ NewtonOutcome solveStatic(SecondOrderOperator& op, Vector& u, double t, const Ne
   auto residual = [&](const Vector& x, Vector& r) {
     op.applyForces(x, zero, t, r);
     fc.putScalar(0.0);
-    const double cons = op.addConstraintForces(x, fc);
+    const double cons = op.addConstraintForces(x, zero, fc);
     ResidualNorms n;
     n.reference = std::max({r.norm2(), fc.norm2(), loadNorm});
     r.update(1.0, fc, 1.0);

@@ -1,9 +1,9 @@
 // The interface a second-order integrator sees (STYLE: "the integrator sees an operator,
 // never an element"): for  M a + C v + K u + f_c(u) = f_ext(t)  it gives
 //   - the inertia M a and the weighted forces F(u, v, t) = C v + K u - f_ext(t);
-//   - the constraint (contact) forces f_c(u) at the end of the step, which the schemes do
-//     not weight (a constraint holds at t_{n+1}), with the residual of the constraint
-//     equations when the operator carries extra unknowns (Lagrange multipliers);
+//   - the constraint (contact) and link forces f_c(u, v) at the end of the step, which the
+//     schemes do not weight (a constraint holds at t_{n+1}), with the residual of the
+//     constraint equations when the operator carries extra unknowns (Lagrange multipliers);
 //   - Newton corrections with the effective matrix W = c_a M + c_v C + c_d K (+ the
 //     constraint block), which the operator may factor once per key (c_a, c_v, c_d, status);
 //   - a fixed point on the constraint status (active set) after each converged Newton solve.
@@ -46,11 +46,13 @@ class SecondOrderOperator {
   virtual void applyMass(const Vector& a, Vector& out) = 0;
   // out = C v + K u - f_ext(t)
   virtual void applyForces(const Vector& u, const Vector& v, double t, Vector& out) = 0;
-  // out += f_c(u) with the current extra unknowns and frozen status; returns the norm of
-  // the constraint equations' residual in force units (0 when there are none).
-  virtual double addConstraintForces(const Vector& u, Vector& out) = 0;
+  // out += f_c(u, v) with the current extra unknowns and frozen status (v: the velocity that
+  // goes with u, for dashpots); returns the norm of the constraint equations' residual in
+  // force units (0 when there are none).
+  virtual double addConstraintForces(const Vector& u, const Vector& v, Vector& out) = 0;
   // Solves [W + constraint block] (du, dz) = -(r, r_z) and updates the operator's own extra
-  // unknowns z by dz; du is returned. r is the full residual (with constraint forces).
+  // unknowns z by dz; du is returned. r is the full residual (with constraint forces). The
+  // velocity follows u with dv/du = cv / cd.
   virtual CorrectionStatus solveCorrection(const EffectiveCoefficients& c, const Vector& u,
                                            const Vector& r, Vector& du) = 0;
   // Initial acceleration from equilibrium: solves M a = -r (r = F(u0, v0, t0) + f_c(u0)); by
@@ -61,9 +63,9 @@ class SecondOrderOperator {
     mass.ca = 1.0;
     return solveCorrection(mass, u, r, a);
   }
-  // Before the step to time t from the accepted state u (and before the initial state, with
-  // t the start time): constraints that follow the motion are updated.
-  virtual void beginStep(const Vector& /*u*/, double /*t*/) {}
+  // Before the step of length dt to time t from the accepted state u (and before the initial
+  // state, with t the start time and dt = 0): constraints that follow the motion are updated.
+  virtual void beginStep(const Vector& /*u*/, double /*t*/, double /*dt*/) {}
   // Re-evaluates the constraint status at u (after a converged Newton solve).
   virtual ConstraintUpdate updateConstraints(const Vector& u) = 0;
   // Initial status from u (before the first step).

@@ -28,7 +28,7 @@ NewtonOutcome TransientDriver::attempt(double t, double dt) {
   const double beta = scheme_.beta(), gamma = scheme_.gamma();
   const double af = scheme_.alphaF(), am = scheme_.alphaM();
   const double t1 = t + dt;
-  op_.beginStep(*u0_, t1);
+  op_.beginStep(*u0_, t1, dt);
   // Predictors: u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n, v~ = v_n + dt (1 - gamma) a_n.
   uTilde_->update(1.0, *u0_, dt, *v0_, 0.0);
   uTilde_->update(dt * dt * (0.5 - beta), *a0_, 1.0);
@@ -46,7 +46,7 @@ NewtonOutcome TransientDriver::attempt(double t, double dt) {
     op_.applyForces(u, *v1_, t1, *forces_);
     forces_->update(af, *F0_, 1 - af);
     fc_->putScalar(0.0);
-    const double cons = op_.addConstraintForces(u, *fc_);
+    const double cons = op_.addConstraintForces(u, *v1_, *fc_);
     ResidualNorms n;
     n.reference = std::max({inertia_->norm2(), forces_->norm2(), fc_->norm2()});
     r.update(1.0, *inertia_, 1.0, *forces_, 0.0);
@@ -71,12 +71,12 @@ NewtonOutcome TransientDriver::attempt(double t, double dt) {
 void TransientDriver::initialState(TransientSummary& sum) {
   // Initial acceleration from equilibrium: M a0 = -(F(u0, v0, t0) + f_c(u0)).
   const double t0 = s_.startTime;
-  op_.beginStep(*u0_, t0);
+  op_.beginStep(*u0_, t0, 0.0);
   op_.initializeConstraints(*u0_);
   Vector r(op_.map());
   op_.applyForces(*u0_, *v0_, t0, r);
   fc_->putScalar(0.0);
-  op_.addConstraintForces(*u0_, *fc_);
+  op_.addConstraintForces(*u0_, *v0_, *fc_);
   r.update(1.0, *fc_, 1.0);
   const CorrectionStatus cs = op_.solveInitialAcceleration(*u0_, r, *a0_);
   if (cs.refactored) ++sum.refactorizations;

@@ -31,7 +31,7 @@ class Oscillator : public SecondOrderOperator {
   void applyForces(const Vector& u, const Vector& v, double, Vector& out) override {
     set(out, c_ * get(v) + k_ * get(u));
   }
-  double addConstraintForces(const Vector&, Vector&) override { return 0.0; }
+  double addConstraintForces(const Vector&, const Vector&, Vector&) override { return 0.0; }
   CorrectionStatus solveCorrection(const EffectiveCoefficients& c, const Vector&, const Vector& r,
                                    Vector& du) override {
     set(du, -get(r) / (c.ca * m_ + c.cv * c_ + c.cd * k_));
