@@ -40,3 +40,10 @@ add_test(NAME cli.sdnl32_modal_equals_direct
          COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tools/modal_direct_study.py --check
                  --build ${CMAKE_BINARY_DIR} --out ${CMAKE_CURRENT_BINARY_DIR}/work/sdnl32_modal_direct)
 set_tests_properties(cli.sdnl32_modal_equals_direct PROPERTIES TIMEOUT 300 LABELS cli)
+
+# Shock links in the direct transient (issue 16): the same spring as a contact pair, a circle
+# equal to the planes on a 1D motion, and a ring against the modal transient on all modes.
+add_test(NAME cli.direct_links
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/direct_links.py
+                 $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/direct_links)
+set_tests_properties(cli.direct_links PROPERTIES TIMEOUT 300 LABELS cli)

@@ -245,3 +245,6 @@ choc_cli_reference_error(contact_node_set_with_master bad_contact_node_set_maste
   "parameter 'Analyses/impact/Contact/Pairs/interface/Slave Node Set' = 'FACE_POU2': a slave node set has no faces to pair with a master side set. give an 'Obstacle', or a 'Slave Side Set'")
 choc_cli_reference_error(contact_node_set_missing bad_contact_node_set_missing.xml
   "parameter 'Analyses/impact/Contact/Pairs/interface/Slave Node Set' = 'TIP': no node set of that name in the mesh. node sets: POU1, POU2, N1, A, B, C, D, CL_POU2, FACE_POU1, FACE_POU2")
+# A shock link of a direct transient with the modal transient's rigid law (issue 16).
+choc_cli_reference_error(link_rigid_direct bad_link_rigid_direct.xml
+  "parameter 'Analyses/impact/Shock Links/shock/Normal Law' = 'rigid': is the modal transient's forward-increment constraint, not available in a direct transient. use 'penalty' with a stiffness, or a contact pair with the Lagrange method")
