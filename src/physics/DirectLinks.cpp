@@ -49,6 +49,7 @@ DirectLinks::DirectLinks(std::vector<ShockLink> links, const Model& model, RCP<c
   w_.assign(links_.size(), Vec3{0, 0, 0});
   dPrev_.assign(links_.size(), Vec3{0, 0, 0});
   fdPrev_.assign(links_.size(), Vec3{0, 0, 0});
+  jacobian_.assign(links_.size(), std::array<double, 9>{});
   trial_.assign(links_.size(), ShockResponse{});
   length_ = meshExtent(model);
 }
@@ -129,22 +130,32 @@ std::vector<char> DirectLinks::tangentKey() const {
   return key;
 }
 
-std::vector<MatrixEntry> DirectLinks::tangent(double velocityFactor) const {
+std::vector<MatrixEntry> DirectLinks::tangent(double velocityFactor) {
+  std::vector<char> key = tangentKey();
+  const char* f = reinterpret_cast<const char*>(&velocityFactor);
+  key.insert(key.end(), f, f + sizeof velocityFactor);
+  if (key != jacobianKey_) {
+    jacobianKey_ = key;
+    for (size_t i = 0; i < links_.size(); ++i) {
+      std::array<double, 9>& J = jacobian_[i];
+      J.fill(0.0);
+      if (!(trial_[i].normalForce > 0.0)) continue;  // no force here: none nearby on this side
+      const ShockLink& l = links_[i];
+      const double scale = std::max({std::sqrt(dot(d_[i], d_[i])), l.law.dist1 + l.law.dist2, 1e-3 * length_});
+      const double h = 1e-8 * std::max(scale, 1e-300);
+      // J[r][c] = d(force on node 2)_r / d(d)_c along u, with w moving by velocityFactor.
+      for (int c = 0; c < 3; ++c) {
+        Vec3 dp = d_[i], dm = d_[i], wp = w_[i], wm = w_[i];
+        dp[c] += h, dm[c] -= h;
+        wp[c] += velocityFactor * h, wm[c] -= velocityFactor * h;
+        const Vec3 fp = force(i, dp, wp), fm = force(i, dm, wm);
+        for (int r = 0; r < 3; ++r) J[3 * r + c] = (fp[r] - fm[r]) / (2 * h);
+      }
+    }
+  }
   std::vector<MatrixEntry> entries;
   for (size_t i = 0; i < links_.size(); ++i) {
-    if (!(trial_[i].normalForce > 0.0)) continue;  // no force here: none nearby on this side
-    const ShockLink& l = links_[i];
-    const double scale = std::max({std::sqrt(dot(d_[i], d_[i])), l.law.dist1 + l.law.dist2, 1e-3 * length_});
-    const double h = 1e-8 * std::max(scale, 1e-300);
-    // J[r][c] = d(force on node 2)_r / d(d)_c along u, with w moving by velocityFactor.
-    double J[3][3];
-    for (int c = 0; c < 3; ++c) {
-      Vec3 dp = d_[i], dm = d_[i], wp = w_[i], wm = w_[i];
-      dp[c] += h, dm[c] -= h;
-      wp[c] += velocityFactor * h, wm[c] -= velocityFactor * h;
-      const Vec3 fp = force(i, dp, wp), fm = force(i, dm, wm);
-      for (int r = 0; r < 3; ++r) J[r][c] = (fp[r] - fm[r]) / (2 * h);
-    }
+    const std::array<double, 9>& J = jacobian_[i];
     // Residual R_a = -s_a F2 with s = -1 on node 1, +1 on node 2; d moves by s_b du_b.
     for (int a = 0; a < 2; ++a)
       for (int r = 0; r < 3; ++r) {
@@ -153,9 +164,8 @@ std::vector<MatrixEntry> DirectLinks::tangent(double velocityFactor) const {
         for (int b = 0; b < 2; ++b)
           for (int c = 0; c < 3; ++c) {
             const GO col = dofs_[i][3 * b + c];
-            if (col < 0 || J[r][c] == 0.0) continue;
-            const double sign = (a == b) ? -1.0 : 1.0;
-            entries.push_back({row, col, sign * J[r][c]});
+            if (col < 0 || J[3 * r + c] == 0.0) continue;
+            entries.push_back({row, col, (a == b ? -1.0 : 1.0) * J[3 * r + c]});
           }
       }
   }
@@ -193,6 +203,11 @@ void DirectLinks::archive(StateArchive& a) const {
   for (size_t i = 0; i < links_.size(); ++i)
     for (int c = 0; c < 3; ++c) x.push_back(dPrev_[i][c]), x.push_back(fdPrev_[i][c]);
   a.putVector("links/direct", x);
+  std::vector<double> j;
+  for (const auto& J : jacobian_) j.insert(j.end(), J.begin(), J.end());
+  a.putVector("links/jacobian", j);
+  a.putVector("links/jacobianKey", jacobianKey_);
+  a.putInt("links/step", step_);
 }
 
 void DirectLinks::unarchive(const StateArchive& a) {
@@ -200,6 +215,10 @@ void DirectLinks::unarchive(const StateArchive& a) {
   const std::vector<double> x = a.getVector<double>("links/direct", 6 * links_.size());
   for (size_t i = 0; i < links_.size(); ++i)
     for (int c = 0; c < 3; ++c) dPrev_[i][c] = x[6 * i + 2 * c], fdPrev_[i][c] = x[6 * i + 2 * c + 1];
+  const std::vector<double> j = a.getVector<double>("links/jacobian", 9 * links_.size());
+  for (size_t i = 0; i < links_.size(); ++i) std::copy(j.begin() + 9 * i, j.begin() + 9 * i + 9, jacobian_[i].begin());
+  jacobianKey_ = a.getVector<char>("links/jacobianKey");
+  step_ = a.getInt("links/step");
   pending_ = false;
 }
 

@@ -34,8 +34,10 @@ class DirectLinks : public ShockLinkSet {
   // evaluation, and the step for a curved shape in contact (its normal turns) or a sliding
   // link. The tangent is recomputed when it changes.
   std::vector<char> tangentKey() const;
-  // d(residual)/du at the last evaluation, with dv/du = velocityFactor, on rows this rank owns.
-  std::vector<MatrixEntry> tangent(double velocityFactor) const;
+  // d(residual)/du with dv/du = velocityFactor, on rows this rank owns: evaluated at the last
+  // evaluation when the key or the factor changed, else the one evaluated then (so that a
+  // restarted run factors the very matrix the uninterrupted run had).
+  std::vector<MatrixEntry> tangent(double velocityFactor);
   // The step is accepted: the state at the last evaluation becomes the links' state.
   void commit();
   void archive(StateArchive& a) const;
@@ -52,6 +54,9 @@ class DirectLinks : public ShockLinkSet {
   std::vector<Vec3> d_, w_;    // relative position and velocity at the last evaluation
   std::vector<ShockResponse> trial_;
   std::vector<Vec3> dPrev_, fdPrev_;  // at the last accepted state: d and the dampers' force
+  // Per link: d(force on node 2)/d(d) along u (row-major 3 x 3), and the key it was taken at.
+  std::vector<std::array<double, 9>> jacobian_;
+  std::vector<char> jacobianKey_;
 };
 
 }  // namespace choc
