@@ -278,6 +278,10 @@ void ImplicitTransient::logFigures(const TransientSummary& sum, const Model& mod
                   sum.steps, sum.newtonIterations, double(sum.newtonIterations) / std::max(1, sum.steps),
                   sum.maxNewtonPerStep, sum.activeSetIterations, f.refactorizations, sum.failedSteps,
                   sum.smallestStep);
+  if (b_->links && b_->links->dashpotDrops() > 0)
+    log() << format("  shock links: a dashpot was dropped in %lld step(s): closing while approaching, the "
+                    "law's force jumps and the step had no solution with it\n",
+                    b_->links->dashpotDrops());
   if (sum.krylovIterations > 0)
     log() << format("  Krylov iterations: %d (%.1f per step, %.1f per Newton solve)\n",
                     sum.krylovIterations, double(sum.krylovIterations) / std::max(1, sum.steps),

@@ -50,6 +50,8 @@ DirectLinks::DirectLinks(std::vector<ShockLink> links, const Model& model, RCP<c
   dPrev_.assign(links_.size(), Vec3{0, 0, 0});
   fdPrev_.assign(links_.size(), Vec3{0, 0, 0});
   jacobian_.assign(links_.size(), std::array<double, 9>{});
+  switches_.assign(links_.size(), 0);
+  dashpotOff_.assign(links_.size(), 0);
   trial_.assign(links_.size(), ShockResponse{});
   length_ = meshExtent(model);
 }
@@ -68,11 +70,19 @@ std::vector<std::vector<GO>> DirectLinks::couplings() const {
 void DirectLinks::beginStep(double dt) {
   dt_ = dt;
   ++step_;
+  std::fill(switches_.begin(), switches_.end(), 0);
+  std::fill(dashpotOff_.begin(), dashpotOff_.end(), 0);
+}
+
+ShockLawParameters DirectLinks::lawOfStep(size_t i) const {
+  ShockLawParameters p = links_[i].law;
+  if (dashpotOff_[i]) p.normalDamping = 0.0;
+  return p;
 }
 
 Vec3 DirectLinks::force(size_t i, const Vec3& d, const Vec3& w) const {
   ShockLawState s = links_[i].state;
-  return evaluateShock(links_[i].law, d, w, dt_, s, false).forceOnNode2;
+  return evaluateShock(lawOfStep(i), d, w, dt_, s, false).forceOnNode2;
 }
 
 void DirectLinks::addForces(const Vector& u, const Vector& v, Vector& out) {
@@ -103,7 +113,18 @@ void DirectLinks::addForces(const Vector& u, const Vector& v, Vector& out) {
       w_[i][c] = x[9 + c] - x[6 + c];
     }
     ShockLawState s = l.state;
-    trial_[i] = evaluateShock(l.law, d_[i], w_[i], dt_, s, false);
+    const bool wasPressing = trial_[i].normalForce > 0.0;
+    trial_[i] = evaluateShock(lawOfStep(i), d_[i], w_[i], dt_, s, false);
+    // A dashpot makes the force jump where the link closes while approaching: the step may
+    // have no solution there, and Newton alternates between open and pressing. After three
+    // switches of the status in one step the step goes on without the dashpot (a continuous law).
+    if (wasPressing != (trial_[i].normalForce > 0.0) && ++switches_[i] >= 3 && !dashpotOff_[i] &&
+        l.law.normalDamping > 0.0) {
+      dashpotOff_[i] = 1;
+      ++dashpotDrops_;
+      s = l.state;
+      trial_[i] = evaluateShock(lawOfStep(i), d_[i], w_[i], dt_, s, false);
+    }
     for (int k = 0; k < 6; ++k) {
       if (dofs_[i][k] < 0) continue;
       const LO r = map_->getLocalElement(dofs_[i][k]);
@@ -180,7 +201,7 @@ void DirectLinks::commit() {
   if (!pending_) return;
   for (size_t i = 0; i < links_.size(); ++i) {
     ShockLink& l = links_[i];
-    l.last = evaluateShock(l.law, d_[i], w_[i], dt_, l.state, true);
+    l.last = evaluateShock(lawOfStep(i), d_[i], w_[i], dt_, l.state, true);
     recordKinematics(i, d_[i], w_[i]);
     ShockLawParameters elastic = l.law;
     elastic.normalDamping = elastic.tangentialDamping = 0.0;
@@ -208,6 +229,7 @@ void DirectLinks::archive(StateArchive& a) const {
   a.putVector("links/jacobian", j);
   a.putVector("links/jacobianKey", jacobianKey_);
   a.putInt("links/step", step_);
+  a.putInt("links/dashpotDrops", dashpotDrops_);
 }
 
 void DirectLinks::unarchive(const StateArchive& a) {
@@ -219,6 +241,8 @@ void DirectLinks::unarchive(const StateArchive& a) {
   for (size_t i = 0; i < links_.size(); ++i) std::copy(j.begin() + 9 * i, j.begin() + 9 * i + 9, jacobian_[i].begin());
   jacobianKey_ = a.getVector<char>("links/jacobianKey");
   step_ = a.getInt("links/step");
+  dashpotDrops_ = a.getInt("links/dashpotDrops");
+  for (size_t i = 0; i < links_.size(); ++i) trial_[i] = links_[i].last;  // as after a commit
   pending_ = false;
 }
 

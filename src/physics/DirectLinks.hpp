@@ -7,6 +7,10 @@
 // matrix: d(force)/du + (dv/du) d(force)/dv, by central differences of the law (the same
 // code for every shape, dashpot and friction).
 // The tangential state (elastic spring, slip) advances only when a step is accepted.
+// A dashpot makes the force jump where a link closes while approaching (F = Cn |delta'| at
+// delta = 0-, 0 at 0+): a step can then have no solution, Newton alternating between open and
+// pressing; after three switches in a step the link goes on without its dashpot for that step, a
+// continuous law that has one (counted, and reported in the log).
 // The rigid normal law is the modal transient's: here it is refused (use a contact pair with
 // the Lagrange method for a rigid stop in a direct transient).
 #include <array>
@@ -41,10 +45,13 @@ class DirectLinks : public ShockLinkSet {
   // The step is accepted: the state at the last evaluation becomes the links' state.
   void commit();
   void archive(StateArchive& a) const;
+  // Steps in which a link went on without its dashpot (see addForces), over the run.
+  long long dashpotDrops() const { return dashpotDrops_; }
   void unarchive(const StateArchive& a);
 
  private:
   Vec3 force(size_t i, const Vec3& d, const Vec3& w) const;  // on node 2, state not advanced
+  ShockLawParameters lawOfStep(size_t i) const;  // the law, without the dashpot if dropped
   RCP<const Map> map_;
   std::vector<std::array<GO, 6>> dofs_;  // DX DY DZ of node 1, then of node 2 (-1: none)
   double length_ = 0.0;  // the mesh's extent: the scale of the difference steps
@@ -57,6 +64,9 @@ class DirectLinks : public ShockLinkSet {
   // Per link: d(force on node 2)/d(d) along u (row-major 3 x 3), and the key it was taken at.
   std::vector<std::array<double, 9>> jacobian_;
   std::vector<char> jacobianKey_;
+  std::vector<int> switches_;     // per link: pressing <-> not pressing in this step's Newton
+  std::vector<char> dashpotOff_;  // per link: the dashpot is dropped for this step
+  long long dashpotDrops_ = 0;
 };
 
 }  // namespace choc

@@ -15,6 +15,8 @@
      to 4 times the direct run's own error against itself at dt/2 (measured here: 1.3e-5 of
      the peak of DY; the two runs' time errors, first order at the impacts, with a margin of 2;
      measured 2.4e-5). The tip must hit both sides.
+  5. SDNL111 A at dt = 2e-6 s, where a step has no solution with the dashpot (its force jumps
+     at closure): solved without it for that step, said in the log, the check still passes.
 usage: direct_links.py CHOC SOURCE_DIR WORK_DIR"""
 import os
 import re
@@ -174,6 +176,16 @@ if closed < 2 or gaps.max() < 0.002 or gaps.min() > -0.002:
     failures.append("ring: the tip must hit both sides of the ring")
 compare("ring: direct vs modal (31 modes)", d1, m, [("N11:DY", "N11:DY")], 4 * self_err,
         analysis_b="run1", interpolate=True)
+
+# 5. SDNL111 A at dt = 2e-6 s: at the first steps the link closes while approaching and its
+#    dashpot's jump leaves a step without solution; the step is solved without the dashpot, the
+#    log says so, and the run keeps the input's check against d'Alembert.
+out, log = run(at_dt(deck("sdnl111a_direct.xml"), 2e-6), "sdnl111a_dt2e-6")
+drop = re.search(r"a dashpot was dropped in (\d+) step", log)
+print(f"SDNL111 A at dt = 2e-6 s: dashpot dropped in {drop.group(1) if drop else 0} step(s); "
+      f"{'checks pass' if ' 0 NOOK' in log else 'a check failed'}")
+if not drop or " 0 NOOK" not in log:
+    failures.append("SDNL111 A at dt = 2e-6 s: expected a dropped dashpot and the check passed")
 
 if failures:
     print("FAIL:\n  " + "\n  ".join(failures))
