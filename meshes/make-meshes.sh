@@ -30,3 +30,5 @@ gmsh -2 -order 2 -format msh41 "$here/hertz_hemisphere.geo" -o "$here/hertz_hemi
 gmsh -1 -format msh41 "$here/sdnd101.geo" -o "$here/sdnd101.msh" > /dev/null
 # SDNL32 (issue 16): the articulated beam, the deck's 11 nodes.
 gmsh -1 -format msh41 "$here/sdnl32.geo" -o "$here/sdnl32.msh" > /dev/null
+# SDND100 (issue 15): the oscillator with friction, one beam across the motion for the spring and mass.
+gmsh -1 -format msh41 "$here/sdnd100.geo" -o "$here/sdnd100.msh" > /dev/null

@@ -25,6 +25,70 @@ namespace {
 Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
 Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+
+// Elastic-plastic: the spring extension advanced by w_t dt, returned onto the cone.
+Vec3 returnMappedFriction(const ShockLawParameters& p, const ShockLawState& state, double dt,
+                          const Vec3& m, const Vec3& wt, double normalForce, ShockLawState& next,
+                          ShockResponse& r) {
+  Vec3 spring = state.closed ? state.tangentialSpring : Vec3{0, 0, 0};
+  spring = plus(spring, scaled(wt, dt));
+  spring = minus(spring, scaled(m, dot(spring, m)));  // stays in the contact plane
+  Vec3 ft = scaled(plus(scaled(spring, p.tangentialStiffness), scaled(wt, p.tangentialDamping)), -1.0);
+  const double ftn = norm(ft);
+  const double limit = p.friction * normalForce;
+  if (p.friction > 0 && ftn > limit) {
+    // Slip: the force sits on the Coulomb cone, the spring keeps the elastic part.
+    ft = scaled(ft, limit / ftn);
+    r.sliding = true;
+    if (p.tangentialStiffness > 0)
+      spring = scaled(plus(ft, scaled(wt, p.tangentialDamping)), -1.0 / p.tangentialStiffness);
+  }
+  r.tangentialEnergy = 0.5 * p.tangentialStiffness * dot(spring, spring);
+  next.tangentialSpring = spring;
+  return ft;
+}
+
+// Velocity reversal (code_aster's DIS_CHOC): see the header.
+Vec3 reversalFriction(const ShockLawParameters& p, const ShockLawState& state, const Vec3& d,
+                      const Vec3& m, const Vec3& wt, double normalForce, ShockLawState& next,
+                      ShockResponse& r) {
+  const double speed = norm(wt), limit = p.friction * normalForce;
+  // Just closed: no slip recorded yet; the link slides if it moves.
+  const bool wasSliding = state.closed ? state.sliding : true;
+  const Vec3 slipForce = state.closed ? state.slipForce : Vec3{0, 0, 0};
+  const Vec3 slipPosition = state.closed ? state.slipPosition : d;
+  const Vec3 lastVelocity = state.closed ? state.tangentialVelocity : Vec3{0, 0, 0};
+  const double kSpeed = 1e-6;  // m/s: below it a sliding link sticks
+  Vec3 ft{0, 0, 0};
+  if (wasSliding && dot(wt, lastVelocity) >= 0.0 && speed > kSpeed && p.friction > 0) {
+    ft = scaled(wt, -limit / speed);
+    next.sliding = true;
+    next.slipForce = ft;
+    next.slipPosition = d;
+  } else {
+    Vec3 moved = minus(d, slipPosition);
+    moved = minus(moved, scaled(m, dot(moved, m)));  // in the contact plane
+    ft = minus(slipForce, plus(scaled(moved, p.tangentialStiffness), scaled(wt, p.tangentialDamping)));
+    next.sliding = false;
+    next.slipForce = slipForce;
+    next.slipPosition = slipPosition;
+    if (p.friction > 0 && norm(ft) > limit) {
+      ft = speed > 0 ? scaled(wt, -limit / speed) : Vec3{0, 0, 0};
+      next.sliding = true;
+      next.slipForce = ft;
+      next.slipPosition = d;
+    }
+  }
+  r.sliding = next.sliding;
+  next.tangentialVelocity = wt;
+  // The elastic part of a sticking link's force (its spring's energy, |Ft|^2 / 2 Kt).
+  if (!next.sliding && p.tangentialStiffness > 0) {
+    const Vec3 fe = minus(ft, scaled(wt, -p.tangentialDamping));
+    r.tangentialEnergy = 0.5 * dot(fe, fe) / p.tangentialStiffness;
+  }
+  return ft;
+}
+
 }  // namespace
 
 ShockGeometry shockGeometry(const ShockLawParameters& p, const Vec3& d) {
@@ -77,29 +141,22 @@ ShockResponse evaluateShock(const ShockLawParameters& p, const Vec3& d, const Ve
   if (!r.closed) {
     next.tangentialSpring = {0, 0, 0};
     next.closed = false;
+    next.sliding = false;
+    next.slipForce = {0, 0, 0};
   } else {
     r.normalForce = std::max(0.0, -p.normalStiffness * r.gap - p.normalDamping * gapRate);
     Vec3 force = scaled(m, r.normalForce);
     r.springEnergy = 0.5 * p.normalStiffness * r.gap * r.gap;
-    if (p.tangentialStiffness > 0 || p.tangentialDamping > 0) {
+    if (p.tangential()) {
       const Vec3 wt = minus(w, scaled(m, gapRate));  // tangential relative velocity
-      Vec3 spring = state.closed ? state.tangentialSpring : Vec3{0, 0, 0};
-      spring = plus(spring, scaled(wt, dt));
-      spring = minus(spring, scaled(m, dot(spring, m)));  // stays in the contact plane
-      Vec3 ft = scaled(plus(scaled(spring, p.tangentialStiffness), scaled(wt, p.tangentialDamping)), -1.0);
-      const double ftn = norm(ft);
-      const double limit = p.friction * r.normalForce;
-      if (p.friction > 0 && ftn > limit) {
-        // Slip: the force sits on the Coulomb cone, the spring keeps the elastic part.
-        ft = scaled(ft, limit / ftn);
-        r.sliding = true;
-        if (p.tangentialStiffness > 0)
-          spring = scaled(plus(ft, scaled(wt, p.tangentialDamping)), -1.0 / p.tangentialStiffness);
-      }
+      r.slipSpeed = norm(wt);
+      Vec3 ft = p.frictionLaw == FrictionLaw::VelocityReversal
+                    ? reversalFriction(p, state, d, m, wt, r.normalForce, next, r)
+                    : returnMappedFriction(p, state, dt, m, wt, r.normalForce, next, r);
       r.tangentialForce = norm(ft);
+      r.tangentialForceVector = ft;
       force = plus(force, ft);
-      r.springEnergy += 0.5 * p.tangentialStiffness * dot(spring, spring);
-      next.tangentialSpring = spring;
+      r.springEnergy += r.tangentialEnergy;
     }
     next.closed = true;
     r.forceOnNode2 = force;

@@ -3,7 +3,16 @@
 // coordinates), w = v2 - v1 their relative velocity. The normal force is
 //   F = max(0, -Kn delta - Cn d(delta)/dt)  while delta <= 0  (never tensile),
 // along the shape's normal; tangential stiffness Kt, damping Ct and Coulomb friction mu act
-// in the contact plane while the link is closed (elastic stick, slip at mu F).
+// in the contact plane while the link is closed, by one of two friction laws:
+//   elastic-plastic: an elastic tangential spring (its extension advanced by the tangential
+//     relative velocity times dt) returned onto the Coulomb cone |Ft| <= mu F when it exceeds
+//     it (slip); the stick stiffness unloads over 2 mu F / Kt at each reversal of the slip.
+//   velocity reversal (code_aster's DIS_CHOC, the reference decks): while sliding the force is
+//     -mu F along the tangential velocity; the link sticks when that velocity reverses (or
+//     falls below 1e-6 m/s), from the last slip force, Ft = Ft_slip - Kt (d_t - d_t,slip) -
+//     Ct w_t, and slides again (along the velocity) as soon as |Ft| > mu F. A reversal whose
+//     step still moved the old way slides on at once: the stick stiffness then hardly acts and
+//     the law is close to rigid-plastic Coulomb.
 // Shapes (gaps):
 //   BI_PLAN_Y / BI_PLAN_Z: two planes normal to e2 / e3: delta = |d.e| - DIST_1 - DIST_2
 //   BI_CERCLE: two circles in the plane orthogonal to e1: delta = r - DIST_1 - DIST_2
@@ -25,6 +34,7 @@
 namespace choc {
 
 enum class ObstacleShape { BiPlanY, BiPlanZ, BiCercle, BiCercInt, PlanY, PlanZ };
+enum class FrictionLaw { ElasticPlastic, VelocityReversal };
 
 ObstacleShape parseObstacleShape(const std::string& name);  // std::invalid_argument if unknown
 const std::vector<std::string>& obstacleShapeNames();
@@ -36,12 +46,18 @@ struct ShockLawParameters {
   double dist1 = 0.0, dist2 = 0.0;
   double normalStiffness = 0.0, normalDamping = 0.0;
   double tangentialStiffness = 0.0, tangentialDamping = 0.0, friction = 0.0;
+  FrictionLaw frictionLaw = FrictionLaw::ElasticPlastic;
+  bool tangential() const { return tangentialStiffness > 0 || tangentialDamping > 0 || friction > 0; }
 };
 
-// State carried between steps: elastic tangential displacement while closed.
+// State carried between steps: elastic tangential displacement while closed (elastic-plastic);
+// the last slip's force, relative position and the last tangential velocity (velocity
+// reversal).
 struct ShockLawState {
   Vec3 tangentialSpring{0.0, 0.0, 0.0};
   bool closed = false;
+  bool sliding = false;
+  Vec3 slipForce{0.0, 0.0, 0.0}, slipPosition{0.0, 0.0, 0.0}, tangentialVelocity{0.0, 0.0, 0.0};
 };
 
 struct ShockResponse {
@@ -51,7 +67,10 @@ struct ShockResponse {
   double tangentialForce = 0.0;      // |Ft|
   bool closed = false;               // delta <= 0
   bool sliding = false;
-  double springEnergy = 0.0;         // 1/2 Kn delta^2 + 1/2 Kt |w_t|^2 while closed
+  double springEnergy = 0.0;         // 1/2 Kn delta^2 + the tangential spring's, while closed
+  double tangentialEnergy = 0.0;     // the tangential spring's part of springEnergy
+  Vec3 tangentialForceVector{0.0, 0.0, 0.0};  // on node 2
+  double slipSpeed = 0.0;            // |w_t| while closed
 };
 
 // Gap delta and outward unit normal m (the direction along which a positive force pushes

@@ -49,6 +49,7 @@ DirectLinks::DirectLinks(std::vector<ShockLink> links, const Model& model, RCP<c
   w_.assign(links_.size(), Vec3{0, 0, 0});
   dPrev_.assign(links_.size(), Vec3{0, 0, 0});
   fdPrev_.assign(links_.size(), Vec3{0, 0, 0});
+  ftPrev_.assign(links_.size(), Vec3{0, 0, 0});
   jacobian_.assign(links_.size(), std::array<double, 9>{});
   switches_.assign(links_.size(), 0);
   dashpotOff_.assign(links_.size(), 0);
@@ -210,8 +211,14 @@ void DirectLinks::commit() {
     const Vec3 fd{l.last.forceOnNode2[0] - fe[0], l.last.forceOnNode2[1] - fe[1],
                   l.last.forceOnNode2[2] - fe[2]};
     const Vec3 step{d_[i][0] - dPrev_[i][0], d_[i][1] - dPrev_[i][1], d_[i][2] - dPrev_[i][2]};
-    if (dt_ > 0.0)
+    // The elastic law's tangential force (stick spring or friction), its work the same way.
+    const Vec3 m = shockGeometry(l.law, d_[i]).normal;
+    const Vec3 ft{fe[0] - dot(fe, m) * m[0], fe[1] - dot(fe, m) * m[1], fe[2] - dot(fe, m) * m[2]};
+    if (dt_ > 0.0) {
       dissipated_ -= 0.5 * (dot(fd, step) + dot(fdPrev_[i], step));
+      if (l.law.tangential()) addTangentialWork(i, -0.5 * (dot(ft, step) + dot(ftPrev_[i], step)));
+    }
+    ftPrev_[i] = ft;
     fdPrev_[i] = fd;
     dPrev_[i] = d_[i];
   }
@@ -222,7 +229,7 @@ void DirectLinks::archive(StateArchive& a) const {
   archiveLinks(a);
   std::vector<double> x;
   for (size_t i = 0; i < links_.size(); ++i)
-    for (int c = 0; c < 3; ++c) x.push_back(dPrev_[i][c]), x.push_back(fdPrev_[i][c]);
+    for (int c = 0; c < 3; ++c) x.push_back(dPrev_[i][c]), x.push_back(fdPrev_[i][c]), x.push_back(ftPrev_[i][c]);
   a.putVector("links/direct", x);
   std::vector<double> j;
   for (const auto& J : jacobian_) j.insert(j.end(), J.begin(), J.end());
@@ -234,9 +241,10 @@ void DirectLinks::archive(StateArchive& a) const {
 
 void DirectLinks::unarchive(const StateArchive& a) {
   unarchiveLinks(a);
-  const std::vector<double> x = a.getVector<double>("links/direct", 6 * links_.size());
+  const std::vector<double> x = a.getVector<double>("links/direct", 9 * links_.size());
   for (size_t i = 0; i < links_.size(); ++i)
-    for (int c = 0; c < 3; ++c) dPrev_[i][c] = x[6 * i + 2 * c], fdPrev_[i][c] = x[6 * i + 2 * c + 1];
+    for (int c = 0; c < 3; ++c)
+      dPrev_[i][c] = x[9 * i + 3 * c], fdPrev_[i][c] = x[9 * i + 3 * c + 1], ftPrev_[i][c] = x[9 * i + 3 * c + 2];
   const std::vector<double> j = a.getVector<double>("links/jacobian", 9 * links_.size());
   for (size_t i = 0; i < links_.size(); ++i) std::copy(j.begin() + 9 * i, j.begin() + 9 * i + 9, jacobian_[i].begin());
   jacobianKey_ = a.getVector<char>("links/jacobianKey");

@@ -60,7 +60,8 @@ class DirectLinks : public ShockLinkSet {
   bool pending_ = false;       // evaluated since the last commit
   std::vector<Vec3> d_, w_;    // relative position and velocity at the last evaluation
   std::vector<ShockResponse> trial_;
-  std::vector<Vec3> dPrev_, fdPrev_;  // at the last accepted state: d and the dampers' force
+  // At the last accepted state: d, the dampers' force and the elastic law's tangential force.
+  std::vector<Vec3> dPrev_, fdPrev_, ftPrev_;
   // Per link: d(force on node 2)/d(d) along u (row-major 3 x 3), and the key it was taken at.
   std::vector<std::array<double, 9>> jacobian_;
   std::vector<char> jacobianKey_;

@@ -61,6 +61,7 @@ void ModalLinks::evaluate(double, const std::vector<double>& q, const std::vecto
       for (int k = 0; k < modes_; ++k) f[k] += (p2[k] - p1[k]) * F;
     }
     accumulateDissipation(i, wasClosed, w, dt);
+    if (l.law.tangential()) accumulateTangentialPower(i, w, dt);
   }
 }
 
@@ -157,7 +158,7 @@ double ModalLinks::linkOmega2Bound() const {
       }
       flex += dk2;
     }
-    s += l.law.normalStiffness * flex;
+    s += std::max(l.law.normalStiffness, l.law.tangentialStiffness) * flex;  // normal or tangential
   }
   return s;
 }
@@ -175,7 +176,8 @@ double ModalLinks::linkDampingRatioBound() const {
       }
     // Effective mass m = 1/flex; xi = C / (2 sqrt(K m)).
     if (flex > 0 && l.law.normalStiffness > 0)
-      xi = std::max(xi, l.law.normalDamping / (2.0 * std::sqrt(l.law.normalStiffness / flex)));
+      xi = std::max(xi, std::max(l.law.normalDamping, l.law.tangentialDamping) /
+                            (2.0 * std::sqrt(std::max(l.law.normalStiffness, l.law.tangentialStiffness) / flex)));
   }
   return xi;
 }

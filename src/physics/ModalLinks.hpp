@@ -26,7 +26,8 @@ class ModalLinks : public ModalForce, public ShockLinkSet {
   const std::vector<double>* constraintForce() const override {
     return hasRigid_ ? &constraintForce_ : nullptr;
   }
-  // Highest circular frequency the links add to the basis (bound: K * sum_k (dphi_k . m)^2)
+  // Highest circular frequency the links add to the basis (bound: K * sum_k |dphi_k|^2 with K
+  // the larger of the normal and tangential stiffnesses)
   // and the largest link damping ratio, for the critical step.
   double linkOmega2Bound() const;
   double linkDampingRatioBound() const;

@@ -39,6 +39,10 @@ void declareShockLinks(Teuchos::ParameterList& p) {
   declareDouble(l, "Tangential Stiffness", 0.0, "Kt [N/m]", Range::nonNegative());
   declareDouble(l, "Tangential Damping", 0.0, "Ct [N s/m]", Range::nonNegative());
   declareDouble(l, "Friction Coefficient", 0.0, "Coulomb coefficient mu", Range::nonNegative());
+  declareChoice(l, "Friction Law", "elastic-plastic", {"elastic-plastic", "velocity reversal"},
+                "elastic-plastic: a tangential spring Kt returned onto the Coulomb cone; velocity "
+                "reversal: code_aster's DIS_CHOC (slip along the velocity, stick when it reverses; "
+                "see src/contact/ShockLaw.hpp)");
 }
 
 namespace {
@@ -75,6 +79,12 @@ ShockLink readLink(const ParameterList& lp, const std::string& name, int node1, 
   l.law.tangentialStiffness = lp.get<double>("Tangential Stiffness");
   l.law.tangentialDamping = lp.get<double>("Tangential Damping");
   l.law.friction = lp.get<double>("Friction Coefficient");
+  l.law.frictionLaw = lp.get<std::string>("Friction Law") == "velocity reversal" ? FrictionLaw::VelocityReversal
+                                                                                 : FrictionLaw::ElasticPlastic;
+  if (l.law.rigid && l.law.tangential())
+    throwInput(file, lpath + "/Normal Law", "rigid",
+               "carries no tangential force (the link has a tangential stiffness, damping or friction)",
+               "use the penalty law for a link with friction");
   const auto& X = model.mesh().coords;
   l.x1 = X[l.node1];
   l.x2 = l.node2 >= 0 ? X[l.node2] : X[l.node1];
@@ -138,31 +148,61 @@ std::vector<ShockLink> readShockLinks(const Teuchos::ParameterList& p, const Mod
 
 std::vector<std::string> shockLinkColumns(const std::vector<ShockLink>& links) {
   std::vector<std::string> c;
-  for (const auto& l : links)
+  for (const auto& l : links) {
     for (const char* q : {":force", ":gap", ":status"}) c.push_back(l.name + q);
+    if (l.law.tangential())
+      for (const char* q : {":tangential_force", ":slip_velocity", ":friction_work"}) c.push_back(l.name + q);
+  }
   return c;
 }
 
 ShockLinkSet::ShockLinkSet(std::vector<ShockLink> links) : links_(std::move(links)) {
   lastGapRate_.assign(links_.size(), 0.0);
+  tangentialWork_.assign(links_.size(), 0.0);
+  lastTangentialPower_.assign(links_.size(), 0.0);
   gapRate_.assign(links_.size(), 0.0);
   slipSpeed_.assign(links_.size(), 0.0);
 }
 
 std::vector<double> ShockLinkSet::historyValues() const {
   std::vector<double> v;
-  for (const auto& l : links_) {
+  for (size_t i = 0; i < links_.size(); ++i) {
+    const ShockLink& l = links_[i];
     v.push_back(l.last.normalForce);
     v.push_back(l.last.gap);
-    v.push_back(l.last.closed ? 1.0 : 0.0);
+    v.push_back(l.last.closed ? (l.last.sliding ? 2.0 : 1.0) : 0.0);
+    if (l.law.tangential()) {
+      v.push_back(l.last.tangentialForce);
+      v.push_back(l.last.slipSpeed);
+      v.push_back(frictionWork(i));
+    }
   }
   return v;
 }
 
+double ShockLinkSet::frictionWork(size_t i) const {
+  return tangentialWork_[i] - links_[i].last.tangentialEnergy;
+}
+
+double ShockLinkSet::dissipatedEnergy() const {
+  double e = dissipated_;
+  for (size_t i = 0; i < links_.size(); ++i) e += frictionWork(i);
+  return e;
+}
+
+void ShockLinkSet::accumulateTangentialPower(size_t i, const Vec3& w, double dt) {
+  const double power = -dot(links_[i].last.tangentialForceVector, w);
+  tangentialWork_[i] += 0.5 * dt * (lastTangentialPower_[i] + power);
+  lastTangentialPower_[i] = power;
+}
+
 std::vector<std::string> ShockLinkSet::globalNames() const {
   std::vector<std::string> g;
-  for (const auto& l : links_)
+  for (const auto& l : links_) {
     for (const char* q : {"_FORCE", "_GAP", "_STATUS"}) g.push_back(l.name + q);
+    if (l.law.tangential())
+      for (const char* q : {"_TANGENTIAL_FORCE", "_SLIP_VELOCITY", "_FRICTION_WORK"}) g.push_back(l.name + q);
+  }
   return g;
 }
 
@@ -210,6 +250,8 @@ void ShockLinkSet::archiveLinks(StateArchive& a) const {
   a.putVector("links/responses", last);
   a.putVector("links/gapRates", lastGapRate_);
   a.putDouble("links/dissipated", dissipated_);
+  a.putVector("links/tangentialWork", tangentialWork_);
+  a.putVector("links/tangentialPower", lastTangentialPower_);
 }
 
 void ShockLinkSet::unarchiveLinks(const StateArchive& a) {
@@ -221,6 +263,8 @@ void ShockLinkSet::unarchiveLinks(const StateArchive& a) {
   }
   lastGapRate_ = a.getVector<double>("links/gapRates", links_.size());
   dissipated_ = a.getDouble("links/dissipated");
+  tangentialWork_ = a.getVector<double>("links/tangentialWork", links_.size());
+  lastTangentialPower_ = a.getVector<double>("links/tangentialPower", links_.size());
 }
 
 std::vector<std::string> ShockLinkSet::impactNames() const {

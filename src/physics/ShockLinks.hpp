@@ -32,7 +32,9 @@ struct ShockLink {
 // Throws InputError naming the link's parameter.
 std::vector<ShockLink> readShockLinks(const Teuchos::ParameterList& analysisParameters,
                                       const Model& model, const std::string& analysisPath);
-// '<link>:force', '<link>:gap', '<link>:status' per link.
+// '<link>:force', '<link>:gap', '<link>:status' per link (status 0 open, 1 closed, 2 closed and
+// sliding), and for a link with tangential terms ':tangential_force', ':slip_velocity',
+// ':friction_work'.
 std::vector<std::string> shockLinkColumns(const std::vector<ShockLink>& links);
 
 class ShockLinkSet : public InteractionOutput {
@@ -40,7 +42,10 @@ class ShockLinkSet : public InteractionOutput {
   explicit ShockLinkSet(std::vector<ShockLink> links);
   const std::vector<ShockLink>& links() const { return links_; }
   double springEnergy() const;
-  double dissipatedEnergy() const { return dissipated_; }
+  // The dashpots' dissipation and the friction work of every link.
+  double dissipatedEnergy() const;
+  // Link i's friction work: the work of its tangential force less what its stick spring holds.
+  double frictionWork(size_t i) const;
 
   // Output: force, gap and status per link (history and Exodus globals).
   std::vector<std::string> historyColumns() const override { return shockLinkColumns(links_); }
@@ -58,12 +63,17 @@ class ShockLinkSet : public InteractionOutput {
   // Advances the dissipated energy by link i's dashpot power over dt (trapezoidal rule), with
   // link i's committed response and relative velocity w; wasClosed: its state before.
   void accumulateDissipation(size_t i, bool wasClosed, const Vec3& w, double dt);
+  // Advances link i's tangential work by the trapezoidal rule on the power -Ft . w of its
+  // committed response.
+  void accumulateTangentialPower(size_t i, const Vec3& w, double dt);
+  void addTangentialWork(size_t i, double work) { tangentialWork_[i] += work; }
   void archiveLinks(StateArchive& a) const;
   void unarchiveLinks(const StateArchive& a);
 
   std::vector<ShockLink> links_;
   double dissipated_ = 0.0;
   std::vector<double> lastGapRate_;          // along the force, at the last committed state
+  std::vector<double> tangentialWork_, lastTangentialPower_;  // per link
   std::vector<double> gapRate_, slipSpeed_;  // along the shape's normal, at the last evaluation
 };
 
