@@ -248,3 +248,11 @@ choc_cli_reference_error(contact_node_set_missing bad_contact_node_set_missing.x
 # A shock link of a direct transient with the modal transient's rigid law (issue 16).
 choc_cli_reference_error(link_rigid_direct bad_link_rigid_direct.xml
   "parameter 'Analyses/impact/Shock Links/shock/Normal Law' = 'rigid': is the modal transient's forward-increment constraint, not available in a direct transient. use 'penalty' with a stiffness, or a contact pair with the Lagrange method")
+# Shock-link friction (issue 15): a rigid link with friction, a negative Coulomb coefficient, a
+# negative stick stiffness.
+choc_cli_input_error(link_rigid_friction check bad_link_rigid_friction.xml
+  "parameter 'Analyses/shock/Shock Links/link/Normal Law' = 'rigid': carries no tangential force .the link has a tangential stiffness, damping or friction.. use the penalty law for a link with friction")
+choc_cli_input_error(link_negative_friction check bad_link_negative_friction.xml
+  "parameter 'Analyses/shock/Shock Links/link/Friction Coefficient' = '-0.1': out of range. valid: a number in .0, inf.")
+choc_cli_input_error(link_negative_stick check bad_link_negative_stick.xml
+  "parameter 'Analyses/shock/Shock Links/link/Tangential Stiffness' = '-400000': out of range. valid: a number in .0, inf.")

@@ -124,3 +124,83 @@ TEST(ShockLaw, ParsesShapeNames) {
 
 }  // namespace
 }  // namespace choc
+
+namespace choc {
+namespace {
+
+// A plane (PLAN_Z, outward normal +z) pressing with 10 N; friction in the plane x-y.
+ShockLawParameters frictionLaw(FrictionLaw kind) {
+  ShockLawParameters p;
+  p.shape = ObstacleShape::PlanZ;
+  p.frame = obstacleFrame({1, 0, 0});
+  p.dist1 = 0.5;
+  p.normalStiffness = 20;
+  p.tangentialStiffness = 4e5;
+  p.friction = 0.1;
+  p.frictionLaw = kind;
+  return p;
+}
+
+// One node against the fixed plane: d = -u, w = -v (node 2 is the obstacle).
+ShockResponse step(const ShockLawParameters& p, ShockLawState& st, const Vec3& u, const Vec3& v,
+                   double dt) {
+  return evaluateShock(p, {-u[0], -u[1], -u[2]}, {-v[0], -v[1], -v[2]}, dt, st, true);
+}
+
+TEST(ShockLawFriction, VelocityReversalSlidesAlongTheVelocityAndSticksWhenItReverses) {
+  const auto p = frictionLaw(FrictionLaw::VelocityReversal);
+  ShockLawState st;
+  // At rest on closing: sticks, no force.
+  auto r = step(p, st, {0, 0, 0}, {0, 0, 0}, 1e-3);
+  EXPECT_FALSE(r.sliding);
+  EXPECT_NEAR(r.normalForce, 10.0, 1e-12);
+  EXPECT_NEAR(r.tangentialForce, 0.0, 1e-15);
+  // Moving 1e-6 m along +x: the stick spring holds 0.4 N (< mu N = 1 N) on node 1 against it.
+  r = step(p, st, {1e-6, 0, 0}, {1e-3, 0, 0}, 1e-3);
+  EXPECT_FALSE(r.sliding);
+  EXPECT_NEAR(r.tangentialForceVector[0], 0.4, 1e-9);  // on node 2 (the plane): along +x
+  // 1e-5 m: the spring would hold 4 N > 1 N: it slides, mu N along the (node's) velocity.
+  r = step(p, st, {1e-5, 0, 0}, {0.3, 0.4, 0}, 1e-3);
+  EXPECT_TRUE(r.sliding);
+  expectVec(r.tangentialForceVector, {0.6, 0.8, 0}, 1e-12);  // node 1 gets -mu N v / |v|
+  EXPECT_NEAR(r.slipSpeed, 0.5, 1e-15);
+  // Still moving the same way (any distance): slides on, along the velocity.
+  r = step(p, st, {2e-3, 0, 0}, {1, 0, 0}, 1e-3);
+  EXPECT_TRUE(r.sliding);
+  expectVec(r.tangentialForceVector, {1, 0, 0}, 1e-12);
+  // The velocity reverses: it sticks from the last slip force (+1 N on the plane) less the
+  // stick spring over the way back (1e-6 m: 0.4 N): 0.6 N.
+  r = step(p, st, {2e-3 - 1e-6, 0, 0}, {-1e-3, 0, 0}, 1e-3);
+  EXPECT_FALSE(r.sliding);
+  EXPECT_NEAR(r.tangentialForceVector[0], 0.6, 1e-9);
+  // 6e-6 m back: 1 - 2.4 = -1.4 N, beyond mu N: it slides back, against the new velocity.
+  r = step(p, st, {2e-3 - 6e-6, 0, 0}, {-1e-3, 0, 0}, 1e-3);
+  EXPECT_TRUE(r.sliding);
+  expectVec(r.tangentialForceVector, {-1, 0, 0}, 1e-12);
+  // Opening forgets everything.
+  r = step(p, st, {0, 0, 1.0}, {0, 0, 0}, 1e-3);
+  EXPECT_FALSE(r.closed);
+  EXPECT_EQ(r.tangentialForce, 0.0);
+}
+
+TEST(ShockLawFriction, ElasticPlasticSpringIsReturnedOntoTheCone) {
+  const auto p = frictionLaw(FrictionLaw::ElasticPlastic);
+  ShockLawState st;
+  step(p, st, {0, 0, 0}, {0, 0, 0}, 1e-3);
+  // 1e-3 s at 1e-3 m/s along +x: the spring stretches 1e-6 m, 0.4 N.
+  auto r = step(p, st, {1e-6, 0, 0}, {1e-3, 0, 0}, 1e-3);
+  EXPECT_FALSE(r.sliding);
+  EXPECT_NEAR(r.tangentialForceVector[0], 0.4, 1e-9);
+  EXPECT_NEAR(r.tangentialEnergy, 0.4 * 0.4 / (2 * 4e5), 1e-15);
+  // A further 1e-5 m: 4.4 N on trial, returned to mu N = 1 N; the spring keeps 2.5e-6 m.
+  r = step(p, st, {1.1e-5, 0, 0}, {1e-2, 0, 0}, 1e-3);
+  EXPECT_TRUE(r.sliding);
+  EXPECT_NEAR(r.tangentialForceVector[0], 1.0, 1e-12);
+  // Back by 1e-6 m: the spring unloads elastically, 1 - 0.4 = 0.6 N, no slip.
+  r = step(p, st, {1e-5, 0, 0}, {-1e-3, 0, 0}, 1e-3);
+  EXPECT_FALSE(r.sliding);
+  EXPECT_NEAR(r.tangentialForceVector[0], 0.6, 1e-9);
+}
+
+}  // namespace
+}  // namespace choc
