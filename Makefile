@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-inputs bench-mesh bench-modal study-modal study-bar study-modal-direct clean
+.PHONY: all deps configure build run test study bench bench-inputs bench-mesh bench-modal study-modal study-bar study-modal-direct study-friction clean
 
 all: build
 
@@ -36,6 +36,10 @@ bench: build
 	$(PYTHON) tools/bench_modal_direct.py --build $(BUILD)
 
 # SDNL32 by the modal transient on 4 to 31 modes and by the direct transient (README).
+# SDND100's friction: stick stiffness and dt against the rows and the exact motion.
+study-friction: build
+	$(PYTHON) tools/sdnd100_study.py --build $(BUILD)
+
 study-modal-direct: build
 	$(PYTHON) tools/modal_direct_study.py --build $(BUILD)
 
@@ -48,6 +52,7 @@ study: build
 	$(PYTHON) tools/study.py --build $(BUILD) --out results/study
 	$(PYTHON) tools/study_report.py results/study
 	$(PYTHON) tools/modal_direct_study.py --build $(BUILD) --out results/study/modal-direct
+	$(PYTHON) tools/sdnd100_study.py --build $(BUILD) --out results/study/sdnd100
 
 # A ~1M-unknown TET10 gmsh mesh read, partitioned and assembled on 2 ranks (time, memory per phase).
 bench-mesh: build
