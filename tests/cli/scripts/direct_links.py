@@ -75,26 +75,31 @@ def replace_block(text, start_marker, end_marker, new):
     return text[:i] + new + text[j:]
 
 
+def penalty_pair(stiffness, name, pair):
+    """A 'Contact' list: one penalty pair NAME whose parameters are the XML lines PAIR."""
+    return f'''      <ParameterList name="Contact">
+        <Parameter name="Method" type="string" value="Penalty"/>
+        <Parameter name="Penalty Stiffness" type="double" value="{stiffness}"/>
+        <ParameterList name="Pairs">
+          <ParameterList name="{name}">{pair}
+          </ParameterList>
+        </ParameterList>
+      </ParameterList>
+'''
+
+
 LINKS_START = '      <ParameterList name="Shock Links">'
 IC_START = '      <ParameterList name="Initial Conditions">'
 
 # 1. SDNL32: link and contact pair.
 s32 = deck("sdnl32_direct.xml")
-pair32 = replace_block(s32, LINKS_START, IC_START, '''      <ParameterList name="Contact">
-        <Parameter name="Method" type="string" value="Penalty"/>
-        <Parameter name="Penalty Stiffness" type="double" value="18000"/>
-        <ParameterList name="Pairs">
-          <ParameterList name="stop">
+pair32 = replace_block(s32, LINKS_START, IC_START, penalty_pair("18000", "stop", '''
             <Parameter name="Slave Node Set" type="string" value="N11"/>
             <ParameterList name="Obstacle">
               <Parameter name="Shape" type="string" value="plane"/>
               <Parameter name="Point" type="string" value="0.783 0 0"/>
               <Parameter name="Normal" type="string" value="0 1 0"/>
-            </ParameterList>
-          </ParameterList>
-        </ParameterList>
-      </ParameterList>
-''')
+            </ParameterList>'''))
 a, _ = run(s32, "sdnl32_link")
 b, _ = run(pair32, "sdnl32_pair")
 compare("SDNL32 link vs contact pair", a, b, [("N11:DY", "N11:DY"), ("N11:VY", "N11:VY"),
@@ -102,19 +107,11 @@ compare("SDNL32 link vs contact pair", a, b, [("N11:DY", "N11:DY"), ("N11:VY", "
 
 # 2. SDNL111 A: link (no dashpot) and node-to-node contact pair.
 s111 = deck("sdnl111a_direct.xml").replace('<Parameter name="Normal Damping" type="double" value="2e4"/>', "")
-pair111 = replace_block(s111, LINKS_START, IC_START, '''      <ParameterList name="Contact">
-        <Parameter name="Method" type="string" value="Penalty"/>
-        <Parameter name="Penalty Stiffness" type="double" value="5e9"/>
-        <ParameterList name="Pairs">
-          <ParameterList name="shock">
+pair111 = replace_block(s111, LINKS_START, IC_START, penalty_pair("5e9", "shock", '''
             <Parameter name="Slave Node Set" type="string" value="A"/>
             <Parameter name="Master Node Set" type="string" value="C"/>
             <Parameter name="Node Normal" type="string" value="1 0 0"/>
-            <Parameter name="Node Offset" type="double" value="1e-5"/>
-          </ParameterList>
-        </ParameterList>
-      </ParameterList>
-''')
+            <Parameter name="Node Offset" type="double" value="1e-5"/>'''))
 a, _ = run(s111, "sdnl111a_link")
 b, _ = run(pair111, "sdnl111a_pair")
 compare("SDNL111 A link vs node-to-node pair", a, b, [("A:DX", "A:DX"), ("A:VX", "A:VX"),
