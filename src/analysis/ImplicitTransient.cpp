@@ -14,14 +14,25 @@
 #include "fem/Components.hpp"
 #include "input/ParameterSpec.hpp"
 #include "output/InteractionList.hpp"
+#include "physics/CriticalStep.hpp"
+#include "timeint/ExplicitDriver.hpp"
+#include "timeint/ModalIntegrator.hpp"
 
 namespace choc {
 
 Teuchos::ParameterList ImplicitTransient::parameters() {
   Teuchos::ParameterList p;
   declareRequiredChoice(p, "Type", {"Transient"}, "analysis type");
-  declareChoice(p, "Scheme", "modified average acceleration", NewmarkFamily::presetNames(),
-                "Newmark-family preset (see src/timeint/NewmarkFamily.hpp)");
+  std::vector<std::string> schemes = NewmarkFamily::presetNames();
+  schemes.push_back("central differences");
+  declareChoice(p, "Scheme", "modified average acceleration", schemes,
+                "Newmark-family preset (see src/timeint/NewmarkFamily.hpp), or 'central "
+                "differences': explicit, lumped mass, no linear solve (src/timeint/ExplicitDriver.hpp)");
+  declareChoice(p, "Stability Check", "refuse", {"refuse", "substep"},
+                "central differences only: when 'Time Step' exceeds the critical step (a bound of "
+                "the highest frequency with the mesh, penalty contact and links), refuse the run or "
+                "cut each step into equal sub-steps at 0.9 of it; with penalty contact or links "
+                "the limit is half the critical step (they chatter and create energy above it)");
   declareDouble(p, "Alpha", -0.1,
                 "alpha of 'modified average acceleration' and 'HHT', in [-1/3, 0]: "
                 "beta = (1-alpha)^2/4, gamma = 1/2 - alpha");
@@ -71,6 +82,10 @@ ImplicitTransient::ImplicitTransient(const std::string& name, const Teuchos::Par
   s_.contact = readContactSettings(params_, inputFile_, "Analyses/" + name_);
   s_.time.newton.maxActiveSetIterations = s_.contact.maxActiveSetIterations;
   s_.output = readTransientOutput(params_);
+  if (s_.explicitScheme && s_.contact.hasMultipliers())
+    throwInput(inputFile_, path("Contact/Method"), s_.contact.method,
+               "has pressure unknowns, which the explicit scheme (central differences) cannot solve for",
+               "use the Penalty method with central differences");
   if (s_.contact.hasMultipliers() && params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
     throwInput(inputFile_, path("Linear Solver/Method"), "CG",
                "the saddle-point system of contact method '" + s_.contact.method + "' is indefinite",
@@ -79,6 +94,11 @@ ImplicitTransient::ImplicitTransient(const std::string& name, const Teuchos::Par
 
 void ImplicitTransient::readScheme() {
   const std::string schemeName = params_.get<std::string>("Scheme");
+  s_.stability = params_.get<std::string>("Stability Check");
+  if (schemeName == "central differences") {
+    s_.explicitScheme = true;
+    return;
+  }
   try {
     s_.scheme = NewmarkFamily::fromPreset(schemeName, params_.get<double>("Alpha"),
                                           params_.get<double>("Spectral Radius"),
@@ -116,7 +136,8 @@ void ImplicitTransient::setup(SetupContext& ctx) {
   buildContact(model);
   std::vector<ShockLink> links = readShockLinks(params_, model, "Analyses/" + name_);
   if (!links.empty()) b_->links = std::make_unique<DirectLinks>(std::move(links), model, model.map());
-  buildSolver();
+  buildSolver();  // an explicit run never uses it (no effective matrix is built)
+  if (s_.explicitScheme) setupExplicit();
   b_->probes = parseProbes(s_.output.history, model, path("History"));
   std::vector<std::string> probeColumns;
   for (const auto& p : b_->probes) probeColumns.push_back(p.column);
@@ -165,6 +186,36 @@ void ImplicitTransient::buildContact(Model& model) {
   }
 }
 
+// Central differences: the lumped mass's inverse and the critical step, refused or sub-stepped.
+void ImplicitTransient::setupExplicit() {
+  RCP<Vector> m = lumpedMassDiagonal(*b_->M);
+  if (m.is_null())
+    throwInput(inputFile_, path("Scheme"), "central differences",
+               "needs a diagonal mass with every entry positive",
+               "set 'Mass' = 'lumped' in every block of Model/Blocks and 'Contact Mass' = 'standard'");
+  b_->inverseMass = rcp(new Vector(m->getMap()));
+  b_->inverseMass->reciprocal(*m);
+  const double k = b_->contact ? b_->contact->method().stiffness() : 0.0;
+  b_->omegaMax = omegaMaxBound(*b_->K, *m, b_->contact.get(), k, b_->links.get());
+  const double xi = b_->omegaMax > 0 ? 0.5 * (s_.rayleighK * b_->omegaMax + s_.rayleighM / b_->omegaMax) : 0.0;
+  b_->criticalStep = explicitCriticalStep(b_->omegaMax, xi);
+  // Penalty contact and links switch on and off: near the limit they chatter and create
+  // energy, so they get half of it (the modal transient's rule).
+  const bool switching = b_->links || (b_->contact && b_->contact->method().stiffness() > 0);
+  const double limit = (switching ? 0.5 : 1.0) * b_->criticalStep;
+  const double dt = s_.time.timeStep;
+  if (dt <= limit) return;
+  if (s_.stability == "refuse")
+    throwInput(inputFile_, path("Time Step"), shortNumber(dt),
+               "exceeds the stable step of central differences, " + shortNumber(limit) + " s (" +
+                   (switching ? "half " : "") + "the critical step " + shortNumber(b_->criticalStep) +
+                   " s: highest frequency at most " + shortNumber(b_->omegaMax) +
+                   " rad/s with the mesh, penalty contact and links" +
+                   (switching ? "; penalty contact and links chatter above half of it" : "") + ")",
+               "use a time step at most " + shortNumber(limit) + " s, or 'Stability Check' = 'substep'");
+  b_->substeps = int(std::ceil(dt / (0.9 * limit)));
+}
+
 void ImplicitTransient::buildSolver() {
   try {
     b_->solver = makeLinearSolver(params_.sublist("Linear Solver"));
@@ -185,15 +236,26 @@ void ImplicitTransient::run(RunContext& ctx) {
   if (b_->contact) report = std::make_unique<ContactReport>(*b_->contact, ctx.model.mesh().numNodes());
   const InteractionList interactions({report.get(), b_->links.get()});
   ImplicitStepView view(op, report.get(), interactions.simplest(), b_->probes, outputs, timer.get());
-  TransientDriver driver(op, s_.scheme, s_.time);
-  driver.addObserver(&view);
+  // One of the two step loops: Newmark-family (Newton) or central differences (explicit).
+  std::unique_ptr<TransientDriver> implicitDriver;
+  std::unique_ptr<ExplicitDriver> explicitDriver;
+  if (s_.explicitScheme) {
+    explicitDriver = std::make_unique<ExplicitDriver>(op, b_->inverseMass, s_.time, b_->substeps);
+    explicitDriver->addObserver(&view);
+  } else {
+    implicitDriver = std::make_unique<TransientDriver>(op, s_.scheme, s_.time);
+    implicitDriver->addObserver(&view);
+  }
   const StateVectors vectors(ctx.model.dofs());
   OutputPlan plan{"transient '" + name_ + "'", ctx.outputDir + "/" + name_, b_->columns,
                   0.0, s_.time.endTime, 1};
   plan.resume = resume;
   plan.checkpoint = checkpointPlan(ctx);
   plan.checkpoint.archiveRun = [&](StateArchive& a) {
-    driver.archive(a, vectors);
+    if (explicitDriver)
+      explicitDriver->archive(a, vectors);
+    else
+      implicitDriver->archive(a, vectors);
     view.archive(a, vectors);
   };
   const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model, params_);
@@ -206,7 +268,10 @@ void ImplicitTransient::run(RunContext& ctx) {
   const TransientDriver::Resume from{resume ? *resume : none, vectors};
   TransientSummary sum;
   outputs.run(view, [&] {
-    sum = driver.run(*b_->init.displacement, *b_->init.velocity, resume ? &from : nullptr);
+    Vector& u = *b_->init.displacement;
+    Vector& v = *b_->init.velocity;
+    sum = explicitDriver ? explicitDriver->run(u, v, resume ? &from : nullptr)
+                         : implicitDriver->run(u, v, resume ? &from : nullptr);
   });
   timer->stopBaseTimer();
   recordFigures(sum, op, *timer, wallStart);
@@ -220,9 +285,17 @@ void ImplicitTransient::describe(Model& model, const StructuralOperator& op) con
         << (contact && contact->method().hasMultipliers()
                 ? " (+ " + std::to_string(contact->numConstraints()) + " contact pressures)"
                 : std::string())
-        << "; " << s_.scheme.describe() << "\n";
+        << "; " << (s_.explicitScheme ? std::string("central differences (explicit, lumped mass)")
+                                         : s_.scheme.describe())
+        << "\n";
+  if (s_.explicitScheme)
+    log() << format("  critical step %.4e s (highest frequency at most %.4e rad/s: mesh, penalty contact, "
+                    "links); dt = %.4e s: %d sub-step(s) per step\n",
+                    b_->criticalStep, b_->omegaMax, s_.time.timeStep, b_->substeps);
   log() << "  dt = " << s_.time.timeStep << " s to " << s_.time.endTime << " s; Rayleigh C = "
-        << s_.rayleighK << " K + " << s_.rayleighM << " M; linear solver " << op.solver().description() << "\n";
+        << s_.rayleighK << " K + " << s_.rayleighM << " M; "
+        << (s_.explicitScheme ? std::string("no linear solve") : "linear solver " + op.solver().description())
+        << "\n";
   if (b_->masslessNodes > 0) {
     // 1^T M 1 over the free DOFs (the mass summed over the free directions), before and after.
     Vector one(model.map()), y(model.map());
@@ -273,11 +346,15 @@ void ImplicitTransient::recordFigures(const TransientSummary& sum, const Structu
 void ImplicitTransient::logFigures(const TransientSummary& sum, const Model& model,
                                    Teuchos::StackedTimer& timer) const {
   const Figures& f = figures_;
-  log() << format("  %d steps, %d Newton iterations (%.2f per step, at most %d), %d active-set "
-                  "passes, %d factorisations, %d failed attempts (smallest dt %.3e s)\n",
-                  sum.steps, sum.newtonIterations, double(sum.newtonIterations) / std::max(1, sum.steps),
-                  sum.maxNewtonPerStep, sum.activeSetIterations, f.refactorizations, sum.failedSteps,
-                  sum.smallestStep);
+  if (s_.explicitScheme)
+    log() << format("  %d steps of %d sub-step(s) (%.3e s each), no linear solve\n", sum.steps, b_->substeps,
+                    sum.smallestStep);
+  else
+    log() << format("  %d steps, %d Newton iterations (%.2f per step, at most %d), %d active-set "
+                    "passes, %d factorisations, %d failed attempts (smallest dt %.3e s)\n",
+                    sum.steps, sum.newtonIterations, double(sum.newtonIterations) / std::max(1, sum.steps),
+                    sum.maxNewtonPerStep, sum.activeSetIterations, f.refactorizations, sum.failedSteps,
+                    sum.smallestStep);
   if (b_->links && b_->links->dashpotDrops() > 0)
     log() << format("  shock links: a dashpot was dropped in %lld step(s): closing while approaching, the "
                     "law's force jumps and the step had no solution with it\n",

@@ -43,6 +43,8 @@ class ImplicitTransient : public Analysis {
  private:
   struct Settings {
     NewmarkFamily scheme = NewmarkFamily::averageAcceleration();
+    bool explicitScheme = false;  // 'central differences': ExplicitDriver, lumped mass
+    std::string stability = "refuse";
     TransientSettings time;
     double rayleighK = 0, rayleighM = 0;
     ContactSettings contact;
@@ -61,12 +63,18 @@ class ImplicitTransient : public Analysis {
     std::vector<std::string> columns;
     std::vector<std::unique_ptr<HistoryCheck>> checks;
     InitialFields init;
+    // Explicit scheme: 1 / M_ii, the bound of the highest frequency, the critical step and the
+    // sub-steps per step.
+    RCP<Vector> inverseMass;
+    double omegaMax = 0, criticalStep = 0;
+    int substeps = 1;
   };
   void readScheme();
   void readTimeSettings();
   RCP<Vector> assembleLoads(const Model& model) const;
   void buildContact(Model& model);
   void buildSolver();
+  void setupExplicit();
   void describe(Model& model, const StructuralOperator& op) const;
   void recordFigures(const TransientSummary& sum, const StructuralOperator& op,
                      const Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start);

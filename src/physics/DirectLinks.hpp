@@ -28,6 +28,8 @@ class DirectLinks : public ShockLinkSet {
   DirectLinks(std::vector<ShockLink> links, const Model& model, RCP<const Map> map);
   // The DOFs each link couples (its nodes' DX, DY, DZ unknowns), for the matrix graph.
   std::vector<std::vector<GO>> couplings() const;
+  // Link i's DX, DY, DZ of node 1 then of node 2 (-1 where not an unknown).
+  std::vector<GO> linkDofs(size_t i) const { return {dofs_[i].begin(), dofs_[i].end()}; }
   // The step about to be solved: its length (0 before the initial state) and a new tangent
   // for curved shapes in contact.
   void beginStep(double dt);

@@ -17,12 +17,9 @@ StructuralOperator::StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatr
                                        std::unique_ptr<LinearSolver> solver, Teuchos::StackedTimer* timer)
     : K_(std::move(K)), M_(std::move(M)), aK_(rayleighK), aM_(rayleighM), load_(std::move(load)),
       contact_(contact), links_(links), solver_(std::move(solver)), timer_(timer) {
-  system_ = std::make_unique<ContactSystem>(K_, M_, contact_,
-                                            links_ ? links_->couplings() : std::vector<std::vector<GO>>());
+
   tmp_ = rcp(new Vector(K_->getRowMap()));
   energyTmp_ = rcp(new Vector(K_->getRowMap()));
-  rhs_ = rcp(new MultiVector(system_->map(), 1));
-  x_ = rcp(new MultiVector(system_->map(), 1));
   // Massless DOFs: rows of M without a non-zero entry.
   const size_t nLocal = M_->getNodeNumRows();
   massless_.assign(nLocal, 0);
@@ -45,7 +42,21 @@ StructuralOperator::StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatr
                                      Teuchos::outArg(masslessGlobal_));
 }
 
-int StructuralOperator::unknowns() const { return int(system_->map()->getGlobalNumElements()); }
+// The effective system is built at the first correction (an explicit run never builds it).
+ContactSystem& StructuralOperator::system() {
+  if (!system_) {
+    system_ = std::make_unique<ContactSystem>(K_, M_, contact_,
+                                              links_ ? links_->couplings() : std::vector<std::vector<GO>>());
+    rhs_ = rcp(new MultiVector(system_->map(), 1));
+    x_ = rcp(new MultiVector(system_->map(), 1));
+  }
+  return *system_;
+}
+
+int StructuralOperator::unknowns() const {
+  if (system_) return int(system_->map()->getGlobalNumElements());
+  return int(K_->getRowMap()->getGlobalNumElements());
+}
 
 double StructuralOperator::kineticEnergy(const Vector& v) const {
   M_->apply(v, *energyTmp_);
@@ -102,7 +113,8 @@ double StructuralOperator::addConstraintForces(const Vector& u, const Vector& v,
 CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients& c,
                                                      const Vector& u, const Vector& r, Vector& du) {
   CorrectionStatus st;
-  std::vector<char> status = system_->statusKey();
+  ContactSystem& sys = system();
+  std::vector<char> status = sys.statusKey();
   // The links' tangent, with v following u (dv/du = cv / cd); none for W = M.
   const bool linkTangent = links_ && c.cd > 0.0;
   if (linkTangent) {
@@ -112,11 +124,11 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
   if (!haveKey_ || !(keyCoefficients_ == c) || keyStatus_ != status) {
     {
       TimerScope ts(timer_, "Transient: assembly");
-      system_->fill(c.ca + c.cv * aM_, c.cd + c.cv * aK_,
+      sys.fill(c.ca + c.cv * aM_, c.cd + c.cv * aK_,
                     linkTangent ? links_->tangent(c.cv / c.cd) : std::vector<MatrixEntry>());
     }
     TimerScope ts(timer_, "Transient: linear solve");
-    solver_->setMatrix(system_->matrix());  // throws NumericalError when singular
+    solver_->setMatrix(sys.matrix());  // throws NumericalError when singular
     haveKey_ = true;
     keyCoefficients_ = c;
     keyStatus_ = status;
@@ -124,7 +136,7 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
   }
   {
     TimerScope ts(timer_, "Transient: contact");
-    system_->rightHandSide(r, u, *rhs_);
+    sys.rightHandSide(r, u, *rhs_);
   }
   x_->putScalar(0.0);
   LinearSolveStatus ls;
@@ -137,7 +149,7 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
   st.message = ls.message;
   if (!st.ok) return st;
   TimerScope ts(timer_, "Transient: contact");
-  system_->takeSolution(*x_, du);
+  sys.takeSolution(*x_, du);
   return st;
 }
 

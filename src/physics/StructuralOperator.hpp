@@ -64,6 +64,7 @@ class StructuralOperator : public SecondOrderOperator {
   const std::vector<char>& masslessMask() const { return massless_; }  // per local DOF
 
  private:
+  ContactSystem& system();
   RCP<const CrsMatrix> K_, M_;
   double aK_, aM_;
   RCP<const Vector> load_;

@@ -15,6 +15,8 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "core/Errors.hpp"
+#include "timeint/ExplicitDriver.hpp"
 #include "timeint/TransientDriver.hpp"
 
 namespace choc {
@@ -273,6 +275,57 @@ TEST(TransientDriver, CutsDtOnFailureAndStopsWhenCutsRunOut) {
     EXPECT_NE(msg.find("2 cut(s)"), std::string::npos) << msg;
   }
   EXPECT_EQ(rec2.t.size(), 1u);  // only the initial state was ever reported
+}
+
+}  // namespace
+}  // namespace choc
+
+namespace choc {
+namespace {
+
+// Central differences (ExplicitDriver) on the undamped oscillator from u0 = 1 at rest: the
+// discrete solution is u_n = cos(w~ n h) with cos(w~ h) = 1 - (w h)^2 / 2 (the scheme's
+// defining recurrence u_{n+1} - 2 u_n + u_{n-1} = -(w h)^2 u_n, started by
+// u_1 = 1 - (w h)^2 / 2), for any h below 2 / w; above it the state grows without bound and
+// the driver says so.
+Recorder integrateExplicit(double omega, double dt, double end, int substeps) {
+  Oscillator osc(1.0, 0.0, omega * omega);
+  TransientSettings ts;
+  ts.timeStep = dt;
+  ts.endTime = end;
+  Vector u(osc.map()), v(osc.map());
+  Oscillator::set(u, 1.0);
+  auto inverseMass = rcp(new Vector(osc.map()));
+  inverseMass->putScalar(1.0);
+  ExplicitDriver d(osc, inverseMass, ts, substeps);
+  Recorder rec;
+  d.addObserver(&rec);
+  d.run(u, v);
+  return rec;
+}
+
+TEST(ExplicitDriver, CentralDifferencesFollowTheirDiscreteSolution) {
+  const double omega = 100.0;
+  for (double h : {1e-3, 1e-2, 1.9e-2}) {
+    const Recorder r = integrateExplicit(omega, h, 200 * h, 1);
+    const double wt = std::acos(1 - 0.5 * omega * omega * h * h) / h;
+    ASSERT_EQ(r.u.size(), 201u);
+    for (size_t n = 0; n < r.u.size(); ++n)
+      ASSERT_NEAR(r.u[n], std::cos(wt * r.t[n]), 1e-10) << "h = " << h << ", step " << n;
+  }
+}
+
+TEST(ExplicitDriver, SubstepsAreStepsOfTheirOwnLength) {
+  // 4 sub-steps of h / 4 reproduce the discrete solution at h / 4, seen every 4th step.
+  const double omega = 100.0, h = 1e-2;
+  const Recorder r = integrateExplicit(omega, h, 50 * h, 4);
+  const double wt = std::acos(1 - 0.5 * omega * omega * (h / 4) * (h / 4)) / (h / 4);
+  for (size_t n = 0; n < r.u.size(); ++n) ASSERT_NEAR(r.u[n], std::cos(wt * r.t[n]), 1e-10);
+}
+
+TEST(ExplicitDriver, AStepAboveTheStabilityLimitStopsTheRun) {
+  // h = 2.1 / w: |u| grows by about 2 per step; within 2000 steps it overflows.
+  EXPECT_THROW(integrateExplicit(100.0, 2.1e-2, 2000 * 2.1e-2, 1), NumericalError);
 }
 
 }  // namespace

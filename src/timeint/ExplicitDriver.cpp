@@ -1,0 +1,111 @@
+#include "timeint/ExplicitDriver.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include <Tpetra_Vector.hpp>
+
+#include "core/Errors.hpp"
+
+namespace choc {
+
+ExplicitDriver::ExplicitDriver(SecondOrderOperator& op, RCP<const Vector> inverseMass,
+                               TransientSettings settings, int substeps)
+    : op_(op), inverseMass_(std::move(inverseMass)), s_(std::move(settings)),
+      substeps_(substeps < 1 ? 1 : substeps) {
+  auto map = op_.map();
+  for (RCP<Vector>* v : {&u_, &vHalf_, &a_, &v_, &r_, &fc_}) *v = rcp(new Vector(map));
+}
+
+void ExplicitDriver::notify(const StepInfo& info) {
+  for (StepObserver* o : observers_) o->stepAccepted(info, *u_, *v_, *a_);
+}
+
+void ExplicitDriver::acceleration(const Vector& u, const Vector& vStar, double t, double dt, Vector& a) {
+  op_.beginStep(u, t, dt);
+  op_.updateConstraints(u);  // penalty status at u (the only constraints an explicit step takes)
+  op_.applyForces(u, vStar, t, *r_);
+  fc_->putScalar(0.0);
+  op_.addConstraintForces(u, vStar, *fc_);
+  r_->update(1.0, *fc_, 1.0);
+  a.elementWiseMultiply(-1.0, *inverseMass_, *r_, 0.0);
+  op_.saveState();  // the links' state advances with the step
+}
+
+void ExplicitDriver::archive(StateArchive& a, const StateVectors& vectors) const {
+  vectors.put(a, "driver/u", *u_);
+  vectors.put(a, "driver/v", *v_);
+  vectors.put(a, "driver/a", *a_);
+  a.putDouble("driver/time", t_);
+  a.putInt("driver/nominal", nominal_);
+  a.putPod("driver/summary", sum_);
+  op_.archive(a);
+}
+
+TransientSummary ExplicitDriver::run(Vector& u, Vector& v, const TransientDriver::Resume* resume) {
+  TransientSummary& sum = sum_;
+  const double dt = s_.timeStep, t0 = s_.startTime;
+  if (!(dt > 0) || !(s_.endTime > t0))
+    throw std::invalid_argument("ExplicitDriver: needs dt > 0 and endTime > startTime");
+  StepInfo info;
+  if (resume) {
+    resume->vectors.get(resume->archive, "driver/u", *u_);
+    resume->vectors.get(resume->archive, "driver/v", *v_);
+    resume->vectors.get(resume->archive, "driver/a", *a_);
+    t_ = resume->archive.getDouble("driver/time");
+    nominal_ = resume->archive.getInt("driver/nominal");
+    sum = resume->archive.getPod<TransientSummary>("driver/summary");
+    op_.unarchive(resume->archive);
+    op_.saveState();
+  } else {
+    sum = TransientSummary();
+    sum.smallestStep = dt / substeps_;
+    u_->assign(u);
+    v_->assign(v);
+    t_ = t0;
+    nominal_ = 0;
+    op_.beginStep(*u_, t0, 0.0);
+    op_.initializeConstraints(*u_);
+    acceleration(*u_, *v_, t0, 0.0, *a_);
+    info.time = t_;
+    notify(info);
+  }
+  const long long nominal = std::max(1LL, (long long)std::ceil((s_.endTime - t0) / dt - 1e-9));
+  for (long long n = nominal_ + 1; n <= nominal; ++n) {
+    const double target = n == nominal ? s_.endTime : t0 + double(n) * dt;
+    // Velocity Verlet (central differences with integer-step velocities): any step length.
+    const double tStart = t_, h = (target - t_) / substeps_;
+    for (int k = 0; k < substeps_; ++k) {
+      vHalf_->update(1.0, *v_, 0.5 * h, *a_, 0.0);
+      u_->update(h, *vHalf_, 1.0);
+      const double t = k + 1 == substeps_ ? target : t_ + h;
+      acceleration(*u_, *vHalf_, t, h, *a_);
+      v_->update(1.0, *vHalf_, 0.5 * h, *a_, 0.0);
+      t_ = t;
+    }
+    const double size = u_->normInf() + v_->normInf() + a_->normInf();  // collective
+    if (!std::isfinite(size)) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "the state is not finite at t = %.6e s (step %lld): ", t_, n);
+      throw NumericalError(s_.label + ": " + buf +
+                           "the time step exceeds the stability limit of central differences "
+                           "(lower 'Time Step' or set 'Stability Check' = 'substep')");
+    }
+    nominal_ = n;
+    ++sum.steps;
+    sum.smallestStep = std::min(sum.smallestStep, h);
+    info.step = sum.steps;
+    info.time = t_;
+    info.dt = t_ - tStart;
+    info.last = n == nominal;
+    info.boundary = true;
+    info.nominal = nominal_;
+    notify(info);
+  }
+  u.assign(*u_);
+  v.assign(*v_);
+  return sum;
+}
+
+}  // namespace choc

@@ -1,0 +1,45 @@
+// The step loop of explicit central differences (Newmark beta = 0, gamma = 1/2) over a
+// SecondOrderOperator with a diagonal (lumped) mass: no linear solve. With half-step
+// velocities,
+//   a_n = -M^-1 (F(u_n, v*, t_n) + f_c(u_n, v*)),   v* = v_{n-1/2} (damping and dashpots lag
+//   half a step, the usual explicit treatment),
+//   v_{n+1/2} = v_{n-1/2} + dt a_n,   u_{n+1} = u_n + dt v_{n+1/2},
+// and v_n = v_{n-1/2} + dt/2 a_n for the output. The constraint status (penalty contact) is
+// re-evaluated at every u_n before its forces. A nominal step longer than the critical step is
+// cut into `substeps` equal sub-steps (the caller decides, from its estimate of the highest
+// frequency). Observers see every nominal step's end state (sub-steps are not reported).
+#pragma once
+#include <vector>
+
+#include "timeint/TransientDriver.hpp"
+
+namespace choc {
+
+class ExplicitDriver {
+ public:
+  // inverseMass: 1 / M_ii on the operator's map (every entry finite and positive).
+  ExplicitDriver(SecondOrderOperator& op, RCP<const Vector> inverseMass, TransientSettings settings,
+                 int substeps);
+  void addObserver(StepObserver* o) { observers_.push_back(o); }
+  // As TransientDriver::run. Throws NumericalError when the state stops being finite.
+  TransientSummary run(Vector& u, Vector& v, const TransientDriver::Resume* resume = nullptr);
+  void archive(StateArchive& a, const StateVectors& vectors) const;
+  int substeps() const { return substeps_; }
+
+ private:
+  // a = -M^-1 (F(u, vStar, t) + f_c(u, vStar)) with the status updated at u.
+  void acceleration(const Vector& u, const Vector& vStar, double t, double dt, Vector& a);
+  void notify(const StepInfo& info);
+
+  SecondOrderOperator& op_;
+  RCP<const Vector> inverseMass_;
+  TransientSettings s_;
+  int substeps_ = 1;
+  std::vector<StepObserver*> observers_;
+  double t_ = 0.0;
+  long long nominal_ = 0;
+  TransientSummary sum_;
+  RCP<Vector> u_, vHalf_, a_, v_, r_, fc_;
+};
+
+}  // namespace choc
