@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-inputs bench-mesh bench-modal study-modal study-bar study-modal-direct study-friction clean
+.PHONY: all deps configure build run test study bench bench-inputs bench-mesh bench-modal bench-explicit study-modal study-bar study-modal-direct study-friction clean
 
 all: build
 
@@ -34,14 +34,19 @@ test: build
 bench: build
 	$(PYTHON) tools/bench_scale.py --build $(BUILD) --sizes $(BENCH_ARGS)
 	$(PYTHON) tools/bench_modal_direct.py --build $(BUILD)
+	$(PYTHON) tools/bench_explicit.py --build $(BUILD)
 
-# SDNL32 by the modal transient on 4 to 31 modes and by the direct transient (README).
 # SDND100's friction: stick stiffness and dt against the rows and the exact motion.
 study-friction: build
 	$(PYTHON) tools/sdnd100_study.py --build $(BUILD)
 
+# SDNL32 by the modal transient on 4 to 31 modes and by the direct transient (README).
 study-modal-direct: build
 	$(PYTHON) tools/modal_direct_study.py --build $(BUILD)
+
+# Explicit central differences on the scale scene (issue 17), np = 1 and 2.
+bench-explicit: build
+	$(PYTHON) tools/bench_explicit.py --build $(BUILD)
 
 # The same 3D scene direct and reduced to 40 modes with shock links (README "Impact statistics").
 bench-modal: build
