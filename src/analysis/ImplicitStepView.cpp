@@ -133,6 +133,7 @@ void ImplicitStepView::fields(Vector& u, Vector& v, Vector& a) const {
 }
 
 std::string ImplicitStepView::stepNote() const {
+  if (info_.step > 0 && info_.newton.activeSetIterations == 0) return "explicit";  // no solve
   return format("Newton %d, active-set passes %d", info_.newton.iterations,
                 info_.newton.activeSetIterations);
 }
