@@ -224,6 +224,12 @@ void ImplicitTransient::buildSolver() {
   }
 }
 
+// The step loop of the scheme: Newmark family (Newton) or central differences (explicit).
+std::unique_ptr<StepLoop> ImplicitTransient::stepLoop(StructuralOperator& op) const {
+  if (s_.explicitScheme) return std::make_unique<ExplicitDriver>(op, b_->inverseMass, s_.time, b_->substeps);
+  return std::make_unique<TransientDriver>(op, s_.scheme, s_.time);
+}
+
 void ImplicitTransient::run(RunContext& ctx) {
   const auto wallStart = std::chrono::steady_clock::now();
   auto timer = rcp(new Teuchos::StackedTimer(("Transient '" + name_ + "'").c_str()));
@@ -236,26 +242,15 @@ void ImplicitTransient::run(RunContext& ctx) {
   if (b_->contact) report = std::make_unique<ContactReport>(*b_->contact, ctx.model.mesh().numNodes());
   const InteractionList interactions({report.get(), b_->links.get()});
   ImplicitStepView view(op, report.get(), interactions.simplest(), b_->probes, outputs, timer.get());
-  // One of the two step loops: Newmark-family (Newton) or central differences (explicit).
-  std::unique_ptr<TransientDriver> implicitDriver;
-  std::unique_ptr<ExplicitDriver> explicitDriver;
-  if (s_.explicitScheme) {
-    explicitDriver = std::make_unique<ExplicitDriver>(op, b_->inverseMass, s_.time, b_->substeps);
-    explicitDriver->addObserver(&view);
-  } else {
-    implicitDriver = std::make_unique<TransientDriver>(op, s_.scheme, s_.time);
-    implicitDriver->addObserver(&view);
-  }
+  std::unique_ptr<StepLoop> driver = stepLoop(op);
+  driver->addObserver(&view);
   const StateVectors vectors(ctx.model.dofs());
   OutputPlan plan{"transient '" + name_ + "'", ctx.outputDir + "/" + name_, b_->columns,
                   0.0, s_.time.endTime, 1};
   plan.resume = resume;
   plan.checkpoint = checkpointPlan(ctx);
   plan.checkpoint.archiveRun = [&](StateArchive& a) {
-    if (explicitDriver)
-      explicitDriver->archive(a, vectors);
-    else
-      implicitDriver->archive(a, vectors);
+    driver->archive(a, vectors);
     view.archive(a, vectors);
   };
   const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model, params_);
@@ -265,13 +260,10 @@ void ImplicitTransient::run(RunContext& ctx) {
                     resume->getDouble("point/time"), resume->getInt("point/nominal"));
   }
   const StateArchive none;
-  const TransientDriver::Resume from{resume ? *resume : none, vectors};
+  const StepLoop::Resume from{resume ? *resume : none, vectors};
   TransientSummary sum;
   outputs.run(view, [&] {
-    Vector& u = *b_->init.displacement;
-    Vector& v = *b_->init.velocity;
-    sum = explicitDriver ? explicitDriver->run(u, v, resume ? &from : nullptr)
-                         : implicitDriver->run(u, v, resume ? &from : nullptr);
+    sum = driver->run(*b_->init.displacement, *b_->init.velocity, resume ? &from : nullptr);
   });
   timer->stopBaseTimer();
   recordFigures(sum, op, *timer, wallStart);

@@ -75,6 +75,7 @@ class ImplicitTransient : public Analysis {
   void buildContact(Model& model);
   void buildSolver();
   void setupExplicit();
+  std::unique_ptr<StepLoop> stepLoop(StructuralOperator& op) const;
   void describe(Model& model, const StructuralOperator& op) const;
   void recordFigures(const TransientSummary& sum, const StructuralOperator& op,
                      const Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start);

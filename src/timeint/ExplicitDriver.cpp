@@ -43,7 +43,7 @@ void ExplicitDriver::archive(StateArchive& a, const StateVectors& vectors) const
   op_.archive(a);
 }
 
-TransientSummary ExplicitDriver::run(Vector& u, Vector& v, const TransientDriver::Resume* resume) {
+TransientSummary ExplicitDriver::run(Vector& u, Vector& v, const Resume* resume) {
   TransientSummary& sum = sum_;
   const double dt = s_.timeStep, t0 = s_.startTime;
   if (!(dt > 0) || !(s_.endTime > t0))

@@ -15,15 +15,15 @@
 
 namespace choc {
 
-class ExplicitDriver {
+class ExplicitDriver : public StepLoop {
  public:
   // inverseMass: 1 / M_ii on the operator's map (every entry finite and positive).
   ExplicitDriver(SecondOrderOperator& op, RCP<const Vector> inverseMass, TransientSettings settings,
                  int substeps);
-  void addObserver(StepObserver* o) { observers_.push_back(o); }
-  // As TransientDriver::run. Throws NumericalError when the state stops being finite.
-  TransientSummary run(Vector& u, Vector& v, const TransientDriver::Resume* resume = nullptr);
-  void archive(StateArchive& a, const StateVectors& vectors) const;
+  void addObserver(StepObserver* o) override { observers_.push_back(o); }
+  // Throws NumericalError when the state stops being finite.
+  TransientSummary run(Vector& u, Vector& v, const Resume* resume = nullptr) override;
+  void archive(StateArchive& a, const StateVectors& vectors) const override;
   int substeps() const { return substeps_; }
 
  private:

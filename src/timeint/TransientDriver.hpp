@@ -55,22 +55,33 @@ struct TransientSummary {
   double smallestStep = 0.0;
 };
 
-class TransientDriver {
+// What a transient analysis drives: a step loop (implicit Newmark family or explicit central
+// differences) with observers and checkpoints.
+class StepLoop {
  public:
-  TransientDriver(SecondOrderOperator& op, NewmarkFamily scheme, TransientSettings settings);
-  void addObserver(StepObserver* o) { observers_.push_back(o); }
-  // Integrates from (u, v) at startTime to endTime; u and v hold the final state on return.
-  // Throws NumericalError when a step fails beyond the allowed cuts.
-  // With `resume`, continues from the state a checkpoint holds (archive()), with the
-  // operator's own state restored, and does not report the checkpoint's state again.
+  virtual ~StepLoop() = default;
+  virtual void addObserver(StepObserver* o) = 0;
+  // Where a checkpoint's state is.
   struct Resume {
     const StateArchive& archive;
     const StateVectors& vectors;
   };
-  TransientSummary run(Vector& u, Vector& v, const Resume* resume = nullptr);
+  // Integrates from (u, v) at startTime to endTime; u and v hold the final state on return.
+  // With `resume`, continues from the state a checkpoint holds (archive()), with the
+  // operator's own state restored, and does not report the checkpoint's state again.
+  virtual TransientSummary run(Vector& u, Vector& v, const Resume* resume = nullptr) = 0;
   // The accepted state and counters (call from a step observer at a nominal boundary):
   // records "driver/*" and the operator's.
-  void archive(StateArchive& a, const StateVectors& vectors) const;
+  virtual void archive(StateArchive& a, const StateVectors& vectors) const = 0;
+};
+
+class TransientDriver : public StepLoop {
+ public:
+  TransientDriver(SecondOrderOperator& op, NewmarkFamily scheme, TransientSettings settings);
+  void addObserver(StepObserver* o) override { observers_.push_back(o); }
+  // Throws NumericalError when a step fails beyond the allowed cuts.
+  TransientSummary run(Vector& u, Vector& v, const Resume* resume = nullptr) override;
+  void archive(StateArchive& a, const StateVectors& vectors) const override;
   const NewmarkFamily& scheme() const { return scheme_; }
 
  private:
