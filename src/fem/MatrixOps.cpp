@@ -5,6 +5,13 @@
 
 namespace choc {
 
+void RowCopy::read(const CrsMatrix& A, GO row) {
+  const size_t n = A.getNumEntriesInGlobalRow(row);
+  cols.resize(n);
+  vals.resize(n);
+  A.getGlobalRowCopy(row, cols(), vals(), size);
+}
+
 RCP<CrsMatrix> addMatrices(double a, const CrsMatrix& A, double b, const CrsMatrix& B) {
   return Tpetra::MatrixMatrix::add(a, false, A, b, false, B);
 }

@@ -9,6 +9,8 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "fem/MatrixOps.hpp"
+
 namespace choc {
 
 namespace {
@@ -51,19 +53,14 @@ RCP<Vector> lumpedMassDiagonal(const CrsMatrix& M) {
   int bad = 0;
   {
     auto dd = d->getDataNonConst();
-    Teuchos::Array<GO> ci;
-    Teuchos::Array<double> cv;
+    RowCopy row;
     for (size_t i = 0; i < rowMap->getNodeNumElements(); ++i) {
       const GO g = rowMap->getGlobalElement(LO(i));
-      const size_t n = M.getNumEntriesInGlobalRow(g);
-      ci.resize(n);
-      cv.resize(n);
-      size_t got = 0;
-      M.getGlobalRowCopy(g, ci(), cv(), got);
+      row.read(M, g);
       double diag = 0.0;
-      for (size_t k = 0; k < got; ++k) {
-        if (ci[k] == g) diag += cv[k];
-        else if (cv[k] != 0.0) bad = 1;
+      for (size_t k = 0; k < row.size; ++k) {
+        if (row.cols[k] == g) diag += row.vals[k];
+        else if (row.vals[k] != 0.0) bad = 1;
       }
       if (!(diag > 0)) bad = 1;
       dd[i] = diag;
@@ -84,17 +81,11 @@ double omegaMaxBound(const CrsMatrix& K, const Vector& massDiagonal, const Conta
   auto md = massDiagonal.getData();
   const size_t nLocal = rowMap->getNodeNumElements();
   std::vector<double> rows(nLocal, 0.0);
-  Teuchos::Array<GO> ci;
-  Teuchos::Array<double> cv;
+  RowCopy row;
   for (size_t i = 0; i < nLocal; ++i) {
-    const GO g = rowMap->getGlobalElement(LO(i));
-    const size_t n = K.getNumEntriesInGlobalRow(g);
-    ci.resize(n);
-    cv.resize(n);
-    size_t got = 0;
-    K.getGlobalRowCopy(g, ci(), cv(), got);
-    for (size_t k = 0; k < got; ++k)
-      rows[i] += std::abs(cv[k]) / std::sqrt(md[i] * mc[colMap->getLocalElement(ci[k])]);
+    row.read(K, rowMap->getGlobalElement(LO(i)));
+    for (size_t k = 0; k < row.size; ++k)
+      rows[i] += std::abs(row.vals[k]) / std::sqrt(md[i] * mc[colMap->getLocalElement(row.cols[k])]);
   }
   if (contact && contactStiffness > 0)
     for (const ContactConstraint& c : contact->constraints()) {
