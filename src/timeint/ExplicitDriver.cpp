@@ -34,13 +34,7 @@ void ExplicitDriver::acceleration(const Vector& u, const Vector& vStar, double t
 }
 
 void ExplicitDriver::archive(StateArchive& a, const StateVectors& vectors) const {
-  vectors.put(a, "driver/u", *u_);
-  vectors.put(a, "driver/v", *v_);
-  vectors.put(a, "driver/a", *a_);
-  a.putDouble("driver/time", t_);
-  a.putInt("driver/nominal", nominal_);
-  a.putPod("driver/summary", sum_);
-  op_.archive(a);
+  putState(a, vectors, {*u_, *v_, *a_, t_, nominal_, sum_}, op_);
 }
 
 TransientSummary ExplicitDriver::run(Vector& u, Vector& v, const Resume* resume) {
@@ -50,14 +44,7 @@ TransientSummary ExplicitDriver::run(Vector& u, Vector& v, const Resume* resume)
     throw std::invalid_argument("ExplicitDriver: needs dt > 0 and endTime > startTime");
   StepInfo info;
   if (resume) {
-    resume->vectors.get(resume->archive, "driver/u", *u_);
-    resume->vectors.get(resume->archive, "driver/v", *v_);
-    resume->vectors.get(resume->archive, "driver/a", *a_);
-    t_ = resume->archive.getDouble("driver/time");
-    nominal_ = resume->archive.getInt("driver/nominal");
-    sum = resume->archive.getPod<TransientSummary>("driver/summary");
-    op_.unarchive(resume->archive);
-    op_.saveState();
+    getState(*resume, {*u_, *v_, *a_, t_, nominal_, sum}, op_);
   } else {
     sum = TransientSummary();
     sum.smallestStep = dt / substeps_;

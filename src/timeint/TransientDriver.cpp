@@ -85,25 +85,30 @@ void TransientDriver::initialState(TransientSummary& sum) {
   op_.saveState();
 }
 
-void TransientDriver::archive(StateArchive& a, const StateVectors& vectors) const {
-  vectors.put(a, "driver/u", *u0_);
-  vectors.put(a, "driver/v", *v0_);
-  vectors.put(a, "driver/a", *a0_);
-  a.putDouble("driver/time", t_);
-  a.putInt("driver/nominal", nominal_);
-  a.putPod("driver/summary", sum_);
-  op_.archive(a);
+void StepLoop::putState(StateArchive& a, const StateVectors& vectors, const ConstState& s,
+                        const SecondOrderOperator& op) {
+  vectors.put(a, "driver/u", s.u);
+  vectors.put(a, "driver/v", s.v);
+  vectors.put(a, "driver/a", s.a);
+  a.putDouble("driver/time", s.time);
+  a.putInt("driver/nominal", s.nominal);
+  a.putPod("driver/summary", s.summary);
+  op.archive(a);
 }
 
-void TransientDriver::resumeState(const Resume& r, TransientSummary& sum) {
-  r.vectors.get(r.archive, "driver/u", *u0_);
-  r.vectors.get(r.archive, "driver/v", *v0_);
-  r.vectors.get(r.archive, "driver/a", *a0_);
-  t_ = r.archive.getDouble("driver/time");
-  nominal_ = r.archive.getInt("driver/nominal");
-  sum = r.archive.getPod<TransientSummary>("driver/summary");
-  op_.unarchive(r.archive);
-  op_.saveState();
+void StepLoop::getState(const Resume& r, const State& s, SecondOrderOperator& op) {
+  r.vectors.get(r.archive, "driver/u", s.u);
+  r.vectors.get(r.archive, "driver/v", s.v);
+  r.vectors.get(r.archive, "driver/a", s.a);
+  s.time = r.archive.getDouble("driver/time");
+  s.nominal = r.archive.getInt("driver/nominal");
+  s.summary = r.archive.getPod<TransientSummary>("driver/summary");
+  op.unarchive(r.archive);
+  op.saveState();
+}
+
+void TransientDriver::archive(StateArchive& a, const StateVectors& vectors) const {
+  putState(a, vectors, {*u0_, *v0_, *a0_, t_, nominal_, sum_}, op_);
 }
 
 TransientSummary TransientDriver::run(Vector& u, Vector& v, const Resume* resume) {
@@ -114,7 +119,7 @@ TransientSummary TransientDriver::run(Vector& u, Vector& v, const Resume* resume
     throw std::invalid_argument("TransientDriver: needs dt > 0 and endTime > startTime");
   StepInfo info;
   if (resume) {
-    resumeState(*resume, sum);
+    getState(*resume, {*u0_, *v0_, *a0_, t_, nominal_, sum}, op_);
   } else {
     u0_->assign(u);
     v0_->assign(v);

@@ -73,6 +73,26 @@ class StepLoop {
   // The accepted state and counters (call from a step observer at a nominal boundary):
   // records "driver/*" and the operator's.
   virtual void archive(StateArchive& a, const StateVectors& vectors) const = 0;
+
+ protected:
+  // The accepted state (u, v, a at time t after `nominal` nominal steps) and the counters, as
+  // "driver/*" with the operator's own state, and back (the operator's state restored and
+  // saved as the accepted one).
+  struct State {
+    Vector &u, &v, &a;
+    double& time;
+    long long& nominal;
+    TransientSummary& summary;
+  };
+  struct ConstState {
+    const Vector &u, &v, &a;
+    double time;
+    long long nominal;
+    const TransientSummary& summary;
+  };
+  static void putState(StateArchive& a, const StateVectors& vectors, const ConstState& s,
+                       const SecondOrderOperator& op);
+  static void getState(const Resume& r, const State& s, SecondOrderOperator& op);
 };
 
 class TransientDriver : public StepLoop {
@@ -88,7 +108,6 @@ class TransientDriver : public StepLoop {
   // One attempt from state n to t + dt; returns the outcome, leaves u1, v1, a1.
   NewtonOutcome attempt(double t, double dt);
   void initialState(TransientSummary& sum);
-  void resumeState(const Resume& r, TransientSummary& sum);
   void notify(const StepInfo& info);
 
   SecondOrderOperator& op_;
