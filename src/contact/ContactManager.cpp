@@ -27,17 +27,15 @@ std::vector<char> ContactManager::surfaceNodes(const Mesh& mesh) const {
   return flags;
 }
 
-namespace {
-
 // Constraint s: B_s u = n . (u_s - sum_i w_i u_i) over the slave node and the master face's
 // nodes. allComponents keeps every component of the slave node even where n is zero (curved
 // obstacles, whose normal turns: the matrix graph must hold every coupling).
-ContactConstraint makeConstraint(const Mesh& mesh, const DofMap& dofs, const SlaveProjection& sp,
-                                 bool allComponents) {
+ContactConstraint makeContactConstraint(const Point3& reference, const DofMap& dofs,
+                                 const SlaveProjection& sp, bool allComponents) {
   ContactConstraint c;
   c.geometry = sp;
   c.owner = dofs.ownerOfNode(sp.slaveNode);
-  c.reference = mesh.coords[sp.slaveNode];
+  c.reference = reference;
   std::vector<std::pair<GO, double>> t;
   for (int d = 0; d < 3; ++d) {
     const double n = sp.normal[d];
@@ -46,7 +44,7 @@ ContactConstraint makeConstraint(const Mesh& mesh, const DofMap& dofs, const Sla
     if (ds >= 0) t.push_back({GO(ds), n});
     for (size_t i = 0; i < sp.masterNodes.size(); ++i) {
       const long long dm = dofs.dof(sp.masterNodes[i], d);
-      if (dm >= 0 && sp.weights[i] != 0.0) t.push_back({GO(dm), -sp.weights[i] * n});
+      if (dm >= 0 && (sp.weights[i] != 0.0 || allComponents)) t.push_back({GO(dm), -sp.weights[i] * n});
     }
   }
   std::sort(t.begin(), t.end());
@@ -62,8 +60,6 @@ ContactConstraint makeConstraint(const Mesh& mesh, const DofMap& dofs, const Sla
     }
   return c;
 }
-
-}  // namespace
 
 ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const Map> map,
                                const std::vector<PairDefinition>& pairs,
@@ -82,10 +78,28 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
     hasCurvedObstacles_ = hasCurvedObstacles_ ||
                           (pairs_[p].hasObstacle && pairs_[p].obstacle.shape != RigidObstacle::Shape::Plane);
     unpaired_ += static_cast<int>(res.unpaired.size());
+    // Curved obstacles and followed surfaces turn their normals: every component is a term.
+    const bool allComponents = pairs_[p].followMotion ||
+        (pairs_[p].hasObstacle && pairs_[p].obstacle.shape != RigidObstacle::Shape::Plane);
     for (const SlaveProjection& sp : res.projections)
-      constraints_.push_back(makeConstraint(mesh, dofs, sp, pairs_[p].hasObstacle &&
-                                            pairs_[p].obstacle.shape != RigidObstacle::Shape::Plane));
+      constraints_.push_back(makeContactConstraint(mesh.coords[sp.slaveNode], dofs, sp, allComponents));
   }
+  indexTerms();
+  buildSlipTerms(dofs);
+  status_.assign(constraints_.size(), 0);
+  lambda_.assign(constraints_.size(), 0.0);
+  slip_.assign(constraints_.size(), 0.0);
+  slipStart_.assign(constraints_.size(), Vec3{0, 0, 0});
+  followed_ = std::make_unique<FollowedSurfaces>(mesh, dofs, pairs_);
+  if (followed_->empty()) followed_.reset();
+  dofs_ = &dofs;
+  save();
+}
+
+// contactDofs_ and localTerms_ from the constraints' terms.
+void ContactManager::indexTerms() {
+  contactDofs_.clear();
+  localTerms_.clear();
   for (const auto& c : constraints_)
     for (const auto& t : c.terms) contactDofs_.push_back(t.first);
   std::sort(contactDofs_.begin(), contactDofs_.end());
@@ -98,10 +112,6 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
                     t.second});
     localTerms_.push_back(lt);
   }
-  buildSlipTerms(dofs);
-  status_.assign(constraints_.size(), 0);
-  lambda_.assign(constraints_.size(), 0.0);
-  save();
 }
 
 std::vector<double> ContactManager::contactValues(const Vector& u) const {
@@ -222,13 +232,17 @@ std::vector<double> ContactManager::slips(const Vector& u, double t) const {
     }
     const double dn = dot(d, g.normal);
     for (int c = 0; c < 3; ++c) d[c] -= dn * g.normal[c];
-    out[s] = norm(d);
+    out[s] = followed_ && followed_->follows(g.pair) ? slip_[s] : norm(d);
   }
   return out;
 }
 
 void ContactManager::beginStep(const Vector& u, double t) {
-  if (!hasObstacles_) return;
+  if (followed_) followSurfaces(u);
+  if (hasObstacles_) placeObstacles(u, t);
+}
+
+void ContactManager::placeObstacles(const Vector& u, double t) {
   // A plane's constraint is exact and does not depend on u: (X + u - p(t)) . n - n . u. Only
   // curved obstacles need the nodes' current positions (a collective gather).
   const std::vector<double> x = hasCurvedObstacles_ ? contactValues(u) : std::vector<double>();
@@ -311,12 +325,14 @@ void ContactManager::archive(StateArchive& a) const {
   a.putVector("contact/status", savedStatus_);
   a.putVector("contact/pressure", savedLambda_);
   a.putDouble("contact/scale", scale_);
+  if (followed_) a.putVector("contact/slip", slip_);
 }
 
 void ContactManager::unarchive(const StateArchive& a) {
   status_ = a.getVector<char>("contact/status", constraints_.size());
   lambda_ = a.getVector<double>("contact/pressure", constraints_.size());
   scale_ = a.getDouble("contact/scale");
+  if (followed_) slip_ = a.getVector<double>("contact/slip", constraints_.size());
   ++version_;
   save();
 }

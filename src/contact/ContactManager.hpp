@@ -16,6 +16,7 @@
 
 #include "contact/ContactMethod.hpp"
 #include "contact/ContactPairing.hpp"
+#include "contact/FollowedSurfaces.hpp"
 #include "fem/DofMap.hpp"
 #include "core/TpetraTypes.hpp"
 #include "mesh/Mesh.hpp"
@@ -32,6 +33,13 @@ struct ContactConstraint {
   Point3 reference{};
   std::array<int, 3> componentTerm{-1, -1, -1};
 };
+
+// The constraint of one slave node: B_s u = n . (u_s - sum_i w_i u_i) over the slave node and
+// its master face's nodes (merged DOFs, sorted). allComponents keeps every component of the
+// slave and master nodes even where n is zero (normals that turn: the matrix graph must hold
+// every coupling).
+ContactConstraint makeContactConstraint(const Point3& reference, const DofMap& dofs,
+                                        const SlaveProjection& sp, bool allComponents);
 
 // A pair that cannot be set up (no slave node within the search distance, a slave node where
 // an obstacle's normal is undefined...): which pair, and why.
@@ -62,7 +70,8 @@ class ContactManager {
   std::vector<char> surfaceNodes(const Mesh& mesh) const;
 
   // Tangential slip of each slave node at u and time t [m]: the length of the tangential part
-  // of its displacement relative to its master point (or to the moving obstacle) since t = 0.
+  // of its displacement relative to its master point (or to the moving obstacle) since t = 0;
+  // on a followed surface, the path length of its slip while in contact (commitStep).
   // Collective; the same array on every rank.
   std::vector<double> slips(const Vector& u, double t) const;
   // Gaps at u (the same array on every rank).
@@ -83,9 +92,21 @@ class ContactManager {
   // re-linearised at u (the last accepted state) with the obstacles placed at time t:
   // gap(u') = d(x + u) + n . (u' - u), n the obstacle's normal at x + u. Collective. Throws
   // NumericalError when a node reaches a point where the normal is undefined.
+  // Pairs with 'Search' = current are paired again first, on the configuration at u: each
+  // slave node with the closest point of its master surface (SurfaceSearch), the constraint
+  // re-linearised there, gap(u') = g(u) + n . ((u'_s - u_s) - sum_i w_i (u'_i - u_i)); a node
+  // whose search finds no face within the search distance has no constraint (inactive) until
+  // one does. Coefficients that move by less than 1e-10 are kept (no refactorisation).
   void beginStep(const Vector& u, double t);
-  // Bumped whenever a constraint's coefficients B_s change (curved obstacles).
+  // Bumped whenever a constraint's coefficients B_s change (curved obstacles, followed surfaces).
   int geometryVersion() const { return geometryVersion_; }
+  // Bumped whenever a constraint couples other DOFs (a slave node of a followed surface moved
+  // to another master face): the effective matrix needs a new graph.
+  int topologyVersion() const { return topologyVersion_; }
+  // An accepted step ending at u: each active node of a followed surface adds to its slip the
+  // tangential motion relative to its master point since beginStep. Collective.
+  void commitStep(const Vector& u);
+  long long searchProjections() const { return followed_ ? followed_->projections() : 0; }
 
   void initialize(const Vector& u);          // statuses from the gaps at u, lambda = 0
   StatusUpdate updateStatus(const Vector& u);  // complementarity test, all ranks agree
@@ -108,6 +129,10 @@ class ContactManager {
   RCP<const Comm> comm() const { return map_->getComm(); }
 
  private:
+  void indexTerms();
+  void followSurfaces(const Vector& u);
+  void placeObstacles(const Vector& u, double t);
+  Vec3 tangentialOffset(const ContactConstraint& c) const;  // at the followed positions
   std::vector<double> contactValues(const Vector& u) const;  // u at contactDofs_, replicated
   std::vector<double> gather(const std::vector<GO>& dofs, const Vector& u) const;  // replicated
   void buildSlipTerms(const DofMap& dofs);
@@ -124,7 +149,12 @@ class ContactManager {
   double scale_ = 1.0;
   int unpaired_ = 0;
   int version_ = 0;
-  int geometryVersion_ = 0;
+  int geometryVersion_ = 0, topologyVersion_ = 0;
+  std::unique_ptr<FollowedSurfaces> followed_;  // null without 'Search' = current pairs
+  const DofMap* dofs_ = nullptr;
+  std::vector<double> slip_;     // followed surfaces: accumulated slip [m]
+  std::vector<Vec3> slipStart_;  // tangential offset at the last beginStep
+  bool paired_ = false;          // slipStart_ holds the offsets of the current pairing
   bool hasObstacles_ = false, hasCurvedObstacles_ = false;
 };
 

@@ -6,14 +6,16 @@
 // shape-function weights at the projection, the master's outward unit normal there, the
 // reference gap g0 = (x_s - x_m) . n (positive when open) and the slave node's tributary
 // area (integral of its shape function over the slave faces; for quadratic faces, whose corner
-// integrals are zero or negative, the HRZ-lumped face mass: positive, same total). Reference configuration only:
-// the displacements are small (linear elasticity), so the pairing is computed once.
+// integrals are zero or negative, the HRZ-lumped face mass: positive, same total). This is the
+// pairing at t = 0; a pair with 'Search' = current is paired again before every step on the
+// current configuration (ContactManager::beginStep, SurfaceSearch).
 #pragma once
 #include <array>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "contact/ContactFaces.hpp"
 #include "contact/RigidObstacle.hpp"
 #include "mesh/Mesh.hpp"
 
@@ -24,6 +26,7 @@ struct PairDefinition {
   std::string masterSideSet;  // e.g. CNT_POU1
   std::string slaveSideSet;   // e.g. CNT_POU2
   double searchDistance = 0;  // largest |g0| accepted [m]
+  bool followMotion = false;  // 'Search' = current: paired again before every step
   bool hasObstacle = false;   // the master is a rigid obstacle (masterSideSet empty)
   bool axisymmetric = false;  // slave areas of the whole ring: edge length weighted by 2 pi r
   RigidObstacle obstacle{};
@@ -51,15 +54,6 @@ struct PairingResult {
   std::vector<SlaveProjection> projections;  // paired slave nodes, ascending node number
   std::vector<int> unpaired;                 // slave nodes projecting onto no master face
 };
-
-// Geometry of one QUAD4 face: position and tangents at (xi, eta).
-struct QuadPoint {
-  Point3 x{}, dxi{}, deta{};
-  std::array<double, 4> N{};
-};
-QuadPoint evaluateQuad(const std::array<Point3, 4>& corners, double xi, double eta);
-// Closest point of x on the bilinear face; returns false when Gauss-Newton does not converge.
-bool projectOnQuad(const std::array<Point3, 4>& corners, const Point3& x, double& xi, double& eta);
 
 // Throws std::invalid_argument naming the side set when it is missing, not made of faces of
 // solids (QUAD4, QUAD8, TRI3, TRI6), or when no slave node pairs.

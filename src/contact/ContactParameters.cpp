@@ -39,7 +39,13 @@ void declareContactParameters(Teuchos::ParameterList& p) {
   declareString(pr, "Node Normal", "0 0 0", "'x y z': n of a node-to-node pair (normalised)");
   declareDouble(pr, "Node Offset", 0.0, "gap offset of a node-to-node pair [m] (DIST_1 + DIST_2)");
   declareDouble(pr, "Search Distance", 1e-3,
-                "largest initial |gap| of a pairing with a master side set [m]", Range::positive());
+                "largest |gap| of a pairing with a master side set [m]; also the reach of the "
+                "search in the current configuration", Range::positive());
+  declareChoice(pr, "Search", "current", {"current", "reference"},
+                "with a master side set: current: every slave node is paired again before each "
+                "step with the closest point of the master surface in the current configuration "
+                "(curved surfaces, non-matching meshes, large sliding); reference: paired once at "
+                "t = 0 (small sliding of aligned faces: the SDNL111 decks)");
   ParameterList& ob = declareSublist(pr, "Obstacle",
                                      "a rigid obstacle given by its geometry, in place of a master "
                                      "side set (every slave node is paired with it)");
@@ -129,6 +135,7 @@ PairDefinition readPair(const ParameterList& pl, const std::string& name, const 
     throwInput(file, path + "/Master Side Set", d.masterSideSet,
                "master and slave are the same surface", "pair two different side sets");
   if (d.hasObstacle) d.obstacle = readObstacle(ob, file, path + "/Obstacle");
+  d.followMotion = !d.hasObstacle && pl.get<std::string>("Search") == "current";
   return d;
 }
 

@@ -44,7 +44,12 @@ StructuralOperator::StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatr
 
 // The effective system is built at the first correction (an explicit run never builds it).
 ContactSystem& StructuralOperator::system() {
+  if (system_ && contact_ && contact_->topologyVersion() != systemTopology_) {
+    system_.reset();  // a slave node changed master face: a new graph (and factorisation)
+    haveKey_ = false;
+  }
   if (!system_) {
+    systemTopology_ = contact_ ? contact_->topologyVersion() : 0;
     system_ = std::make_unique<ContactSystem>(K_, M_, contact_,
                                               links_ ? links_->couplings() : std::vector<std::vector<GO>>());
     rhs_ = rcp(new MultiVector(system_->map(), 1));
@@ -252,8 +257,14 @@ CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, c
 void StructuralOperator::beginStep(const Vector& u, double t, double dt) {
   if (links_) links_->beginStep(dt);
   if (!contact_) return;
-  TimerScope ts(timer_, "Transient: contact");
+  TimerScope ts(timer_, "Transient: contact search");
   contact_->beginStep(u, t);
+}
+
+void StructuralOperator::acceptStep(const Vector& u) {
+  if (!contact_) return;
+  TimerScope ts(timer_, "Transient: contact search");
+  contact_->commitStep(u);
 }
 
 ConstraintUpdate StructuralOperator::updateConstraints(const Vector& u) {

@@ -42,6 +42,7 @@ class StructuralOperator : public SecondOrderOperator {
   CorrectionStatus solveInitialAcceleration(const Vector& u, const Vector& r, Vector& a) override;
   ConstraintUpdate updateConstraints(const Vector& u) override;
   void beginStep(const Vector& u, double t, double dt) override;
+  void acceptStep(const Vector& u) override;
   void initializeConstraints(const Vector& u) override;
   void saveState() override;
   void restoreState() override;
@@ -73,6 +74,7 @@ class StructuralOperator : public SecondOrderOperator {
   std::unique_ptr<LinearSolver> solver_;
   Teuchos::StackedTimer* timer_;
   std::unique_ptr<ContactSystem> system_;
+  int systemTopology_ = 0;  // the contact manager's topologyVersion() the graph was built for
   RCP<Vector> tmp_, energyTmp_;
   RCP<MultiVector> rhs_, x_;
   std::vector<char> massless_;  // per local DOF: its row of M is zero

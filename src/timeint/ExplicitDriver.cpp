@@ -23,6 +23,7 @@ void ExplicitDriver::notify(const StepInfo& info) {
 }
 
 void ExplicitDriver::acceleration(const Vector& u, const Vector& vStar, double t, double dt, Vector& a) {
+  op_.acceptStep(u);  // the previous sub-step ended at u
   op_.beginStep(u, t, dt);
   op_.updateConstraints(u);  // penalty status at u (the only constraints an explicit step takes)
   op_.applyForces(u, vStar, t, *r_);

@@ -66,6 +66,8 @@ class SecondOrderOperator {
   // Before the step of length dt to time t from the accepted state u (and before the initial
   // state, with t the start time and dt = 0): constraints that follow the motion are updated.
   virtual void beginStep(const Vector& /*u*/, double /*t*/, double /*dt*/) {}
+  // A step was accepted at u (before saveState): state that accumulates over accepted steps.
+  virtual void acceptStep(const Vector& /*u*/) {}
   // Re-evaluates the constraint status at u (after a converged Newton solve).
   virtual ConstraintUpdate updateConstraints(const Vector& u) = 0;
   // Initial status from u (before the first step).

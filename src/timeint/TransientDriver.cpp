@@ -172,6 +172,7 @@ TransientSummary TransientDriver::run(Vector& u, Vector& v, const Resume* resume
       std::swap(u0_, u1_);
       std::swap(v0_, v1_);
       std::swap(a0_, a1_);
+      op_.acceptStep(*u0_);
       op_.saveState();
       op_.applyMass(*a0_, *Ma0_);
       op_.applyForces(*u0_, *v0_, t, *F0_);

@@ -1,0 +1,104 @@
+// ContactManager: the pairs whose search follows the motion ('Search' = current).
+#include <algorithm>
+#include <cmath>
+
+#include "contact/ContactManager.hpp"
+
+namespace choc {
+
+namespace {
+
+bool sameDofs(const std::vector<std::pair<GO, double>>& a, const std::vector<std::pair<GO, double>>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t k = 0; k < a.size(); ++k)
+    if (a[k].first != b[k].first) return false;
+  return true;
+}
+
+double largestChange(const std::vector<std::pair<GO, double>>& a,
+                     const std::vector<std::pair<GO, double>>& b) {
+  double m = 0.0;
+  for (size_t k = 0; k < a.size(); ++k) m = std::max(m, std::abs(a[k].second - b[k].second));
+  return m;
+}
+
+}  // namespace
+
+Vec3 ContactManager::tangentialOffset(const ContactConstraint& c) const {
+  const SlaveProjection& g = c.geometry;
+  if (g.masterNodes.empty()) return Vec3{0, 0, 0};
+  Vec3 d = followed_->position(g.slaveNode);
+  for (size_t i = 0; i < g.masterNodes.size(); ++i) {
+    const Point3 xm = followed_->position(g.masterNodes[i]);
+    for (int k = 0; k < 3; ++k) d[k] -= g.weights[i] * xm[k];
+  }
+  const double dn = dot(d, g.normal);
+  for (int k = 0; k < 3; ++k) d[k] -= dn * g.normal[k];
+  return d;
+}
+
+void ContactManager::followSurfaces(const Vector& u) {
+  followed_->place(gather(followed_->dofs(), u));
+  bool topology = false, turned = false;
+  for (size_t s = 0; s < constraints_.size(); ++s) {
+    ContactConstraint& c = constraints_[s];
+    const int p = c.geometry.pair;
+    if (!followed_->follows(p)) continue;
+    SlaveProjection sp = c.geometry;
+    SurfaceHit hit;
+    double gap = pairs_[p].searchDistance;
+    if (followed_->find(p, followed_->position(sp.slaveNode), hit)) {
+      sp.masterFace = hit.face;
+      sp.masterNodes = followed_->face(p, hit.face).nodes;
+      sp.weights = hit.N;
+      sp.xi = hit.xi;
+      sp.eta = hit.eta;
+      sp.normal = hit.normal;
+      gap = hit.gap;
+    } else {
+      sp.masterFace = -1;
+      sp.masterNodes.clear();
+      sp.weights.clear();
+      sp.normal = Point3{0, 0, 0};
+      if (status_[s]) {  // it left its master surface: no force, no multiplier
+        status_[s] = 0;
+        lambda_[s] = 0.0;
+        ++version_;
+      }
+    }
+    ContactConstraint next = makeContactConstraint(c.reference, *dofs_, sp, true);
+    if (!sameDofs(next.terms, c.terms)) {
+      topology = true;
+      c.terms = next.terms;
+      c.componentTerm = next.componentTerm;
+      c.geometry = sp;
+    } else if (largestChange(next.terms, c.terms) > 1e-10) {
+      turned = true;
+      c.terms = next.terms;
+      c.geometry = sp;
+    }  // else the coefficients stay: the linearisation point moves, not the matrix
+    double bu = 0.0;
+    for (const auto& [dof, coeff] : c.terms) bu += coeff * followed_->displacement(dof);
+    c.geometry.gap0 = gap - bu;
+    slipStart_[s] = tangentialOffset(c);
+  }
+  paired_ = true;
+  if (topology) ++topologyVersion_;
+  if (topology || turned) {
+    indexTerms();
+    ++geometryVersion_;
+  }
+}
+
+void ContactManager::commitStep(const Vector& u) {
+  if (!followed_ || !paired_) return;
+  followed_->place(gather(followed_->dofs(), u));
+  for (size_t s = 0; s < constraints_.size(); ++s) {
+    const ContactConstraint& c = constraints_[s];
+    if (!status_[s] || !followed_->follows(c.geometry.pair)) continue;
+    const Vec3 d = tangentialOffset(c);
+    slip_[s] += norm(Vec3{d[0] - slipStart_[s][0], d[1] - slipStart_[s][1], d[2] - slipStart_[s][2]});
+  }
+}
+
+}  // namespace choc
