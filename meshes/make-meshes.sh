@@ -32,3 +32,5 @@ gmsh -1 -format msh41 "$here/sdnd101.geo" -o "$here/sdnd101.msh" > /dev/null
 gmsh -1 -format msh41 "$here/sdnl32.geo" -o "$here/sdnl32.msh" > /dev/null
 # SDND100 (issue 15): the oscillator with friction, one beam across the motion for the spring and mass.
 gmsh -1 -format msh41 "$here/sdnd100.geo" -o "$here/sdnd100.msh" > /dev/null
+# Sliding (issue 14): a block pushed along a longer foundation, non-matching HEX8 faces.
+gmsh -3 -format msh41 "$here/sliding_blocks.geo" -o "$here/sliding_blocks.msh" > /dev/null

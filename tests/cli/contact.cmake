@@ -47,3 +47,11 @@ add_test(NAME cli.direct_links
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/direct_links.py
                  $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/direct_links)
 set_tests_properties(cli.direct_links PROPERTIES TIMEOUT 300 LABELS cli)
+
+# Large sliding (issue 14): input/sliding.xml's block pushed across 22 faces of a stiff
+# foundation keeps a closed contact with a pressure uniform to 1 %, slips as it moves, creates no
+# energy; on an elastic foundation the dent follows the block only with 'Search' = current.
+add_test(NAME cli.sliding
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/sliding.py
+                 $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/sliding)
+set_tests_properties(cli.sliding PROPERTIES TIMEOUT 300 LABELS cli)

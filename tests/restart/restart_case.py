@@ -66,8 +66,13 @@ def choc(a, out, extra=(), np_=1):
     return (MPIRUN + ["-np", str(np_)] + cmd) if np_ > 1 else cmd
 
 
+IGNORE = []  # --ignore: passed to compare_results.py with --tolerance
+
+
 def compare(ref, out, tolerance=None):
     cmd = [sys.executable, COMPARE, ref, out] + (["--tolerance", str(tolerance)] if tolerance else [])
+    if tolerance and IGNORE:
+        cmd += ["--ignore"] + IGNORE
     p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     print(p.stdout.strip())
     if p.returncode != 0:
@@ -314,6 +319,8 @@ def main():
     ap.add_argument("--np-first", type=int, default=1)
     ap.add_argument("--np-restart", type=int, default=1)
     ap.add_argument("--tolerance", type=float)
+    ap.add_argument("--ignore", nargs="*", default=[],
+                    help="columns and variables left out of a --tolerance comparison")
     ap.add_argument("--seeds", type=int, nargs="*", default=[1])
     ap.add_argument("--kills", type=int, default=3)
     ap.add_argument("--file-size", type=int)
@@ -323,6 +330,7 @@ def main():
     ap.add_argument("--checkpoint-seconds", type=float, default=0.0,
                     help="run a copy of the input with checkpoints every T seconds of wall time")
     a = ap.parse_args()
+    IGNORE.extend(a.ignore)
     a.out = os.path.abspath(a.out)
     os.makedirs(a.out, exist_ok=True)
     if a.checkpoint_steps or a.checkpoint_seconds:
