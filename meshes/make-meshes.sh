@@ -34,3 +34,5 @@ gmsh -1 -format msh41 "$here/sdnl32.geo" -o "$here/sdnl32.msh" > /dev/null
 gmsh -1 -format msh41 "$here/sdnd100.geo" -o "$here/sdnd100.msh" > /dev/null
 # Sliding (issue 14): a block pushed along a longer foundation, non-matching HEX8 faces.
 gmsh -3 -format msh41 "$here/sliding_blocks.geo" -o "$here/sliding_blocks.msh" > /dev/null
+# SDNL111 on non-matching meshes (issue 14): bar 1 HEX8 3 x 3, bar 2 TET4.
+gmsh -3 -format msh41 "$here/sdnl111_nonmatching.geo" -o "$here/sdnl111_nonmatching.msh" > /dev/null

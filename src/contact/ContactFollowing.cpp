@@ -8,6 +8,13 @@ namespace choc {
 
 namespace {
 
+// A followed constraint keeps its coefficients while none moves by more than this (they are
+// of order 1: normal components and shape-function weights). The linearised gap is exact at
+// the start of every step whatever the coefficients, so a kept set errs by at most this
+// fraction of the step's displacement increment, and the effective matrix is not refactored
+// for the 1e-9 tilts of a face loaded unevenly.
+constexpr double kCoefficientTolerance = 1e-6;
+
 bool sameDofs(const std::vector<std::pair<GO, double>>& a, const std::vector<std::pair<GO, double>>& b) {
   if (a.size() != b.size()) return false;
   for (size_t k = 0; k < a.size(); ++k)
@@ -72,7 +79,7 @@ void ContactManager::followSurfaces(const Vector& u) {
       c.terms = next.terms;
       c.componentTerm = next.componentTerm;
       c.geometry = sp;
-    } else if (largestChange(next.terms, c.terms) > 1e-10) {
+    } else if (largestChange(next.terms, c.terms) > kCoefficientTolerance) {
       turned = true;
       c.terms = next.terms;
       c.geometry = sp;

@@ -96,7 +96,7 @@ class ContactManager {
   // slave node with the closest point of its master surface (SurfaceSearch), the constraint
   // re-linearised there, gap(u') = g(u) + n . ((u'_s - u_s) - sum_i w_i (u'_i - u_i)); a node
   // whose search finds no face within the search distance has no constraint (inactive) until
-  // one does. Coefficients that move by less than 1e-10 are kept (no refactorisation).
+  // one does. Coefficients that move by less than 1e-6 are kept (no refactorisation).
   void beginStep(const Vector& u, double t);
   // Bumped whenever a constraint's coefficients B_s change (curved obstacles, followed surfaces).
   int geometryVersion() const { return geometryVersion_; }
