@@ -22,7 +22,16 @@ Transfinite Curve{1, 3} = n + 1;
 Transfinite Curve{2, 4} = 3;
 Transfinite Surface{1};
 Recombine Surface{1};
-f[] = Extrude {0, 0, -H} { Surface{1}; Layers{2}; Recombine; };
+// The frame-invariance test (tools/frame_invariance_sliding.py) turns the whole scene by
+// 'angle' radians about the axis (ax, ay, az) through the origin: both upper faces are turned,
+// then extruded along (dx, dy, dz), the turned (0, 0, -1) that the test passes.
+If (!Exists(angle))
+  angle = 0; ax = 0; ay = 0; az = 1; dx = 0; dy = 0; dz = -1;
+EndIf
+If (angle != 0)
+  Rotate {{ax, ay, az}, {0, 0, 0}, angle} { Surface{1}; }
+EndIf
+f[] = Extrude {H * dx, H * dy, H * dz} { Surface{1}; Layers{2}; Recombine; };
 
 // Block: its upper face at z = h, extruded downwards to z = 0.
 Point(101) = {x0, y0, h}; Point(102) = {x0 + b, y0, h}; Point(103) = {x0 + b, y0 + w, h};
@@ -34,7 +43,10 @@ Transfinite Curve{101, 103} = 7;
 Transfinite Curve{102, 104} = 4;
 Transfinite Surface{101};
 Recombine Surface{101};
-k[] = Extrude {0, 0, -h} { Surface{101}; Layers{3}; Recombine; };
+If (angle != 0)
+  Rotate {{ax, ay, az}, {0, 0, 0}, angle} { Surface{101}; }
+EndIf
+k[] = Extrude {h * dx, h * dy, h * dz} { Surface{101}; Layers{3}; Recombine; };
 
 Physical Volume("FOUNDATION") = {f[1]};
 Physical Volume("BLOCK") = {k[1]};

@@ -261,6 +261,26 @@ void StructuralOperator::beginStep(const Vector& u, double t, double dt) {
   contact_->beginStep(u, t);
 }
 
+double StructuralOperator::elasticTermsNorm(const Vector& u) const {
+  Vector uc(K_->getColMap());
+  auto importer = K_->getGraph()->getImporter();
+  if (importer.is_null()) uc.assign(u);
+  else uc.doImport(u, *importer, Tpetra::INSERT);
+  auto ud = uc.getData();
+  Teuchos::ArrayView<const LO> idx;
+  Teuchos::ArrayView<const double> val;
+  double local = 0.0;
+  for (size_t i = 0; i < K_->getNodeNumRows(); ++i) {
+    K_->getLocalRowView(LO(i), idx, val);
+    double row = 0.0;
+    for (LO k = 0; k < LO(idx.size()); ++k) row += std::abs(val[k]) * std::abs(ud[idx[k]]);
+    local += row * row;
+  }
+  double global = 0.0;
+  Teuchos::reduceAll<int, double>(*K_->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return std::sqrt(global);
+}
+
 void StructuralOperator::acceptStep(const Vector& u) {
   if (!contact_) return;
   TimerScope ts(timer_, "Transient: contact search");

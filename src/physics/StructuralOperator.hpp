@@ -43,6 +43,7 @@ class StructuralOperator : public SecondOrderOperator {
   ConstraintUpdate updateConstraints(const Vector& u) override;
   void beginStep(const Vector& u, double t, double dt) override;
   void acceptStep(const Vector& u) override;
+  double elasticTermsNorm(const Vector& u) const override;
   void initializeConstraints(const Vector& u) override;
   void saveState() override;
   void restoreState() override;

@@ -41,9 +41,9 @@ struct NewtonOutcome {
 // reference force norm}.
 struct ResidualNorms {
   double residual = 0.0, reference = 0.0;
-  // Round-off floor: the size of the largest term of the effective system at u (e.g.
-  // ||c_a M u||); a residual below 1e-12 of it is at the linear solver's round-off, whatever
-  // the reference (rigid motion, loads that cancel).
+  // Round-off floor: the size of the largest terms of the residual at u (||c_a M u||,
+  // || |K| |u| ||); a residual below 1e-12 of it is at round-off, whatever the reference
+  // (rigid motion, loads that cancel).
   double roundoff = 0.0;
   // Size of the solution's change that increments are measured against: ||u_{n+1} - u_n||
   // for a step, ||u|| for a static solve.

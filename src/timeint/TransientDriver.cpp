@@ -37,7 +37,10 @@ NewtonOutcome TransientDriver::attempt(double t, double dt) {
   u1_->update(1.0, *uTilde_, beta * dt * dt, *a0_, 0.0);
   const EffectiveCoefficients c = scheme_.effectiveCoefficients(dt);
   op_.applyMass(*u1_, *inertia_);
-  const double roundoff = c.ca * inertia_->norm2();  // ||c_a M u_{n+1}||: largest term of W u
+  // Round-off floor of the residual: the largest terms it sums, ||c_a M u_{n+1}|| and, for a
+  // body carried far by a rigid motion (whose elastic force K u cancels terms of size |K||u|),
+  // || |K| |u_{n+1}| ||.
+  const double roundoff = std::max(c.ca * inertia_->norm2(), op_.elasticTermsNorm(*u1_));
   auto residual = [&](const Vector& u, Vector& r) {
     a1_->update(1.0 / (beta * dt * dt), u, -1.0 / (beta * dt * dt), *uTilde_, 0.0);
     v1_->update(1.0, *vTilde_, gamma * dt, *a1_, 0.0);
