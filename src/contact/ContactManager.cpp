@@ -348,6 +348,19 @@ void ContactManager::restore() {
   lambda_ = savedLambda_;
 }
 
+std::string ContactManager::activeSummary() const {
+  std::vector<int> active(pairs_.size(), 0), all(pairs_.size(), 0);
+  for (size_t s = 0; s < constraints_.size(); ++s) {
+    ++all[constraints_[s].geometry.pair];
+    active[constraints_[s].geometry.pair] += status_[s] ? 1 : 0;
+  }
+  std::string out;
+  for (size_t p = 0; p < pairs_.size(); ++p)
+    out += (out.empty() ? "" : ", ") + format("pair '%s': %d of %d nodes in contact", pairs_[p].name.c_str(),
+                                              active[p], all[p]);
+  return out;
+}
+
 int ContactManager::activeCount() const {
   return static_cast<int>(std::count(status_.begin(), status_.end(), 1));
 }

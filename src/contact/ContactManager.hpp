@@ -119,6 +119,8 @@ class ContactManager {
   const std::vector<char>& status() const { return status_; }
   const std::vector<double>& pressures() const { return lambda_; }  // lambda_s [N]
   int activeCount() const;
+  // Per pair, its slave nodes in contact: "pair 'slide': 28 of 28 nodes in contact, ...".
+  std::string activeSummary() const;
   double energy(const Vector& u) const;
   int statusVersion() const { return version_; }  // bumped whenever a status changes
 

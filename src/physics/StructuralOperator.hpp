@@ -44,6 +44,7 @@ class StructuralOperator : public SecondOrderOperator {
   void beginStep(const Vector& u, double t, double dt) override;
   void acceptStep(const Vector& u) override;
   double elasticTermsNorm(const Vector& u) const override;
+  std::string constraintState() const override { return contact_ ? contact_->activeSummary() : ""; }
   void initializeConstraints(const Vector& u) override;
   void saveState() override;
   void restoreState() override;

@@ -40,9 +40,11 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
         break;
       }
       if (it >= s.maxIterations) {
+        const std::string state = op.constraintState();
         out.message = "Newton did not converge in " + std::to_string(s.maxIterations) +
                       " iterations (" +
-                      format("residual %.3e for a reference %.3e", n.residual, n.reference) + ")";
+                      format("residual %.3e for a reference %.3e", n.residual, n.reference) +
+                      (state.empty() ? "" : "; " + state) + ")";
         return out;
       }
       const CorrectionStatus cs = op.solveCorrection(c, u, r, du);

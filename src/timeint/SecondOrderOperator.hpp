@@ -66,6 +66,9 @@ class SecondOrderOperator {
   // Before the step of length dt to time t from the accepted state u (and before the initial
   // state, with t the start time and dt = 0): constraints that follow the motion are updated.
   virtual void beginStep(const Vector& /*u*/, double /*t*/, double /*dt*/) {}
+  // The constraints' state for a failure message, e.g. "pair 'slide': 28 of 28 nodes in
+  // contact" ("" when there are none).
+  virtual std::string constraintState() const { return ""; }
   // || |K| |u| ||: the size of the terms whose sum is the elastic force at u, for the
   // round-off floor of the residual (0 when not known).
   virtual double elasticTermsNorm(const Vector& /*u*/) const { return 0.0; }
