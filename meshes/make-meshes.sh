@@ -36,3 +36,5 @@ gmsh -1 -format msh41 "$here/sdnd100.geo" -o "$here/sdnd100.msh" > /dev/null
 gmsh -3 -format msh41 "$here/sliding_blocks.geo" -o "$here/sliding_blocks.msh" > /dev/null
 # SDNL111 on non-matching meshes (issue 14): bar 1 HEX8 3 x 3, bar 2 TET4.
 gmsh -3 -format msh41 "$here/sdnl111_nonmatching.geo" -o "$here/sdnl111_nonmatching.msh" > /dev/null
+# Contact patch test (issue 14): HEX8 3 x 3 on TET4 4 x 4 triangles (tet = 0: matching HEX8).
+gmsh -3 -format msh41 "$here/patch_test.geo" -o "$here/patch_test.msh" > /dev/null

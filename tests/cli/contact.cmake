@@ -64,3 +64,10 @@ add_test(NAME cli.frame_invariance_sliding
          COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tools/frame_invariance.py --scene sliding
                  --build ${CMAKE_BINARY_DIR} --out ${CMAKE_CURRENT_BINARY_DIR}/work/frame_invariance_sliding)
 set_tests_properties(cli.frame_invariance_sliding PROPERTIES TIMEOUT 300 LABELS cli)
+
+# The contact patch test (BENCHMARKS section 3): matching faces pass it to 1e-8; on
+# non-matching faces (quadrilaterals on triangles) node to face's error is reported.
+add_test(NAME cli.patch_test
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/patch_test.py
+                 $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/patch_test)
+set_tests_properties(cli.patch_test PROPERTIES TIMEOUT 300 LABELS cli)
