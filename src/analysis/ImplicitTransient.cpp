@@ -82,10 +82,13 @@ ImplicitTransient::ImplicitTransient(const std::string& name, const Teuchos::Par
   s_.contact = readContactSettings(params_, inputFile_, "Analyses/" + name_);
   s_.time.newton.maxActiveSetIterations = s_.contact.maxActiveSetIterations;
   s_.output = readTransientOutput(params_);
-  if (s_.explicitScheme && s_.contact.hasMultipliers())
+  if (s_.explicitScheme && s_.contact.method == "Continuous")
     throwInput(inputFile_, path("Contact/Method"), s_.contact.method,
                "has pressure unknowns, which the explicit scheme (central differences) cannot solve for",
-               "use the Penalty method with central differences");
+               "use Lagrange (forward-increment multipliers) or Penalty with central differences");
+  // Central differences enforce Lagrange contact by forward increments on the lumped mass:
+  // the contact nodes keep their mass ('auto' means standard there).
+  if (s_.explicitScheme && s_.contact.massIsAutomatic) s_.contact.redistributeMass = false;
   if (s_.contact.hasMultipliers() && params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
     throwInput(inputFile_, path("Linear Solver/Method"), "CG",
                "the saddle-point system of contact method '" + s_.contact.method + "' is indefinite",
@@ -235,6 +238,7 @@ void ImplicitTransient::run(RunContext& ctx) {
   auto timer = rcp(new Teuchos::StackedTimer(("Transient '" + name_ + "'").c_str()));
   StructuralOperator op(b_->K, b_->M, s_.rayleighK, s_.rayleighM, b_->load, b_->contact.get(),
                         b_->links.get(), std::move(b_->solver), timer.get());
+  op.setForwardIncrementContact(s_.explicitScheme && s_.contact.method == "Lagrange");
   describe(ctx.model, op);
   const StateArchive* resume = resumeFor(ctx);
   ObserverSet outputs;

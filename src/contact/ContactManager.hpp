@@ -108,6 +108,13 @@ class ContactManager {
   void commitStep(const Vector& u);
   long long searchProjections() const { return followed_ ? followed_->projections() : 0; }
 
+  // Forward-increment Lagrange multipliers (explicit central differences, Carpenter, Taylor
+  // and Katona 1991): the pressures lambda >= 0 for which the predicted positions uStar +
+  // h2 M^-1 B^T lambda have no negative gap, lambda_s = 0 where the gap is open; projected
+  // Gauss-Seidel on h2 B M^-1 B^T (diagonal against obstacles: one sweep). Sets the statuses
+  // and pressures and adds M^-1 B^T lambda to a on the rows this rank owns. Collective.
+  // Throws NumericalError when the sweeps do not converge.
+  void forwardIncrement(const Vector& uStar, const Vector& inverseMass, double h2, Vector& a);
   void initialize(const Vector& u);          // statuses from the gaps at u, lambda = 0
   StatusUpdate updateStatus(const Vector& u);  // complementarity test, all ranks agree
   void save();

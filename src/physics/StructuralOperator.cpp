@@ -112,7 +112,7 @@ double StructuralOperator::addConstraintForces(const Vector& u, const Vector& v,
   if (!contact_ && !links_) return 0.0;
   TimerScope ts(timer_, "Transient: contact");
   if (links_) links_->addForces(u, v, out);
-  return contact_ ? contact_->addForces(u, out) : 0.0;
+  return contact_ && !forwardIncrement_ ? contact_->addForces(u, out) : 0.0;
 }
 
 CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients& c,
@@ -281,6 +281,14 @@ double StructuralOperator::elasticTermsNorm(const Vector& u) const {
   return std::sqrt(global);
 }
 
+bool StructuralOperator::addExplicitContact(const Vector& uStar, const Vector& inverseMass, double h2,
+                                            Vector& a) {
+  if (!contact_ || !forwardIncrement_) return false;
+  TimerScope ts(timer_, "Transient: contact");
+  contact_->forwardIncrement(uStar, inverseMass, h2, a);
+  return true;
+}
+
 void StructuralOperator::acceptStep(const Vector& u) {
   if (!contact_) return;
   TimerScope ts(timer_, "Transient: contact search");
@@ -289,7 +297,7 @@ void StructuralOperator::acceptStep(const Vector& u) {
 
 ConstraintUpdate StructuralOperator::updateConstraints(const Vector& u) {
   ConstraintUpdate up;
-  if (!contact_) return up;
+  if (!contact_ || forwardIncrement_) return up;
   TimerScope ts(timer_, "Transient: contact");
   const StatusUpdate s = contact_->updateStatus(u);
   up.changed = s.changed;

@@ -44,6 +44,10 @@ class StructuralOperator : public SecondOrderOperator {
   void beginStep(const Vector& u, double t, double dt) override;
   void acceptStep(const Vector& u) override;
   double elasticTermsNorm(const Vector& u) const override;
+  // Explicit runs with a multiplier method: contact by forward increments (ContactManager::
+  // forwardIncrement) instead of forces and statuses.
+  void setForwardIncrementContact(bool on) { forwardIncrement_ = on; }
+  bool addExplicitContact(const Vector& uStar, const Vector& inverseMass, double h2, Vector& a) override;
   std::string constraintState() const override { return contact_ ? contact_->activeSummary() : ""; }
   void initializeConstraints(const Vector& u) override;
   void saveState() override;
@@ -76,7 +80,8 @@ class StructuralOperator : public SecondOrderOperator {
   std::unique_ptr<LinearSolver> solver_;
   Teuchos::StackedTimer* timer_;
   std::unique_ptr<ContactSystem> system_;
-  int systemTopology_ = 0;  // the contact manager's topologyVersion() the graph was built for
+  int systemTopology_ = 0;
+  bool forwardIncrement_ = false;  // the contact manager's topologyVersion() the graph was built for
   RCP<Vector> tmp_, energyTmp_;
   RCP<MultiVector> rhs_, x_;
   std::vector<char> massless_;  // per local DOF: its row of M is zero

@@ -15,14 +15,15 @@ ExplicitDriver::ExplicitDriver(SecondOrderOperator& op, RCP<const Vector> invers
     : op_(op), inverseMass_(std::move(inverseMass)), s_(std::move(settings)),
       substeps_(substeps < 1 ? 1 : substeps) {
   auto map = op_.map();
-  for (RCP<Vector>* v : {&u_, &vHalf_, &a_, &v_, &r_, &fc_}) *v = rcp(new Vector(map));
+  for (RCP<Vector>* v : {&u_, &vHalf_, &a_, &v_, &r_, &fc_, &uStar_}) *v = rcp(new Vector(map));
 }
 
 void ExplicitDriver::notify(const StepInfo& info) {
   for (StepObserver* o : observers_) o->stepAccepted(info, *u_, *v_, *a_);
 }
 
-void ExplicitDriver::acceleration(const Vector& u, const Vector& vStar, double t, double dt, Vector& a) {
+void ExplicitDriver::acceleration(const Vector& u, const Vector& vStar, double t, double dt, Vector& a,
+                                  double h, double factor) {
   op_.acceptStep(u);  // the previous sub-step ended at u
   op_.beginStep(u, t, dt);
   op_.updateConstraints(u);  // penalty status at u (the only constraints an explicit step takes)
@@ -31,6 +32,9 @@ void ExplicitDriver::acceleration(const Vector& u, const Vector& vStar, double t
   op_.addConstraintForces(u, vStar, *fc_);
   r_->update(1.0, *fc_, 1.0);
   a.elementWiseMultiply(-1.0, *inverseMass_, *r_, 0.0);
+  uStar_->update(1.0, u, h, vStar, 0.0);
+  uStar_->update(factor * h * h, a, 1.0);
+  op_.addExplicitContact(*uStar_, *inverseMass_, factor * h * h, a);
   op_.saveState();  // the links' state advances with the step
 }
 
@@ -55,7 +59,8 @@ TransientSummary ExplicitDriver::run(Vector& u, Vector& v, const Resume* resume)
     nominal_ = 0;
     op_.beginStep(*u_, t0, 0.0);
     op_.initializeConstraints(*u_);
-    acceleration(*u_, *v_, t0, 0.0, *a_);
+    const double target1 = std::min(s_.endTime, t0 + dt);
+    acceleration(*u_, *v_, t0, 0.0, *a_, (target1 - t0) / substeps_, 0.5);
     info.time = t_;
     notify(info);
   }
@@ -68,7 +73,7 @@ TransientSummary ExplicitDriver::run(Vector& u, Vector& v, const Resume* resume)
       vHalf_->update(1.0, *v_, 0.5 * h, *a_, 0.0);
       u_->update(h, *vHalf_, 1.0);
       const double t = k + 1 == substeps_ ? target : t_ + h;
-      acceleration(*u_, *vHalf_, t, h, *a_);
+      acceleration(*u_, *vHalf_, t, h, *a_, h, 1.0);
       v_->update(1.0, *vHalf_, 0.5 * h, *a_, 0.0);
       t_ = t;
     }

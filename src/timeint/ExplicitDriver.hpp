@@ -5,7 +5,9 @@
 //   half a step, the usual explicit treatment),
 //   v_{n+1/2} = v_{n-1/2} + dt a_n,   u_{n+1} = u_n + dt v_{n+1/2},
 // and v_n = v_{n-1/2} + dt/2 a_n for the output. The constraint status (penalty contact) is
-// re-evaluated at every u_n before its forces. A nominal step longer than the critical step is
+// re-evaluated at every u_n before its forces; exactly enforced contact (Lagrange) takes
+// forward-increment multipliers: a_n includes M^-1 B^T lambda_n such that u_{n+1} has no
+// negative gap (SecondOrderOperator::addExplicitContact). A nominal step longer than the critical step is
 // cut into `substeps` equal sub-steps (the caller decides, from its estimate of the highest
 // frequency). Observers see every nominal step's end state (sub-steps are not reported).
 #pragma once
@@ -27,8 +29,12 @@ class ExplicitDriver : public StepLoop {
   int substeps() const { return substeps_; }
 
  private:
-  // a = -M^-1 (F(u, vStar, t) + f_c(u, vStar)) with the status updated at u.
-  void acceleration(const Vector& u, const Vector& vStar, double t, double dt, Vector& a);
+  // a = -M^-1 (F(u, vStar, t) + f_c(u, vStar)) with the status updated at u; with exactly
+  // enforced contact, plus the contact accelerations that keep the next position, u + h vStar
+  // + factor h^2 a, from penetrating (forward increments: factor 1/2 from an integer-step
+  // velocity at the start, 1 from a half-step velocity).
+  void acceleration(const Vector& u, const Vector& vStar, double t, double dt, Vector& a,
+                    double h, double factor);
   void notify(const StepInfo& info);
 
   SecondOrderOperator& op_;
@@ -39,7 +45,7 @@ class ExplicitDriver : public StepLoop {
   double t_ = 0.0;
   long long nominal_ = 0;
   TransientSummary sum_;
-  RCP<Vector> u_, vHalf_, a_, v_, r_, fc_;
+  RCP<Vector> u_, vHalf_, a_, v_, r_, fc_, uStar_;
 };
 
 }  // namespace choc

@@ -260,7 +260,7 @@ choc_cli_input_error(link_negative_stick check bad_link_negative_stick.xml
 # the stable one.
 choc_cli_input_error(explicit_consistent_mass check bad_explicit_consistent_mass.xml
   "parameter 'Analyses/impact/Scheme' = 'central differences': needs a diagonal mass with every entry positive. set 'Mass' = 'lumped' in every block")
-choc_cli_input_error(explicit_lagrange check bad_explicit_lagrange.xml
-  "parameter 'Analyses/impact/Contact/Method' = 'Lagrange': has pressure unknowns, which the explicit scheme .central differences. cannot solve for. use the Penalty method")
+choc_cli_input_error(explicit_continuous check bad_explicit_continuous.xml
+  "parameter 'Analyses/impact/Contact/Method' = 'Continuous': has pressure unknowns, which the explicit scheme .central differences. cannot solve for. use Lagrange .forward-increment multipliers. or Penalty with central differences")
 choc_cli_input_error(explicit_time_step check bad_explicit_time_step.xml
   "parameter 'Analyses/impact/Time Step' = '1e-05': exceeds the stable step of central differences, 3.7[0-9]*e-06 s .the critical step")
