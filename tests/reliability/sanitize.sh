@@ -79,6 +79,12 @@ stamp "choc run sdnl111b_short.xml: exit $rc"
 check_log "choc run sdnl111b_short" $rc "$logs/choc.log"
 [ -f "$out/cerc_int.history.csv" ] || failed+=("choc run sdnl111b_short: no cerc_int.history.csv")
 # The suppressions must not hide everything: count what they matched.
+out="$logs/sliding_short"
+"$bdir/choc" run "$here/inputs/sliding_short.xml" -o "$out" > "$logs/choc_sliding.log" 2>&1
+rc=$?
+stamp "choc run sliding_short.xml: exit $rc"
+check_log "choc run sliding_short" $rc "$logs/choc_sliding.log"
+[ -f "$out/lagrange.history.csv" ] || failed+=("choc run sliding_short: no lagrange.history.csv")
 stamp "done"
 if [ ${#failed[@]} -gt 0 ]; then
   echo "sanitize: FAILED: ${failed[*]} (logs in $logs)"
