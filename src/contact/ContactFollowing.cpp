@@ -45,7 +45,7 @@ Vec3 ContactManager::tangentialOffset(const ContactConstraint& c) const {
 }
 
 void ContactManager::followSurfaces(const Vector& u) {
-  followed_->place(gather(followed_->dofs(), u));
+  followed_->place(gather(followed_->dofs(), u), true);
   bool topology = false, turned = false;
   for (size_t s = 0; s < constraints_.size(); ++s) {
     ContactConstraint& c = constraints_[s];
@@ -99,7 +99,7 @@ void ContactManager::followSurfaces(const Vector& u) {
 
 void ContactManager::commitStep(const Vector& u) {
   if (!followed_ || !paired_) return;
-  followed_->place(gather(followed_->dofs(), u));
+  followed_->place(gather(followed_->dofs(), u), false);
   for (size_t s = 0; s < constraints_.size(); ++s) {
     const ContactConstraint& c = constraints_[s];
     if (!status_[s] || !followed_->follows(c.geometry.pair)) continue;

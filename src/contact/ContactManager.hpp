@@ -113,7 +113,8 @@ class ContactManager {
   // h2 M^-1 B^T lambda have no negative gap, lambda_s = 0 where the gap is open; projected
   // Gauss-Seidel on h2 B M^-1 B^T (diagonal against obstacles: one sweep). Sets the statuses
   // and pressures and adds M^-1 B^T lambda to a on the rows this rank owns. Collective.
-  // Throws NumericalError when the sweeps do not converge.
+  // Throws NumericalError when the sweeps do not converge. inverseMass must be the same at
+  // every call (its values at the contact DOFs are gathered once per pairing).
   void forwardIncrement(const Vector& uStar, const Vector& inverseMass, double h2, Vector& a);
   void initialize(const Vector& u);          // statuses from the gaps at u, lambda = 0
   StatusUpdate updateStatus(const Vector& u);  // complementarity test, all ranks agree
@@ -164,6 +165,8 @@ class ContactManager {
   std::vector<double> slip_;     // followed surfaces: accumulated slip [m]
   std::vector<Vec3> slipStart_;  // tangential offset at the last beginStep
   bool paired_ = false;          // slipStart_ holds the offsets of the current pairing
+  std::vector<double> inverseMassAtContact_;  // forwardIncrement: 1/m at contactDofs_
+  int inverseMassTopology_ = -1;               // the topologyVersion_ it was gathered for
   bool hasObstacles_ = false, hasCurvedObstacles_ = false;
 };
 

@@ -57,8 +57,7 @@ PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pa
   const SurfaceSearch master(facesOf(mesh, def.masterSideSet), def.searchDistance);
   const std::map<int, double> area = tributaryAreas(facesOf(mesh, def.slaveSideSet), def.axisymmetric);
   PairingResult res;
-  std::vector<SlaveProjection> inert;
-  for (const auto& [node, a] : area) {
+  for (const auto& [node, a] : area) {  // ascending node number
     SurfaceHit hit;
     SlaveProjection best;
     best.pair = pairIndex;
@@ -69,7 +68,7 @@ PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pa
       if (def.followMotion) {  // kept, without a master face, until a search finds one
         best.masterFace = -1;
         best.gap0 = def.searchDistance;
-        inert.push_back(best);
+        res.projections.push_back(best);
       }
       continue;
     }
@@ -82,15 +81,10 @@ PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pa
     best.gap0 = hit.gap;
     res.projections.push_back(best);
   }
-  if (res.projections.empty())
+  if (res.projections.size() == (def.followMotion ? res.unpaired.size() : 0))
     throw std::invalid_argument("no node of slave side set '" + def.slaveSideSet +
                                 "' projects onto a face of master side set '" + def.masterSideSet +
                                 "' within the search distance " + std::to_string(def.searchDistance) + " m");
-  if (!inert.empty()) {  // ascending node number, as the paired ones
-    res.projections.insert(res.projections.end(), inert.begin(), inert.end());
-    std::sort(res.projections.begin(), res.projections.end(),
-              [](const SlaveProjection& x, const SlaveProjection& y) { return x.slaveNode < y.slaveNode; });
-  }
   return res;
 }
 

@@ -40,8 +40,9 @@ Point3 FollowedSurfaces::position(int node) const {
   return x;
 }
 
-void FollowedSurfaces::place(const std::vector<double>& values) {
+void FollowedSurfaces::place(const std::vector<double>& values, bool search) {
   values_ = values;
+  if (!search) return;
   for (auto& [p, search] : searches_) search->moveTo([this](int n) { return position(n); });
 }
 

@@ -23,8 +23,9 @@ class FollowedSurfaces {
   bool empty() const { return dofs_.empty(); }
   bool follows(int pair) const { return searches_.count(pair) > 0; }
   const std::vector<GO>& dofs() const { return dofs_; }  // sorted, distinct
-  // values[k]: the displacement of dofs()[k].
-  void place(const std::vector<double>& values);
+  // values[k]: the displacement of dofs()[k]; moves the master faces (and rebuilds their bins)
+  // only when `search` (a slip update needs positions, not a search).
+  void place(const std::vector<double>& values, bool search);
   Point3 position(int node) const;          // current (after place), else reference
   double displacement(GO dof) const;        // of the last place()
   bool find(int pair, const Point3& x, SurfaceHit& hit) const;

@@ -14,7 +14,11 @@ namespace choc {
 void ContactManager::forwardIncrement(const Vector& uStar, const Vector& inverseMass, double h2,
                                       Vector& a) {
   const std::vector<double> g = gaps(uStar);
-  const std::vector<double> w = gather(contactDofs_, inverseMass);  // 1/m of each contact DOF
+  if (inverseMassTopology_ != topologyVersion_) {  // 1/m of each contact DOF (constant mass)
+    inverseMassAtContact_ = gather(contactDofs_, inverseMass);
+    inverseMassTopology_ = topologyVersion_;
+  }
+  const std::vector<double>& w = inverseMassAtContact_;
   const size_t nS = constraints_.size();
   std::vector<double> lam(nS, 0.0), diag(nS, 0.0), shift(contactDofs_.size(), 0.0);
   double scale = 0.0;

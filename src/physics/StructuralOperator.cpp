@@ -281,12 +281,10 @@ double StructuralOperator::elasticTermsNorm(const Vector& u) const {
   return std::sqrt(global);
 }
 
-bool StructuralOperator::addExplicitContact(const Vector& uStar, const Vector& inverseMass, double h2,
+void StructuralOperator::addExplicitContact(const Vector& uStar, const Vector& inverseMass, double h2,
                                             Vector& a) {
-  if (!contact_ || !forwardIncrement_) return false;
   TimerScope ts(timer_, "Transient: contact");
   contact_->forwardIncrement(uStar, inverseMass, h2, a);
-  return true;
 }
 
 void StructuralOperator::acceptStep(const Vector& u) {

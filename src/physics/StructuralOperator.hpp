@@ -47,7 +47,8 @@ class StructuralOperator : public SecondOrderOperator {
   // Explicit runs with a multiplier method: contact by forward increments (ContactManager::
   // forwardIncrement) instead of forces and statuses.
   void setForwardIncrementContact(bool on) { forwardIncrement_ = on; }
-  bool addExplicitContact(const Vector& uStar, const Vector& inverseMass, double h2, Vector& a) override;
+  bool hasExplicitContact() const override { return contact_ && forwardIncrement_; }
+  void addExplicitContact(const Vector& uStar, const Vector& inverseMass, double h2, Vector& a) override;
   std::string constraintState() const override { return contact_ ? contact_->activeSummary() : ""; }
   void initializeConstraints(const Vector& u) override;
   void saveState() override;

@@ -32,9 +32,11 @@ void ExplicitDriver::acceleration(const Vector& u, const Vector& vStar, double t
   op_.addConstraintForces(u, vStar, *fc_);
   r_->update(1.0, *fc_, 1.0);
   a.elementWiseMultiply(-1.0, *inverseMass_, *r_, 0.0);
-  uStar_->update(1.0, u, h, vStar, 0.0);
-  uStar_->update(factor * h * h, a, 1.0);
-  op_.addExplicitContact(*uStar_, *inverseMass_, factor * h * h, a);
+  if (op_.hasExplicitContact()) {
+    uStar_->update(1.0, u, h, vStar, 0.0);
+    uStar_->update(factor * h * h, a, 1.0);
+    op_.addExplicitContact(*uStar_, *inverseMass_, factor * h * h, a);
+  }
   op_.saveState();  // the links' state advances with the step
 }
 

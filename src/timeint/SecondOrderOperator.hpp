@@ -67,12 +67,13 @@ class SecondOrderOperator {
   // state, with t the start time and dt = 0): constraints that follow the motion are updated.
   virtual void beginStep(const Vector& /*u*/, double /*t*/, double /*dt*/) {}
   // Explicit central differences with exactly enforced contact (forward-increment Lagrange
-  // multipliers): given the predicted next position uStar (the free motion) and the factor
-  // h2 by which an acceleration moves it, adds to a the contact accelerations M^-1 B^T lambda
-  // that leave no gap of uStar + h2 M^-1 B^T lambda negative. Returns whether the operator
-  // enforces contact this way (then addConstraintForces and updateConstraints leave contact out).
-  virtual bool addExplicitContact(const Vector& /*uStar*/, const Vector& /*inverseMass*/,
-                                  double /*h2*/, Vector& /*a*/) { return false; }
+  // multipliers; then addConstraintForces and updateConstraints leave contact out): given the
+  // predicted next position uStar (the free motion) and the factor h2 by which an acceleration
+  // moves it, addExplicitContact adds to a the contact accelerations M^-1 B^T lambda that leave
+  // no gap of uStar + h2 M^-1 B^T lambda negative.
+  virtual bool hasExplicitContact() const { return false; }
+  virtual void addExplicitContact(const Vector& /*uStar*/, const Vector& /*inverseMass*/,
+                                  double /*h2*/, Vector& /*a*/) {}
   // The constraints' state for a failure message, e.g. "pair 'slide': 28 of 28 nodes in
   // contact" ("" when there are none).
   virtual std::string constraintState() const { return ""; }
