@@ -72,19 +72,18 @@ for m in "${modules[@]}"; do
   stamp "unit_$m: exit $rc, $(grep -cE '^\[       OK \]' "$logs/unit_$m.log") tests passed"
   check_log "unit_$m" $rc "$logs/unit_$m.log"
 done
-out="$logs/sdnl111b_short"
-"$bdir/choc" run "$here/inputs/sdnl111b_short.xml" -o "$out" > "$logs/choc.log" 2>&1
-rc=$?
-stamp "choc run sdnl111b_short.xml: exit $rc"
-check_log "choc run sdnl111b_short" $rc "$logs/choc.log"
-[ -f "$out/cerc_int.history.csv" ] || failed+=("choc run sdnl111b_short: no cerc_int.history.csv")
+# run_input NAME HISTORY: choc run inputs/NAME.xml under the sanitizers; it must write HISTORY.
+run_input() {
+  local out="$logs/$1"
+  "$bdir/choc" run "$here/inputs/$1.xml" -o "$out" > "$logs/choc_$1.log" 2>&1
+  local rc=$?
+  stamp "choc run $1.xml: exit $rc"
+  check_log "choc run $1" $rc "$logs/choc_$1.log"
+  [ -f "$out/$2" ] || failed+=("choc run $1: no $2")
+}
+run_input sdnl111b_short cerc_int.history.csv
+run_input sliding_short lagrange.history.csv
 # The suppressions must not hide everything: count what they matched.
-out="$logs/sliding_short"
-"$bdir/choc" run "$here/inputs/sliding_short.xml" -o "$out" > "$logs/choc_sliding.log" 2>&1
-rc=$?
-stamp "choc run sliding_short.xml: exit $rc"
-check_log "choc run sliding_short" $rc "$logs/choc_sliding.log"
-[ -f "$out/lagrange.history.csv" ] || failed+=("choc run sliding_short: no lagrange.history.csv")
 stamp "done"
 if [ ${#failed[@]} -gt 0 ]; then
   echo "sanitize: FAILED: ${failed[*]} (logs in $logs)"

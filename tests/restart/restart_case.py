@@ -67,12 +67,13 @@ def choc(a, out, extra=(), np_=1):
 
 
 IGNORE = []  # --ignore: passed to compare_results.py with --tolerance
+VECTOR_PEAKS = []  # ["--vector-peaks"] when given: passed with --tolerance
 
 
 def compare(ref, out, tolerance=None):
     cmd = [sys.executable, COMPARE, ref, out] + (["--tolerance", str(tolerance)] if tolerance else [])
-    if tolerance and IGNORE:
-        cmd += ["--ignore"] + IGNORE
+    if tolerance:
+        cmd += VECTOR_PEAKS + (["--ignore"] + IGNORE if IGNORE else [])
     p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     print(p.stdout.strip())
     if p.returncode != 0:
@@ -321,6 +322,8 @@ def main():
     ap.add_argument("--tolerance", type=float)
     ap.add_argument("--ignore", nargs="*", default=[],
                     help="columns and variables left out of a --tolerance comparison")
+    ap.add_argument("--vector-peaks", action="store_true",
+                    help="compare a vector field's components to the peak of all three")
     ap.add_argument("--seeds", type=int, nargs="*", default=[1])
     ap.add_argument("--kills", type=int, default=3)
     ap.add_argument("--file-size", type=int)
@@ -331,6 +334,7 @@ def main():
                     help="run a copy of the input with checkpoints every T seconds of wall time")
     a = ap.parse_args()
     IGNORE.extend(a.ignore)
+    VECTOR_PEAKS.extend(["--vector-peaks"] if a.vector_peaks else [])
     a.out = os.path.abspath(a.out)
     os.makedirs(a.out, exist_ok=True)
     if a.checkpoint_steps or a.checkpoint_seconds:
