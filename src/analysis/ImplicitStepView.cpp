@@ -117,7 +117,8 @@ EnergyTerms ImplicitStepView::energies() {
   if (info_.step == 0) u0_ = rcp(new Vector(*u_, Teuchos::Copy));
   dissipated_ += 0.5 * info_.dt * (lastPower_ + power);
   lastPower_ = power;
-  e.dissipated = dissipated_ + (op_.links() ? op_.links()->dissipatedEnergy() : 0.0);
+  e.dissipated = dissipated_ + (op_.links() ? op_.links()->dissipatedEnergy() : 0.0) +
+                 op_.frictionDissipation();
   // Work of moving obstacles: trapezoidal rule on their power.
   const double obstaclePower = contact_ ? contact_->obstaclePower() : 0.0;
   obstacleWork_ += 0.5 * info_.dt * (lastObstaclePower_ + obstaclePower);

@@ -20,6 +20,16 @@
 
 namespace choc {
 
+namespace {
+
+double largestDiagonal(const CrsMatrix& A) {
+  Vector d(A.getRowMap());
+  A.getLocalDiagCopy(d);
+  return d.normInf();
+}
+
+}  // namespace
+
 Teuchos::ParameterList ImplicitTransient::parameters() {
   Teuchos::ParameterList p;
   declareRequiredChoice(p, "Type", {"Transient"}, "analysis type");
@@ -89,6 +99,17 @@ ImplicitTransient::ImplicitTransient(const std::string& name, const Teuchos::Par
   // Central differences enforce Lagrange contact by forward increments on the lumped mass:
   // the contact nodes keep their mass ('auto' means standard there).
   if (s_.explicitScheme && s_.contact.massIsAutomatic) s_.contact.redistributeMass = false;
+  if (const PairDefinition* fp = s_.contact.frictionPair()) {
+    const std::string key = "Contact/Pairs/" + fp->name + "/Friction Coefficient";
+    if (s_.explicitScheme)
+      throwInput(inputFile_, path(key), shortNumber(fp->friction),
+                 "friction is solved with the implicit schemes' Newton iterations, which central "
+                 "differences do not make", "use an implicit scheme (HHT, Newmark...) for a pair with friction");
+    if (params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
+      throwInput(inputFile_, path(key), shortNumber(fp->friction),
+                 "the tangent of a sliding node is not symmetric, which CG cannot solve",
+                 "use 'Linear Solver/Method' = Direct or GMRES with friction");
+  }
   if (s_.contact.hasMultipliers() && params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
     throwInput(inputFile_, path("Linear Solver/Method"), "CG",
                "the saddle-point system of contact method '" + s_.contact.method + "' is indefinite",
@@ -137,6 +158,11 @@ void ImplicitTransient::setup(SetupContext& ctx) {
   b_->M = model.mass();
   b_->load = assembleLoads(model);
   buildContact(model);
+  if (b_->contact && b_->contact->hasFriction()) {
+    const double kt = s_.contact.tangentialStiffness > 0 ? s_.contact.tangentialStiffness
+                                                          : largestDiagonal(*b_->K);
+    b_->contact->setTangentialStiffness(kt);
+  }
   std::vector<ShockLink> links = readShockLinks(params_, model, "Analyses/" + name_);
   if (!links.empty()) b_->links = std::make_unique<DirectLinks>(std::move(links), model, model.map());
   buildSolver();  // an explicit run never uses it (no effective matrix is built)
@@ -309,6 +335,10 @@ void ImplicitTransient::describe(Model& model, const StructuralOperator& op) con
     log() << "  contact: " << contact->method().name() << ", " << contact->numConstraints()
           << " slave nodes paired";
     if (contact->unpairedNodes() > 0) log() << " (" << contact->unpairedNodes() << " unpaired)";
+    if (contact->hasFriction())
+      log() << format("; Coulomb friction, stick stiffness k_t = %.4g N/m per node%s",
+                      contact->tangentialStiffness(),
+                      s_.contact.tangentialStiffness > 0 ? "" : " (the largest diagonal entry of K)");
     log() << "\n";
   }
   if (b_->links) {

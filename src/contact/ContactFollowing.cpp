@@ -98,6 +98,7 @@ void ContactManager::followSurfaces(const Vector& u) {
 }
 
 void ContactManager::commitStep(const Vector& u) {
+  if (friction_) commitFriction(u);
   if (!followed_ || !paired_) return;
   followed_->place(gather(followed_->dofs(), u), false);
   for (size_t s = 0; s < constraints_.size(); ++s) {

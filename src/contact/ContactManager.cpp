@@ -79,11 +79,15 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
                           (pairs_[p].hasObstacle && pairs_[p].obstacle.shape != RigidObstacle::Shape::Plane);
     unpaired_ += static_cast<int>(res.unpaired.size());
     // Curved obstacles and followed surfaces turn their normals: every component is a term.
-    const bool allComponents = pairs_[p].followMotion ||
+    // Friction acts along every component of the slave and master nodes.
+    const bool allComponents = pairs_[p].followMotion || pairs_[p].friction > 0 ||
         (pairs_[p].hasObstacle && pairs_[p].obstacle.shape != RigidObstacle::Shape::Plane);
     for (const SlaveProjection& sp : res.projections)
       constraints_.push_back(makeContactConstraint(mesh.coords[sp.slaveNode], dofs, sp, allComponents));
   }
+  dofs_ = &dofs;
+  for (const PairDefinition& pair : pairs_)
+    if (pair.friction > 0 && !friction_) enableFriction();
   indexTerms();
   buildSlipTerms(dofs);
   status_.assign(constraints_.size(), 0);
@@ -92,7 +96,6 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
   slipStart_.assign(constraints_.size(), Vec3{0, 0, 0});
   followed_ = std::make_unique<FollowedSurfaces>(mesh, dofs, pairs_);
   if (followed_->empty()) followed_.reset();
-  dofs_ = &dofs;
   save();
 }
 
@@ -112,6 +115,7 @@ void ContactManager::indexTerms() {
                     t.second});
     localTerms_.push_back(lt);
   }
+  indexFriction();
 }
 
 std::vector<double> ContactManager::contactValues(const Vector& u) const {
@@ -184,6 +188,7 @@ double ContactManager::addForces(const Vector& u, Vector& out) const {
       local += r * r;
     }
   }
+  if (friction_) addFrictionForces(contactValues(u), g, out);
   double global = 0.0;
   Teuchos::reduceAll<int, double>(*map_->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
   return std::sqrt(global);
@@ -237,9 +242,10 @@ std::vector<double> ContactManager::slips(const Vector& u, double t) const {
   return out;
 }
 
-void ContactManager::beginStep(const Vector& u, double t) {
+void ContactManager::beginStep(const Vector& u, double t, double dt) {
   if (followed_) followSurfaces(u);
   if (hasObstacles_) placeObstacles(u, t);
+  if (friction_) beginFrictionStep(u, t, dt);
 }
 
 void ContactManager::placeObstacles(const Vector& u, double t) {
@@ -326,6 +332,7 @@ void ContactManager::archive(StateArchive& a) const {
   a.putVector("contact/pressure", savedLambda_);
   a.putDouble("contact/scale", scale_);
   if (followed_) a.putVector("contact/slip", slip_);
+  archiveFriction(a);
 }
 
 void ContactManager::unarchive(const StateArchive& a) {
@@ -333,6 +340,7 @@ void ContactManager::unarchive(const StateArchive& a) {
   lambda_ = a.getVector<double>("contact/pressure", constraints_.size());
   scale_ = a.getDouble("contact/scale");
   if (followed_) slip_ = a.getVector<double>("contact/slip", constraints_.size());
+  unarchiveFriction(a);
   ++version_;
   save();
 }
@@ -369,7 +377,7 @@ double ContactManager::energy(const Vector& u) const {
   const std::vector<double> g = gaps(u);
   double e = 0.0;
   for (size_t s = 0; s < g.size(); ++s) e += method_->energy(g[s], lambda_[s], status_[s]);
-  return e;
+  return e + stickEnergy();
 }
 
 }  // namespace choc

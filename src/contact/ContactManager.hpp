@@ -24,6 +24,12 @@
 
 namespace choc {
 
+// One entry of a tangent added to the effective matrix (global row and column).
+struct MatrixEntry {
+  GO row = 0, col = 0;
+  double value = 0.0;
+};
+
 struct ContactConstraint {
   SlaveProjection geometry;
   std::vector<std::pair<GO, double>> terms;  // B_s: (global DOF, coefficient)
@@ -59,6 +65,7 @@ class ContactManager {
   // Throws PairingError naming the pair and side set.
   ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const Map> map,
                  const std::vector<PairDefinition>& pairs, std::unique_ptr<ContactMethod> method);
+  ~ContactManager();
 
   const ContactMethod& method() const { return *method_; }
   int numConstraints() const { return static_cast<int>(constraints_.size()); }
@@ -97,7 +104,8 @@ class ContactManager {
   // re-linearised there, gap(u') = g(u) + n . ((u'_s - u_s) - sum_i w_i (u'_i - u_i)); a node
   // whose search finds no face within the search distance has no constraint (inactive) until
   // one does. Coefficients that move by less than 1e-6 are kept (no refactorisation).
-  void beginStep(const Vector& u, double t);
+  // dt: the step's length (0 before the initial state), for the friction's start of step.
+  void beginStep(const Vector& u, double t, double dt = 0.0);
   // Bumped whenever a constraint's coefficients B_s change (curved obstacles, followed surfaces).
   int geometryVersion() const { return geometryVersion_; }
   // Bumped whenever a constraint couples other DOFs (a slave node of a followed surface moved
@@ -107,6 +115,34 @@ class ContactManager {
   // tangential motion relative to its master point since beginStep. Collective.
   void commitStep(const Vector& u);
   long long searchProjections() const { return followed_ ? followed_->projections() : 0; }
+
+  // Coulomb friction (pairs with 'Friction Coefficient' mu > 0; contact/ContactFriction.cpp).
+  // Per active slave node, an elastic-plastic tangential law on the step's relative tangential
+  // motion on the current master surface, delta = P (r(u) - r(u_n)) with P = I - n n^T and
+  // r = u_s - sum_i w_i u_i (less the obstacle's motion): the trial force on the slave node
+  // F* = P F_n - k_t delta, kept while |F*| <= mu f_N (stick), returned onto the cone
+  // F = mu f_N F* / |F*| otherwise (slip), f_N the normal force of the current iterate. The
+  // force enters the residual with the normal one (the master nodes take -w_i F); its
+  // consistent tangent (with d f_N / du and d f_N / d lambda: not symmetric while sliding) is
+  // friction().tangent. Stick and slip are decided at every residual evaluation, inside the
+  // Newton loop that also carries the normal multipliers.
+  bool hasFriction() const { return friction_ != nullptr; }
+  void setTangentialStiffness(double kt);  // k_t [N/m] per slave node
+  double tangentialStiffness() const;
+  // Matrix entries of the friction tangent (d residual / d(u, lambda / scale)) at the last
+  // evaluation, on the rows this rank owns; multiplierBase: the global id of constraint 0's
+  // multiplier row (the number of DOFs).
+  std::vector<MatrixEntry> frictionTangent(GO multiplierBase) const;
+  // Per node: 0 no friction force, 1 stick, 2 slip at the last evaluation; then, while a node
+  // slides, the evaluation count (the tangent changes with every iterate).
+  std::vector<char> frictionKey() const;
+  // Accepted state: per node the friction force on the slave node [N] and stick/slip status,
+  // the friction work dissipated since the start [J] and the stick springs' energy [J].
+  const std::vector<Vec3>& frictionForces() const;
+  const std::vector<char>& frictionStatus() const;
+  double frictionDissipation() const;
+  double frictionDissipation(int pair) const;
+  double stickEnergy() const;
 
   // Forward-increment Lagrange multipliers (explicit central differences, Carpenter, Taylor
   // and Katona 1991): the pressures lambda >= 0 for which the predicted positions uStar +
@@ -146,6 +182,17 @@ class ContactManager {
   std::vector<double> contactValues(const Vector& u) const;  // u at contactDofs_, replicated
   std::vector<double> gather(const std::vector<GO>& dofs, const Vector& u) const;  // replicated
   void buildSlipTerms(const DofMap& dofs);
+  struct Friction;                     // contact/ContactFriction.cpp
+  std::shared_ptr<Friction> friction_;  // null without friction (shared_ptr: an incomplete type here)
+  void addFrictionForces(const std::vector<double>& x, const std::vector<double>& g, Vector& out) const;
+  void evaluateFriction(const std::vector<double>& x, const std::vector<double>& g) const;
+  Vec3 relativeMotion(int s, const std::vector<double>& x, double t) const;
+  void archiveFriction(StateArchive& a) const;
+  void unarchiveFriction(const StateArchive& a);
+  void beginFrictionStep(const Vector& u, double t, double dt);
+  void commitFriction(const Vector& u);
+  void indexFriction();
+  void enableFriction();
   std::vector<GO> slipDofs_;  // every component of the slave and master nodes
   std::vector<std::array<std::vector<std::pair<int, double>>, 3>> slipTerms_;
   std::vector<PairDefinition> pairs_;

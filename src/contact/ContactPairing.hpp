@@ -27,6 +27,7 @@ struct PairDefinition {
   std::string slaveSideSet;   // e.g. CNT_POU2
   double searchDistance = 0;  // largest |g0| accepted [m]
   bool followMotion = false;  // 'Search' = current: paired again before every step
+  double friction = 0;        // Coulomb coefficient mu of the pair (0: frictionless)
   bool hasObstacle = false;   // the master is a rigid obstacle (masterSideSet empty)
   bool axisymmetric = false;  // slave areas of the whole ring: edge length weighted by 2 pi r
   RigidObstacle obstacle{};

@@ -23,6 +23,10 @@ void declareContactParameters(Teuchos::ParameterList& p) {
                 Range::nonNegative());
   declareInt(ct, "Maximum Active Set Iterations", 20,
              "Newton solves per step while the active set changes", Range::atLeast(1));
+  declareDouble(ct, "Tangential Stiffness", 0.0,
+                "k_t [N/m] per slave node of the pairs with friction: the stick spring (a sticking "
+                "node's elastic slip is F_t / k_t); 0: the largest diagonal entry of the "
+                "stiffness matrix", Range::nonNegative());
   ParameterList& pr = declareNamedSublists(ct, "Pairs", "contact pairs, by name");
   declareString(pr, "Master Side Set", "",
                 "faces of solids (QUAD4, QUAD8, TRI3, TRI6) or edges of planar elements (LINE2, "
@@ -38,6 +42,10 @@ void declareContactParameters(Teuchos::ParameterList& p) {
                 "'Node Offset', n = 'Node Normal'");
   declareString(pr, "Node Normal", "0 0 0", "'x y z': n of a node-to-node pair (normalised)");
   declareDouble(pr, "Node Offset", 0.0, "gap offset of a node-to-node pair [m] (DIST_1 + DIST_2)");
+  declareDouble(pr, "Friction Coefficient", 0.0,
+                "Coulomb mu of the pair: the tangential force stays within mu times the normal "
+                "force, stick or slip decided in each Newton iteration (implicit schemes; 0: no "
+                "friction)", Range::nonNegative());
   declareDouble(pr, "Search Distance", 1e-3,
                 "largest |gap| of a pairing with a master side set [m]; also the reach of the "
                 "search in the current configuration", Range::positive());
@@ -98,6 +106,7 @@ PairDefinition readPair(const ParameterList& pl, const std::string& name, const 
   PairDefinition d{name, pl.get<std::string>("Master Side Set"), pl.get<std::string>("Slave Side Set"),
                    pl.get<double>("Search Distance")};
   d.slaveNodeSet = pl.get<std::string>("Slave Node Set");
+  d.friction = pl.get<double>("Friction Coefficient");
   d.masterNodeSet = pl.get<std::string>("Master Node Set");
   const ParameterList& ob = pl.sublist("Obstacle");
   d.hasObstacle = ob.get<std::string>("Shape") != "none";
@@ -151,6 +160,7 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::
   s.augmentation = ct.get<double>("Augmentation Coefficient");
   s.gapTolerance = ct.get<double>("Gap Tolerance");
   s.maxActiveSetIterations = ct.get<int>("Maximum Active Set Iterations");
+  s.tangentialStiffness = ct.get<double>("Tangential Stiffness");
   const std::string mass = p.get<std::string>("Contact Mass");
   s.massIsAutomatic = mass == "auto";
   s.redistributeMass = mass == "redistributed" || (s.massIsAutomatic && s.hasMultipliers());

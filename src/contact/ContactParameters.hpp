@@ -18,6 +18,7 @@ void declareContactParameters(Teuchos::ParameterList& analysis);
 struct ContactSettings {
   std::string method = "None";  // None, Lagrange, Penalty, Continuous
   double penaltyStiffness = 0, augmentation = 0, gapTolerance = 0;
+  double tangentialStiffness = 0;  // 0: automatic (see 'Tangential Stiffness')
   int maxActiveSetIterations = 20;
   std::vector<PairDefinition> pairs;
   bool redistributeMass = false;  // 'Contact Mass' = redistributed, or auto with multipliers
@@ -25,6 +26,12 @@ struct ContactSettings {
   std::string path;               // "Analyses/<name>", for messages
   bool enabled() const { return method != "None"; }
   bool hasMultipliers() const { return method == "Lagrange" || method == "Continuous"; }
+  // The first pair with a friction coefficient, or null.
+  const PairDefinition* frictionPair() const {
+    for (const auto& p : pairs)
+      if (p.friction > 0) return &p;
+    return nullptr;
+  }
 };
 
 // Reads the validated analysis list; throws InputError for a method without pairs or a

@@ -19,6 +19,10 @@ std::vector<std::string> ContactReport::historyColumns() const {
     c.push_back(contact_.pair(p).name + ":force");
     c.push_back(contact_.pair(p).name + ":gap");
     c.push_back(contact_.pair(p).name + ":area");
+    if (contact_.hasFriction()) {
+      c.push_back(contact_.pair(p).name + ":tangential_force");
+      c.push_back(contact_.pair(p).name + ":friction_work");
+    }
   }
   return c;
 }
@@ -36,12 +40,23 @@ std::vector<double> ContactReport::historyValues() const {
     vals.push_back(force);
     vals.push_back(gap);
     vals.push_back(area);
+    if (contact_.hasFriction()) {
+      Vec3 ft{0, 0, 0};
+      for (int s = 0; s < contact_.numConstraints(); ++s)
+        if (contact_.constraints()[s].geometry.pair == p)
+          for (int d = 0; d < 3; ++d) ft[d] += contact_.frictionForces()[s][d];
+      vals.push_back(norm(ft));
+      vals.push_back(contact_.frictionDissipation(p));
+    }
   }
   return vals;
 }
 
 std::vector<std::string> ContactReport::nodalFieldNames() const {
-  return {"CONTACT_FORCE", "CONTACT_PRESSURE", "CONTACT_GAP", "CONTACT_STATUS", "CONTACT_SLIP"};
+  std::vector<std::string> names = {"CONTACT_FORCE", "CONTACT_PRESSURE", "CONTACT_GAP",
+                                    "CONTACT_STATUS", "CONTACT_SLIP"};
+  if (contact_.hasFriction()) names.push_back("CONTACT_TANGENTIAL_TRACTION");
+  return names;
 }
 
 std::vector<std::vector<double>> ContactReport::nodalFields() const {
@@ -56,7 +71,14 @@ std::vector<std::vector<double>> ContactReport::nodalFields() const {
     status[geo.slaveNode] = contact_.status()[s] ? 1.0 : 0.0;
     slip[geo.slaveNode] = slips[s];
   }
-  return {force, pressure, gap, status, slip};
+  if (!contact_.hasFriction()) return {force, pressure, gap, status, slip};
+  std::vector<double> traction(numNodes_, 0.0);
+  for (int s = 0; s < contact_.numConstraints(); ++s) {
+    const auto& geo = contact_.constraints()[s].geometry;
+    if (contact_.frictionStatus()[s] == 2) status[geo.slaveNode] = 2.0;  // sliding
+    traction[geo.slaveNode] = geo.area > 0 ? norm(contact_.frictionForces()[s]) / geo.area : 0.0;
+  }
+  return {force, pressure, gap, status, slip, traction};
 }
 
 std::vector<std::string> ContactReport::globalNames() const {

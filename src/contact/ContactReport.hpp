@@ -3,6 +3,9 @@
 // nodes; history '<pair>:force', '<pair>:gap', '<pair>:area'), per slave node
 // the force, pressure, gap, status and tangential slip (Exodus CONTACT_FORCE, CONTACT_PRESSURE,
 // CONTACT_GAP, CONTACT_STATUS, CONTACT_SLIP) and in total the force and the number of active nodes (Exodus globals).
+// With friction also, per pair, the size of the summed friction force and the friction work
+// ('<pair>:tangential_force', '<pair>:friction_work'), per node the tangential traction
+// (CONTACT_TANGENTIAL_TRACTION) and CONTACT_STATUS 2 for a sliding node (1: sticking).
 // update(u, t) evaluates the forces and gaps once (collective); the rest reads them, except
 // nodalFields(), which gathers the slips (collective: called on every rank, as the Exodus
 // writer does).

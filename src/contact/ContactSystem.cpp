@@ -162,6 +162,10 @@ void ContactSystem::fill(double aM, double aK, const std::vector<MatrixEntry>& e
       }
     }
   }
+  if (contact_ && contact_->hasFriction())
+    for (const MatrixEntry& e : contact_->frictionTangent(nU))
+      A_->sumIntoGlobalValues(e.row, Teuchos::ArrayView<const GO>(&e.col, 1),
+                              Teuchos::ArrayView<const double>(&e.value, 1));
   for (const MatrixEntry& e : extra)
     A_->sumIntoGlobalValues(e.row, Teuchos::ArrayView<const GO>(&e.col, 1),
                             Teuchos::ArrayView<const double>(&e.value, 1));
@@ -174,6 +178,8 @@ std::vector<char> ContactSystem::statusKey() const {
   const int g = contact_->geometryVersion();  // the coefficients of curved obstacles' rows
   const char* b = reinterpret_cast<const char*>(&g);
   key.insert(key.end(), b, b + sizeof g);
+  const std::vector<char> friction = contact_->frictionKey();
+  key.insert(key.end(), friction.begin(), friction.end());
   return key;
 }
 

@@ -14,12 +14,6 @@
 
 namespace choc {
 
-// One entry of a tangent added to the effective matrix (global row and column).
-struct MatrixEntry {
-  GO row = 0, col = 0;
-  double value = 0.0;
-};
-
 class ContactSystem {
  public:
   // contact may be null (no contact). couplings: groups of DOFs (global ids) that extra

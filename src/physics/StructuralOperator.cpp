@@ -258,7 +258,7 @@ void StructuralOperator::beginStep(const Vector& u, double t, double dt) {
   if (links_) links_->beginStep(dt);
   if (!contact_) return;
   TimerScope ts(timer_, "Transient: contact search");
-  contact_->beginStep(u, t);
+  contact_->beginStep(u, t, dt);
 }
 
 double StructuralOperator::elasticTermsNorm(const Vector& u) const {

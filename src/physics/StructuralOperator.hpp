@@ -62,6 +62,8 @@ class StructuralOperator : public SecondOrderOperator {
   double kineticEnergy(const Vector& v) const;
   double strainEnergy(const Vector& u) const;
   double contactEnergy(const Vector& u) const { return contact_ ? contact_->energy(u) : 0.0; }
+  // Work of the contact pairs' friction dissipated since the start [J].
+  double frictionDissipation() const { return contact_ ? contact_->frictionDissipation() : 0.0; }
   double dampingPower(const Vector& v, double kinetic) const;
   double loadWork(const Vector& u, const Vector& u0) const;
 
