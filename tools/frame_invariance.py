@@ -2,7 +2,7 @@
 """Frame invariance of a contact scene (BENCHMARKS section 8): SDNV100 or the sliding block
 turned as a rigid whole.
 
-usage: tools/frame_invariance.py [--scene sdnv100|sliding] [--build DIR] [--out DIR]
+usage: tools/frame_invariance.py [--scene sdnv100|sliding] [--friction MU] [--build DIR] [--out DIR]
                                  [--angle RAD] [--axis X Y Z] [--tolerance T]
                                  [--cost-tolerance C] [--energy-tolerance E] [--explicit]
 
@@ -98,7 +98,14 @@ def deck(mesh, R, explicit=False):
     s = s.replace('value="N5:DZ N5:VZ N100:DZ N100:VZ"',
                   'value="N5:DX N5:DY N5:DZ N100:DX N100:DY N100:DZ"')
     s = re.sub(r'<ParameterList name="Checks">.*?\n      </ParameterList>\n', '', s, flags=re.S)
+    if FRICTION[0] > 0:  # --friction: Coulomb friction on the pair
+        s = s.replace('<Parameter name="Slave Side Set" type="string" value="BLOCK_BOTTOM"/>',
+                      '<Parameter name="Slave Side Set" type="string" value="BLOCK_BOTTOM"/>\n'
+                      f'            <Parameter name="Friction Coefficient" type="double" value="{FRICTION[0]!r}"/>')
     return s
+
+
+FRICTION = [0.0]  # the sliding scene's Coulomb coefficient (--friction)
 
 
 def components(name, node_set, field, vector):
@@ -139,7 +146,14 @@ def sliding_deck(mesh, R, explicit=False):
     s = s.replace('value="BLOCK_TOP_CORNER:DX BLOCK_TOP_CORNER:DZ"',
                   'value="BLOCK_TOP_CORNER:DX BLOCK_TOP_CORNER:DY BLOCK_TOP_CORNER:DZ"')
     s = re.sub(r'<ParameterList name="Checks">.*?\n      </ParameterList>\n', '', s, flags=re.S)
+    if FRICTION[0] > 0:  # --friction: Coulomb friction on the pair
+        s = s.replace('<Parameter name="Slave Side Set" type="string" value="BLOCK_BOTTOM"/>',
+                      '<Parameter name="Slave Side Set" type="string" value="BLOCK_BOTTOM"/>\n'
+                      f'            <Parameter name="Friction Coefficient" type="double" value="{FRICTION[0]!r}"/>')
     return s
+
+
+FRICTION = [0.0]  # the sliding scene's Coulomb coefficient (--friction)
 
 
 # Per scene: its gmsh file, the extrusion the turned mesh takes, its deck, the nodes whose
@@ -211,7 +225,16 @@ def main():
                          "the lumped mass (the continuous one is left out)")
     ap.add_argument("--only", nargs="*", default=[],
                     help="the analyses to run and check (default: all of the scene's)")
+    ap.add_argument("--friction", type=float, default=0.0,
+                    help="sliding scene: Coulomb friction mu on the pair (the friction force and "
+                         "work are compared too)")
+    ap.add_argument("--reaction-tolerance", type=float, default=1e-5,
+                    help="--friction: the friction force's tolerance, of its peak. A sticking node's "
+                         "friction force is a reaction, known to Newton's residual tolerance (1e-8 of "
+                         "the 6,400 N load: 6.4e-5 N per node, 28 nodes, 2.6e-6 of the 128 N peak); "
+                         "a sliding node's is mu f_N, compared with the normal force")
     a = ap.parse_args()
+    FRICTION[0] = a.friction
     R = rotation(a.angle, a.axis)
     ref, ref_cost = run(a, "as_drawn", np.eye(3), False)
     rot, rot_cost = run(a, "turned", R, True)
@@ -237,11 +260,16 @@ def main():
             print(f"{name}: smallest gap {worst:.2e} m")
             if not worst >= -1e-12 * np.abs(d0["N100DZ"]).max():
                 failures.append(f"{name} penetrates the wall by {-worst:.2e} m")
-        f0, f1 = d0[force], d1[force]
-        fdiff = np.abs(f1 - f0).max() / np.abs(f0).max()
-        print(f"{name} contact force: max difference {fdiff:.2e} of the peak")
-        if not fdiff <= a.tolerance:
-            failures.append(f"{name} contact force differs by {fdiff:.2e} of the peak")
+        columns = [(force, "contact force", a.tolerance)]
+        if a.friction > 0:
+            columns += [("slidetangential_force", "friction force", a.reaction_tolerance),
+                        ("slidefriction_work", "friction work", a.tolerance)]
+        for column, what, tol in columns:
+            f0, f1 = d0[column], d1[column]
+            fdiff = np.abs(f1 - f0).max() / np.abs(f0).max()
+            print(f"{name} {what}: max difference {fdiff:.2e} of the peak")
+            if not fdiff <= tol:
+                failures.append(f"{name} {what} differs by {fdiff:.2e} of the peak")
         if a.scene == "sliding":  # every node's pressure and slip (the same numbering)
             e0, e1 = (exodus_fields(os.path.join(a.out, w, f"{name}.exo"),
                                     ("CONTACT_PRESSURE", "CONTACT_SLIP")) for w in ("as_drawn", "turned"))

@@ -1,6 +1,7 @@
 // ContactManager: the pairs whose search follows the motion ('Search' = current).
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "contact/ContactManager.hpp"
 
@@ -107,6 +108,53 @@ void ContactManager::commitStep(const Vector& u) {
     const Vec3 d = tangentialOffset(c);
     slip_[s] += norm(Vec3{d[0] - slipStart_[s][0], d[1] - slipStart_[s][1], d[2] - slipStart_[s][2]});
   }
+}
+
+}  // namespace choc
+
+namespace choc {
+
+// The pairing of the followed constraints in a checkpoint: a constraint keeps its coefficients
+// while they move by less than kCoefficientTolerance, so the pairing in use depends on the
+// steps before; a restarted run takes it from the checkpoint, not from a fresh search.
+// Per constraint: master face (-1: none), xi, eta, the normal, the number of weights and them.
+void ContactManager::archivePairing(StateArchive& a) const {
+  std::vector<double> g;
+  for (const ContactConstraint& c : constraints_) {
+    if (!followed_->follows(c.geometry.pair)) continue;
+    const SlaveProjection& sp = c.geometry;
+    g.insert(g.end(), {double(sp.masterFace), sp.xi, sp.eta, sp.normal[0], sp.normal[1], sp.normal[2],
+                       double(sp.weights.size())});
+    g.insert(g.end(), sp.weights.begin(), sp.weights.end());
+  }
+  a.putVector("contact/pairing", g);
+}
+
+void ContactManager::unarchivePairing(const StateArchive& a) {
+  const std::vector<double> g = a.getVector<double>("contact/pairing");
+  size_t k = 0;
+  for (ContactConstraint& c : constraints_) {
+    if (!followed_->follows(c.geometry.pair)) continue;
+    if (k + 7 > g.size()) throw StateRecordError("record 'contact/pairing' is shorter than the followed constraints");
+    SlaveProjection sp = c.geometry;
+    sp.masterFace = int(g[k]);
+    sp.xi = g[k + 1];
+    sp.eta = g[k + 2];
+    sp.normal = Point3{g[k + 3], g[k + 4], g[k + 5]};
+    const size_t nw = size_t(g[k + 6]);
+    k += 7;
+    if (k + nw > g.size()) throw StateRecordError("record 'contact/pairing' is shorter than the followed constraints");
+    sp.weights.assign(g.begin() + long(k), g.begin() + long(k + nw));
+    k += nw;
+    sp.masterNodes = sp.masterFace >= 0 ? followed_->face(sp.pair, sp.masterFace).nodes : std::vector<int>();
+    const ContactConstraint next = makeContactConstraint(c.reference, *dofs_, sp, true);
+    c.geometry = sp;
+    c.terms = next.terms;
+    c.componentTerm = next.componentTerm;
+  }
+  indexTerms();
+  ++topologyVersion_;
+  ++geometryVersion_;
 }
 
 }  // namespace choc

@@ -332,6 +332,7 @@ void ContactManager::archive(StateArchive& a) const {
   a.putVector("contact/pressure", savedLambda_);
   a.putDouble("contact/scale", scale_);
   if (followed_) a.putVector("contact/slip", slip_);
+  if (followed_) archivePairing(a);
   archiveFriction(a);
 }
 
@@ -340,6 +341,7 @@ void ContactManager::unarchive(const StateArchive& a) {
   lambda_ = a.getVector<double>("contact/pressure", constraints_.size());
   scale_ = a.getDouble("contact/scale");
   if (followed_) slip_ = a.getVector<double>("contact/slip", constraints_.size());
+  if (followed_) unarchivePairing(a);
   unarchiveFriction(a);
   ++version_;
   save();

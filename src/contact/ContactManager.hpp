@@ -188,6 +188,8 @@ class ContactManager {
   void evaluateFriction(const std::vector<double>& x, const std::vector<double>& g) const;
   Vec3 relativeMotion(int s, const std::vector<double>& x, double t) const;
   void archiveFriction(StateArchive& a) const;
+  void archivePairing(StateArchive& a) const;
+  void unarchivePairing(const StateArchive& a);
   void unarchiveFriction(const StateArchive& a);
   void beginFrictionStep(const Vector& u, double t, double dt);
   void commitFriction(const Vector& u);

@@ -58,11 +58,20 @@ choc_contact_script(direct_links 300)
 # energy; on an elastic foundation the dent follows the block only with 'Search' = current.
 choc_contact_script(sliding 300)
 
+# Coulomb friction in a contact pair (issue 15): the law at every node (sliding on the cone,
+# sticking inside it), the block slides then sticks, no energy growth, Newton <= 2.5 a step; and
+# mu -> 0 (1e-12) reproduces the frictionless sliding to 1e-8 of the peaks.
+choc_contact_script(sliding_friction 300)
+
 # Frame invariance of the search in the current configuration (BENCHMARKS section 8): the
 # sliding scene turned as a rigid whole (mesh, velocity, loads) gives the same motion, contact
 # force, nodal pressures and slips to 1e-8 of their peaks, the same cost within 10 %, and no
 # energy growth.
 choc_frame_invariance(sliding 300 --scene sliding)
+# The same with Coulomb friction (issue 15, mu = 0.02: the block slides 0.039 m and sticks at
+# 7.8 ms): the motion, contact and friction work to 1e-8 of their peaks, the friction force of
+# the stuck block (a reaction known to Newton's tolerance) to 1e-5 of its peak.
+choc_frame_invariance(sliding_friction 300 --scene sliding --friction 0.02)
 
 # The contact patch test (BENCHMARKS section 3): matching faces pass it to 1e-8; on
 # non-matching faces (quadrilaterals on triangles) node to face's error is reported.

@@ -264,3 +264,13 @@ choc_cli_input_error(explicit_continuous check bad_explicit_continuous.xml
   "parameter 'Analyses/impact/Contact/Method' = 'Continuous': has pressure unknowns, which the explicit scheme .central differences. cannot solve for. use Lagrange .forward-increment multipliers. or Penalty with central differences")
 choc_cli_input_error(explicit_time_step check bad_explicit_time_step.xml
   "parameter 'Analyses/impact/Time Step' = '1e-05': exceeds the stable step of central differences, 3.7[0-9]*e-06 s .the critical step")
+# Contact friction (issue 15): a negative Coulomb coefficient or stick stiffness, friction in an
+# explicit run or with CG.
+choc_cli_input_error(contact_negative_friction check bad_contact_negative_friction.xml
+  "parameter 'Analyses/impact/Contact/Pairs/shock/Friction Coefficient' = '-0.3': out of range. valid: a number in .0, inf.")
+choc_cli_input_error(contact_negative_tangential check bad_contact_negative_tangential.xml
+  "parameter 'Analyses/impact/Contact/Tangential Stiffness' = '-1e.09': out of range. valid: a number in .0, inf.")
+choc_cli_input_error(friction_explicit check bad_friction_explicit.xml
+  "parameter 'Analyses/impact/Contact/Pairs/shock/Friction Coefficient' = '0.3': friction is solved with the implicit schemes' Newton iterations, which central differences do not make. use an implicit scheme")
+choc_cli_input_error(friction_cg check bad_friction_cg.xml
+  "parameter 'Analyses/impact/Contact/Pairs/shock/Friction Coefficient' = '0.3': the tangent of a sliding node is not symmetric, which CG cannot solve. use 'Linear Solver/Method' = Direct or GMRES")
