@@ -98,14 +98,7 @@ def deck(mesh, R, explicit=False):
     s = s.replace('value="N5:DZ N5:VZ N100:DZ N100:VZ"',
                   'value="N5:DX N5:DY N5:DZ N100:DX N100:DY N100:DZ"')
     s = re.sub(r'<ParameterList name="Checks">.*?\n      </ParameterList>\n', '', s, flags=re.S)
-    if FRICTION[0] > 0:  # --friction: Coulomb friction on the pair
-        s = s.replace('<Parameter name="Slave Side Set" type="string" value="BLOCK_BOTTOM"/>',
-                      '<Parameter name="Slave Side Set" type="string" value="BLOCK_BOTTOM"/>\n'
-                      f'            <Parameter name="Friction Coefficient" type="double" value="{FRICTION[0]!r}"/>')
     return s
-
-
-FRICTION = [0.0]  # the sliding scene's Coulomb coefficient (--friction)
 
 
 def components(name, node_set, field, vector):

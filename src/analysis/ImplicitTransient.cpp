@@ -12,6 +12,7 @@
 #include "core/Format.hpp"
 #include "core/Log.hpp"
 #include "fem/Components.hpp"
+#include "fem/MatrixOps.hpp"
 #include "input/ParameterSpec.hpp"
 #include "output/InteractionList.hpp"
 #include "physics/CriticalStep.hpp"
@@ -19,16 +20,6 @@
 #include "timeint/ModalIntegrator.hpp"
 
 namespace choc {
-
-namespace {
-
-double largestDiagonal(const CrsMatrix& A) {
-  Vector d(A.getRowMap());
-  A.getLocalDiagCopy(d);
-  return d.normInf();
-}
-
-}  // namespace
 
 Teuchos::ParameterList ImplicitTransient::parameters() {
   Teuchos::ParameterList p;

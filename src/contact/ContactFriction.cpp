@@ -236,7 +236,7 @@ void ContactManager::beginFrictionStep(const Vector& u, double t, double dt) {
 void ContactManager::commitFriction(const Vector& u) {
   Friction& f = *friction_;
   const std::vector<double> x = contactValues(u);
-  evaluateFriction(x, gaps(u));
+  evaluateFriction(x, gapsAt(x));
   for (size_t s = 0; s < constraints_.size(); ++s) {
     const Vec3& n = constraints_[s].geometry.normal;
     const Vec3 r = relativeMotion(int(s), x, f.time);

@@ -136,8 +136,9 @@ std::vector<double> ContactManager::gather(const std::vector<GO>& dofs, const Ve
   return all;
 }
 
-std::vector<double> ContactManager::gaps(const Vector& u) const {
-  const std::vector<double> x = contactValues(u);
+std::vector<double> ContactManager::gaps(const Vector& u) const { return gapsAt(contactValues(u)); }
+
+std::vector<double> ContactManager::gapsAt(const std::vector<double>& x) const {
   std::vector<double> g(constraints_.size());
   for (size_t s = 0; s < constraints_.size(); ++s) {
     double v = constraints_[s].geometry.gap0;
@@ -172,7 +173,8 @@ double ContactManager::rowResidual(int s, double gap) const {
 }
 
 double ContactManager::addForces(const Vector& u, Vector& out) const {
-  const std::vector<double> g = gaps(u);
+  const std::vector<double> x = contactValues(u);
+  const std::vector<double> g = gapsAt(x);
   auto data = out.getDataNonConst();
   const int rank = map_->getComm()->getRank();
   double local = 0.0;
@@ -188,7 +190,7 @@ double ContactManager::addForces(const Vector& u, Vector& out) const {
       local += r * r;
     }
   }
-  if (friction_) addFrictionForces(contactValues(u), g, out);
+  if (friction_) addFrictionForces(x, g, out);
   double global = 0.0;
   Teuchos::reduceAll<int, double>(*map_->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
   return std::sqrt(global);

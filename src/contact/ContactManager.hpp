@@ -180,6 +180,7 @@ class ContactManager {
   void placeObstacles(const Vector& u, double t);
   Vec3 tangentialOffset(const ContactConstraint& c) const;  // at the followed positions
   std::vector<double> contactValues(const Vector& u) const;  // u at contactDofs_, replicated
+  std::vector<double> gapsAt(const std::vector<double>& x) const;  // gaps from contactValues
   std::vector<double> gather(const std::vector<GO>& dofs, const Vector& u) const;  // replicated
   void buildSlipTerms(const DofMap& dofs);
   struct Friction;                     // contact/ContactFriction.cpp

@@ -9,23 +9,15 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 
+#include "fem/MatrixOps.hpp"
+
 namespace choc {
-
-namespace {
-
-double maxDiagonal(const CrsMatrix& A) {
-  Vector d(A.getRowMap());
-  A.getLocalDiagCopy(d);
-  return d.normInf();
-}
-
-}  // namespace
 
 ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, ContactManager* contact,
                              const std::vector<std::vector<GO>>& couplings)
     : K_(std::move(K)), M_(std::move(M)), contact_(contact) {
-  maxDiagK_ = maxDiagonal(*K_);
-  maxDiagM_ = maxDiagonal(*M_);
+  maxDiagK_ = largestDiagonal(*K_);
+  maxDiagM_ = largestDiagonal(*M_);
   auto dofMap = K_->getRowMap();
   auto comm = dofMap->getComm();
   const int rank = comm->getRank();

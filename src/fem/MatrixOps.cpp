@@ -16,4 +16,10 @@ RCP<CrsMatrix> addMatrices(double a, const CrsMatrix& A, double b, const CrsMatr
   return Tpetra::MatrixMatrix::add(a, false, A, b, false, B);
 }
 
+double largestDiagonal(const CrsMatrix& A) {
+  Vector d(A.getRowMap());
+  A.getLocalDiagCopy(d);
+  return d.normInf();
+}
+
 }  // namespace choc

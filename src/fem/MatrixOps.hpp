@@ -15,6 +15,9 @@ struct RowCopy {
   void read(const CrsMatrix& A, GO row);
 };
 
+// The largest |diagonal entry| of A over all ranks (collective).
+double largestDiagonal(const CrsMatrix& A);
+
 // a A + b B (union of the two sparsity patterns), fill-completed on A's maps.
 RCP<CrsMatrix> addMatrices(double a, const CrsMatrix& A, double b, const CrsMatrix& B);
 

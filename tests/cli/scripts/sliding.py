@@ -22,11 +22,12 @@ usage: sliding.py CHOC SOURCE_DIR WORK_DIR"""
 import csv
 import os
 import re
-import subprocess
 import sys
 
 import netCDF4
 import numpy as np
+
+from deck_run import run_deck
 
 choc, src, work = sys.argv[1:4]
 os.makedirs(work, exist_ok=True)
@@ -35,15 +36,7 @@ failures = []
 
 
 def run(name, edit=lambda s: s):
-    deck = open(os.path.join(src, "input", "sliding.xml")).read()
-    deck = edit(deck.replace('value="../meshes/', f'value="{src}/meshes/'))
-    path = os.path.join(work, name + ".xml")
-    open(path, "w").write(deck)
-    out = os.path.join(work, name)
-    r = subprocess.run([choc, "run", path, "-o", out], capture_output=True, text=True)
-    if r.returncode != 0:
-        sys.exit(f"sliding: {name}: choc exited {r.returncode}: {r.stderr.strip()}")
-    return out, r.stdout
+    return run_deck(choc, src, work, "sliding.xml", name, edit, "sliding")
 
 
 def fields(out):

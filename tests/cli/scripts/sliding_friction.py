@@ -15,11 +15,12 @@ input/sliding.xml leaving at 10 m/s with mu = 0.01, pressed by 6,400 N; it stops
 usage: sliding_friction.py CHOC SOURCE_DIR WORK_DIR"""
 import os
 import re
-import subprocess
 import sys
 
 import netCDF4
 import numpy as np
+
+from deck_run import run_deck
 
 choc, src, work = sys.argv[1:4]
 os.makedirs(work, exist_ok=True)
@@ -34,15 +35,7 @@ def check(ok, what):
 
 
 def run(name, deck_file, edit=lambda s: s):
-    deck = open(os.path.join(src, "input", deck_file)).read()
-    deck = edit(deck.replace('value="../meshes/', f'value="{src}/meshes/'))
-    path = os.path.join(work, name + ".xml")
-    open(path, "w").write(deck)
-    out = os.path.join(work, name)
-    r = subprocess.run([choc, "run", path, "-o", out], capture_output=True, text=True)
-    if r.returncode != 0:
-        sys.exit(f"sliding_friction: {name}: choc exited {r.returncode}: {r.stderr.strip()}")
-    return out, r.stdout
+    return run_deck(choc, src, work, deck_file, name, edit, "sliding_friction")
 
 
 def history(out, analysis):
