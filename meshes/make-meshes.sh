@@ -38,3 +38,6 @@ gmsh -3 -format msh41 "$here/sliding_blocks.geo" -o "$here/sliding_blocks.msh" >
 gmsh -3 -format msh41 "$here/sdnl111_nonmatching.geo" -o "$here/sdnl111_nonmatching.msh" > /dev/null
 # Contact patch test (issue 14): HEX8 3 x 3 on TET4 4 x 4 triangles (tet = 0: matching HEX8).
 gmsh -3 -format msh41 "$here/patch_test.geo" -o "$here/patch_test.msh" > /dev/null
+# SDNV104 (issue 15): the pad on the frame in plane strain, QUAD4 and QUAD8.
+gmsh -2 -format msh41 "$here/sdnv104.geo" -o "$here/sdnv104_quad4.msh" > /dev/null
+gmsh -2 -order 2 -format msh41 "$here/sdnv104.geo" -o "$here/sdnv104_quad8.msh" > /dev/null

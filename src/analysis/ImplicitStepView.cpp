@@ -11,7 +11,7 @@ namespace choc {
 ImplicitStepView::ImplicitStepView(const StructuralOperator& op, ContactReport* contact,
                                    const InteractionOutput* interactions, std::vector<Probe> probes,
                                    ObserverSet& outputs, Teuchos::StackedTimer* timer)
-    : op_(op), contact_(contact), interactions_(interactions), probes_(std::move(probes)), outputs_(outputs), timer_(timer) {}
+    : op_(op), contact_(contact), interactions_(interactions), probes_(std::move(probes)), outputs_(outputs), timer_(timer), loadWork_(op.loads()) {}
 
 void ImplicitStepView::stepAccepted(const StepInfo& info, const Vector& u, const Vector& v,
                                     const Vector& a) {
@@ -57,7 +57,7 @@ void ImplicitStepView::differenceMassless(const Vector& u, const Vector& v, cons
 
 void ImplicitStepView::archive(StateArchive& a, const StateVectors& vectors) const {
   a.putVector("view/integrals", std::vector<double>{dissipated_, lastPower_, obstacleWork_, lastObstaclePower_});
-  vectors.put(a, "view/u0", *u0_);
+  a.putVector("view/loadWork", loadWork_.state());
   if (uPrev_) {
     vectors.put(a, "view/uPrevious", *uPrev_);
     vectors.put(a, "view/vPrevious", *vPrev_);
@@ -70,8 +70,7 @@ void ImplicitStepView::unarchive(const StateArchive& a, const StateVectors& vect
   lastPower_ = w[1];
   obstacleWork_ = w[2];
   lastObstaclePower_ = w[3];
-  u0_ = rcp(new Vector(map));
-  vectors.get(a, "view/u0", *u0_);
+  loadWork_.restore(a.getVector<double>("view/loadWork", loadWork_.stateSize()));
   if (op_.masslessDofs() == 0) return;
   for (RCP<Vector>* v : {&vOut_, &aOut_, &uPrev_, &vPrev_}) *v = rcp(new Vector(map));
   vectors.get(a, "view/uPrevious", *uPrev_);
@@ -114,7 +113,6 @@ EnergyTerms ImplicitStepView::energies() {
   e.strain = op_.strainEnergy(*u_);
   e.contact = op_.contactEnergy(*u_) + (op_.links() ? op_.links()->springEnergy() : 0.0);
   const double power = op_.dampingPower(*vScheme_, e.kinetic);
-  if (info_.step == 0) u0_ = rcp(new Vector(*u_, Teuchos::Copy));
   dissipated_ += 0.5 * info_.dt * (lastPower_ + power);
   lastPower_ = power;
   e.dissipated = dissipated_ + (op_.links() ? op_.links()->dissipatedEnergy() : 0.0) +
@@ -123,7 +121,7 @@ EnergyTerms ImplicitStepView::energies() {
   const double obstaclePower = contact_ ? contact_->obstaclePower() : 0.0;
   obstacleWork_ += 0.5 * info_.dt * (lastObstaclePower_ + obstaclePower);
   lastObstaclePower_ = obstaclePower;
-  e.external = op_.loadWork(*u_, *u0_) + obstacleWork_;
+  e.external = loadWork_.update(*u_, info_.time) + obstacleWork_;
   return e;
 }
 

@@ -1,7 +1,7 @@
 // The direct transient's state as the output observers see it: hung on the driver's step
 // hook, it evaluates the contact report once per accepted step, then calls the observers.
 // Energies come from the structural operator; the Rayleigh damping work is integrated here
-// by the trapezoidal rule, as is the work of moving rigid obstacles; the loads' work is exact. Massless DOFs (redistributed contact
+// by the trapezoidal rule, as is the work of moving rigid obstacles and of the loads (LoadWork). Massless DOFs (redistributed contact
 // mass) have no inertia to integrate: their Newmark velocity and acceleration only close the
 // scheme's relations and oscillate after a velocity jump, so the outputs (history, Exodus)
 // give them the backward differences of their displacement, v = (u_{n+1} - u_n)/dt and
@@ -37,7 +37,7 @@ class ImplicitStepView : public TransientView, public StepObserver {
   void fields(Vector& u, Vector& v, Vector& a) const override;
   std::string stepNote() const override;
 
-  // The integrals (damping and obstacle work), the initial displacement and the previous
+  // The integrals (damping, obstacle and load work) and the previous
   // reported fields of massless DOFs, for a checkpoint (collective), and back.
   void archive(StateArchive& a, const StateVectors& vectors) const;
   void unarchive(const StateArchive& a, const StateVectors& vectors, RCP<const Map> map);
@@ -54,7 +54,7 @@ class ImplicitStepView : public TransientView, public StepObserver {
   const Vector *u_ = nullptr, *v_ = nullptr, *a_ = nullptr;  // the reported fields
   const Vector* vScheme_ = nullptr;                           // the scheme's velocity
   RCP<Vector> vOut_, aOut_, uPrev_, vPrev_;  // reported fields and the previous step's
-  RCP<Vector> u0_;
+  LoadWork loadWork_;
   double dissipated_ = 0.0, lastPower_ = 0.0;
   double obstacleWork_ = 0.0, lastObstaclePower_ = 0.0;
 };

@@ -62,10 +62,19 @@ Teuchos::ParameterList ImplicitTransient::parameters() {
   p.set("Linear Solver", linearSolverParameters(), "linear solver of the Newton corrections");
   declareContactParameters(p);
   declareShockLinks(p);
-  ParameterList& nf = declareNamedSublists(p, "Nodal Forces", "constant forces, by name");
+  const char* ramp = "the load grows linearly from zero at t = 0 to its value at this time [s], then "
+                     "stays constant (0: full value from t = 0)";
+  ParameterList& nf = declareNamedSublists(p, "Nodal Forces", "forces on the nodes of node sets, by name");
   declareRequiredString(nf, "Node Set", "node set receiving the force");
   declareChoice(nf, "Component", "DX", {"DX", "DY", "DZ"}, "direction");
   declareRequiredDouble(nf, "Value", "force per node [N]");
+  declareDouble(nf, "Ramp Time", 0.0, ramp, Range::nonNegative());
+  ParameterList& pr = declareNamedSublists(p, "Pressures", "uniform pressures on side sets, by name");
+  declareRequiredString(pr, "Side Set", "faces (3D) or edges (plane strain, axisymmetric) loaded");
+  declareRequiredDouble(pr, "Value",
+                        "pressure [Pa], positive pushing into the body (against the outward normal); "
+                        "consistent nodal forces on the reference faces");
+  declareDouble(pr, "Ramp Time", 0.0, ramp, Range::nonNegative());
   declareInitialConditions(p);
   declareTransientOutput(p);
   declareChecks(p);
@@ -147,7 +156,7 @@ void ImplicitTransient::setup(SetupContext& ctx) {
   b_ = std::make_unique<Built>();
   b_->K = model.stiffness();
   b_->M = model.mass();
-  b_->load = assembleLoads(model);
+  b_->loads = assembleLoads(model);
   buildContact(model);
   if (b_->contact && b_->contact->hasFriction()) {
     const double kt = s_.contact.tangentialStiffness > 0 ? s_.contact.tangentialStiffness
@@ -173,21 +182,44 @@ void ImplicitTransient::setup(SetupContext& ctx) {
   b_->init = buildInitialFields(params_, model, "Analyses/" + name_);
 }
 
-// Constant nodal forces (null when there are none).
-RCP<Vector> ImplicitTransient::assembleLoads(const Model& model) const {
+// Nodal forces and pressures, each a load group (null when there are none).
+std::shared_ptr<const Loads> ImplicitTransient::assembleLoads(const Model& model) const {
+  auto loads = std::make_shared<Loads>();
   const ParameterList& nf = params_.sublist("Nodal Forces");
-  if (nf.numParams() == 0) return RCP<Vector>();
-  auto load = rcp(new Vector(model.map()));
   for (auto it = nf.begin(); it != nf.end(); ++it) {
     const ParameterList& f = nf.sublist(nf.name(it));
     const NodeSet& ns = model.nodeSet(f.get<std::string>("Node Set"), path("Nodal Forces/" + nf.name(it) + "/Node Set"));
     const int comp = componentFromName(f.get<std::string>("Component"));
+    auto force = rcp(new Vector(model.map()));
     for (int n : ns.nodes) {
       const long long d = model.dof(n, comp);
-      if (d >= 0 && model.dofs().ownsNode(n)) load->sumIntoGlobalValue(GO(d), f.get<double>("Value"));
+      if (d >= 0 && model.dofs().ownsNode(n)) force->sumIntoGlobalValue(GO(d), f.get<double>("Value"));
     }
+    loads->add({nf.name(it), force, f.get<double>("Ramp Time")});
   }
-  return load;
+  const ParameterList& pr = params_.sublist("Pressures");
+  for (auto it = pr.begin(); it != pr.end(); ++it) {
+    const ParameterList& q = pr.sublist(pr.name(it));
+    const std::string side = q.get<std::string>("Side Set");
+    std::vector<Face> faces;
+    try {
+      faces = facesOf(model.mesh(), side);
+    } catch (const std::invalid_argument& e) {
+      throwInput(inputFile_, path("Pressures/" + pr.name(it) + "/Side Set"), side, e.what());
+    }
+    auto force = rcp(new Vector(model.map()));
+    const auto nodal = pressureForces(faces, q.get<double>("Value"), model.kinematics() == Kinematics::Axisymmetric);
+    for (const auto& [n, fn] : nodal) {
+      if (!model.dofs().ownsNode(n)) continue;
+      for (int c = 0; c < 3; ++c) {
+        const long long d = model.dof(n, c);
+        if (d >= 0 && fn[c] != 0.0) force->sumIntoGlobalValue(GO(d), fn[c]);
+      }
+    }
+    loads->add({pr.name(it), force, q.get<double>("Ramp Time")});
+  }
+  if (loads->empty()) return nullptr;
+  return loads;
 }
 
 // The contact pairs, and the mass with the contact surfaces massless when redistributed.
@@ -253,7 +285,7 @@ std::unique_ptr<StepLoop> ImplicitTransient::stepLoop(StructuralOperator& op) co
 void ImplicitTransient::run(RunContext& ctx) {
   const auto wallStart = std::chrono::steady_clock::now();
   auto timer = rcp(new Teuchos::StackedTimer(("Transient '" + name_ + "'").c_str()));
-  StructuralOperator op(b_->K, b_->M, s_.rayleighK, s_.rayleighM, b_->load, b_->contact.get(),
+  StructuralOperator op(b_->K, b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->contact.get(),
                         b_->links.get(), std::move(b_->solver), timer.get());
   op.setForwardIncrementContact(s_.explicitScheme && s_.contact.method == "Lagrange");
   describe(ctx.model, op);

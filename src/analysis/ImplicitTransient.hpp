@@ -53,7 +53,7 @@ class ImplicitTransient : public Analysis {
   // What setup builds for the run.
   struct Built {
     RCP<const CrsMatrix> K, M;
-    RCP<Vector> load;
+    std::shared_ptr<const Loads> loads;
     std::unique_ptr<ContactManager> contact;
     std::unique_ptr<DirectLinks> links;  // null: no shock links
     long long masslessNodes = 0;
@@ -71,7 +71,7 @@ class ImplicitTransient : public Analysis {
   };
   void readScheme();
   void readTimeSettings();
-  RCP<Vector> assembleLoads(const Model& model) const;
+  std::shared_ptr<const Loads> assembleLoads(const Model& model) const;
   void buildContact(Model& model);
   void buildSolver();
   void setupExplicit();

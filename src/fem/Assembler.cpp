@@ -92,7 +92,7 @@ void redistributeElementMass(const std::vector<Point3>& x, const std::vector<cha
       for (int b = 0; b < n; ++b) Me(a, a) += out(a, b);
 }
 
-RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn) const {
+RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs) const {
   const int owned = dofs_.numOwned();
   const long long first = dofs_.firstOwned();
   std::vector<std::vector<std::pair<GO, double>>> rows(owned);
@@ -122,6 +122,16 @@ RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn) const {
         if (gdof[j] >= 0 && Ke(i, j) != 0.0) row.emplace_back(GO(gdof[j]), Ke(i, j));
     }
   }
+  for (const NodalSpring& sp : springs)
+    for (int i = 0; i < 3; ++i) {
+      const long long gi = dofs_.dof(sp.node, i);
+      if (gi < first || gi >= first + owned) continue;
+      for (int j = 0; j < 3; ++j) {
+        const long long gj = dofs_.dof(sp.node, j);
+        const double kij = sp.stiffness * sp.direction[i] * sp.direction[j];
+        if (gj >= 0 && kij != 0.0) rows[gi - first].emplace_back(GO(gj), kij);
+      }
+    }
   // Combine duplicates; stable sort keeps element order, so sums do not depend on ranks.
   std::vector<size_t> counts(owned);
   for (int r = 0; r < owned; ++r) {
@@ -154,9 +164,10 @@ RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn) const {
   return A;
 }
 
-RCP<CrsMatrix> Assembler::stiffness() const {
+RCP<CrsMatrix> Assembler::stiffness(const std::vector<NodalSpring>& springs) const {
   return assemble([](const ElementKernel& k, MassKind, const std::vector<Point3>& x, const int*,
-                     DenseMatrix& Ke) { k.stiffness(x, Ke); });
+                     DenseMatrix& Ke) { k.stiffness(x, Ke); },
+                  springs);
 }
 
 RCP<CrsMatrix> Assembler::mass() const {

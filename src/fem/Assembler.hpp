@@ -33,13 +33,22 @@ struct BlockPhysics {
 void redistributeElementMass(const std::vector<Point3>& x, const std::vector<char>& massless,
                              int nc, MassKind kind, DenseMatrix& Me);
 
+// A linear spring from a node to a fixed point (grounded): stiffness k along the unit
+// direction d, k d d^T on the node's translations (components fixed or not carried drop out).
+struct NodalSpring {
+  int node = 0;
+  Point3 direction{};
+  double stiffness = 0.0;
+};
+
 class Assembler {
  public:
   Assembler(const Mesh& mesh, const DofMap& dofs, std::vector<BlockPhysics> blocks,
             RCP<const Comm> comm);
 
   RCP<const Map> map() const { return map_; }
-  RCP<CrsMatrix> stiffness() const;
+  // The elements' stiffness, plus the springs' k d d^T summed after them.
+  RCP<CrsMatrix> stiffness(const std::vector<NodalSpring>& springs = {}) const;
   RCP<CrsMatrix> mass() const;
   // The mass with the nodes flagged in `massless` (one entry per mesh node) carrying none: each
   // element touching them has its mass redistributed onto its other nodes
@@ -56,7 +65,7 @@ class Assembler {
  private:
   using ElementMatrixFn = std::function<void(const ElementKernel&, MassKind, const std::vector<Point3>&,
                                              const int* conn, DenseMatrix&)>;
-  RCP<CrsMatrix> assemble(const ElementMatrixFn& fn) const;
+  RCP<CrsMatrix> assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs = {}) const;
 
   const Mesh& mesh_;
   const DofMap& dofs_;

@@ -140,6 +140,7 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
     }
     for (int n : ns.nodes) mask[n] &= std::uint8_t(~fixed);
   }
+  readSprings(model.sublist("Springs"));
   const auto partitionStart = std::chrono::steady_clock::now();
   buildDofMap(std::move(mask), model.get<std::string>("Partition"));
   logPhase(*comm_, "partition and DOF map (" + std::to_string(dofs_->numGlobal()) + " unknowns)",
@@ -200,6 +201,26 @@ void Model::checkElementGeometry(const std::vector<BlockPhysics>& physics,
   }
 }
 
+// Model/Springs: a spring on every node of each set, its direction normalised.
+void Model::readSprings(const Teuchos::ParameterList& springs) {
+  for (auto it = springs.begin(); it != springs.end(); ++it) {
+    const std::string path = "Model/Springs/" + springs.name(it);
+    const Teuchos::ParameterList& s = springs.sublist(springs.name(it));
+    const NodeSet& ns = nodeSet(s.get<std::string>("Node Set"), path + "/Node Set");
+    const std::string text = s.get<std::string>("Direction");
+    Point3 d = parseVector3(text, inputFile_, path + "/Direction");
+    const double len = norm(d);
+    if (!(len > 0))
+      throwInput(inputFile_, path + "/Direction", text, "a spring's axis needs a non-zero direction",
+                 "give 'x y z' with a non-zero component, e.g. '1 0 0'");
+    if (kinematics_ != Kinematics::ThreeD && d[2] != 0.0)
+      throwInput(inputFile_, path + "/Direction", text, "a 2D model moves in the x-y plane",
+                 "give a direction with z = 0");
+    for (double& c : d) c /= len;
+    for (int n : ns.nodes) springs_.push_back({n, d, s.get<double>("Stiffness")});
+  }
+}
+
 // The DOF map on the ranks: Zoltan2 RCB parts (the default), or ranges of the mesh's
 // numbering. The log gives the partition's quality.
 void Model::buildDofMap(std::vector<std::uint8_t> mask, const std::string& method) {
@@ -242,7 +263,7 @@ RCP<const CrsMatrix> Model::stiffness() {
   if (K_.is_null()) {
     const auto start = std::chrono::steady_clock::now();
     try {
-      K_ = assembler_->stiffness();
+      K_ = assembler_->stiffness(springs_);
     } catch (const std::invalid_argument& e) {
       throwInput(inputFile_, "Mesh/File", "", std::string("bad element: ") + e.what());
     }

@@ -54,6 +54,7 @@ class Model {
                                                   const Material& m, const Teuchos::ParameterList& bp,
                                                   const std::string& file) const;
   void checkElementGeometry(const std::vector<BlockPhysics>& physics, const std::string& meshParameter) const;
+  void readSprings(const Teuchos::ParameterList& springs);
   void buildDofMap(std::vector<std::uint8_t> mask, const std::string& method);
 
   std::string inputFile_;
@@ -63,6 +64,7 @@ class Model {
   std::vector<Material> blockMaterial_;
   std::unique_ptr<DofMap> dofs_;
   std::unique_ptr<Assembler> assembler_;
+  std::vector<NodalSpring> springs_;  // Model/Springs, one per node
   RCP<const CrsMatrix> K_, M_;
 };
 

@@ -56,6 +56,13 @@ Teuchos::ParameterList topLevelParameters() {
   declareRequiredString(dir, "Node Set", "node set of the mesh");
   declareRequiredString(dir, "Components", "fixed components, e.g. 'DX' or 'DX DY DZ' or 'all'");
 
+  ParameterList& spr = declareNamedSublists(model, "Springs",
+                                            "linear springs from each node of a node set to a fixed "
+                                            "point (grounded), by name; in the stiffness of every analysis");
+  declareRequiredString(spr, "Node Set", "node set of the mesh: one spring per node");
+  declareRequiredString(spr, "Direction", "the springs' axis 'x y z' (normalised; e.g. '1 0 0')");
+  declareRequiredDouble(spr, "Stiffness", "stiffness of each node's spring [N/m]", Range::positive());
+
   declareOpenSublist(top, "Analyses",
                      "the analyses to run, in order; each sublist has a 'Type' (see below)");
   return top;

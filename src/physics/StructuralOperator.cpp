@@ -12,10 +12,10 @@
 namespace choc {
 
 StructuralOperator::StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
-                                       double rayleighK, double rayleighM, RCP<const Vector> load,
+                                       double rayleighK, double rayleighM, std::shared_ptr<const Loads> loads,
                                        ContactManager* contact, DirectLinks* links,
                                        std::unique_ptr<LinearSolver> solver, Teuchos::StackedTimer* timer)
-    : K_(std::move(K)), M_(std::move(M)), aK_(rayleighK), aM_(rayleighM), load_(std::move(load)),
+    : K_(std::move(K)), M_(std::move(M)), aK_(rayleighK), aM_(rayleighM), loads_(std::move(loads)),
       contact_(contact), links_(links), solver_(std::move(solver)), timer_(timer) {
 
   tmp_ = rcp(new Vector(K_->getRowMap()));
@@ -83,18 +83,12 @@ double StructuralOperator::dampingPower(const Vector& v, double kinetic) const {
   return power;
 }
 
-double StructuralOperator::loadWork(const Vector& u, const Vector& u0) const {
-  if (load_.is_null()) return 0.0;
-  energyTmp_->update(1.0, u, -1.0, u0, 0.0);
-  return load_->dot(*energyTmp_);
-}
-
 void StructuralOperator::applyMass(const Vector& a, Vector& out) {
   TimerScope ts(timer_, "Transient: assembly");
   M_->apply(a, out);
 }
 
-void StructuralOperator::applyForces(const Vector& u, const Vector& v, double, Vector& out) {
+void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t, Vector& out) {
   TimerScope ts(timer_, "Transient: assembly");
   K_->apply(u, out);
   if (aK_ != 0.0) {
@@ -105,7 +99,7 @@ void StructuralOperator::applyForces(const Vector& u, const Vector& v, double, V
     M_->apply(v, *tmp_);
     out.update(aM_, *tmp_, 1.0);
   }
-  if (!load_.is_null()) out.update(-1.0, *load_, 1.0);
+  if (loads_) loads_->subtractFrom(t, out);
 }
 
 double StructuralOperator::addConstraintForces(const Vector& u, const Vector& v, Vector& out) {

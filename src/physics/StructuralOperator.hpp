@@ -17,6 +17,7 @@
 #include "contact/ContactManager.hpp"
 #include "contact/ContactSystem.hpp"
 #include "physics/DirectLinks.hpp"
+#include "physics/Loads.hpp"
 #include "solvers/LinearSolver.hpp"
 #include "timeint/SecondOrderOperator.hpp"
 
@@ -24,10 +25,10 @@ namespace choc {
 
 class StructuralOperator : public SecondOrderOperator {
  public:
-  // load, contact and links may be null. The solver is owned; the contact manager and the
+  // loads, contact and links may be null. The solver is owned; the contact manager and the
   // links are not.
   StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, double rayleighK,
-                     double rayleighM, RCP<const Vector> load, ContactManager* contact,
+                     double rayleighM, std::shared_ptr<const Loads> loads, ContactManager* contact,
                      DirectLinks* links, std::unique_ptr<LinearSolver> solver,
                      Teuchos::StackedTimer* timer);
 
@@ -58,14 +59,14 @@ class StructuralOperator : public SecondOrderOperator {
 
   const DirectLinks* links() const { return links_; }
   // Energies of a state, for the output: 1/2 v.M v, 1/2 u.K u, the contact springs' energy,
-  // the damping power v.C v (given the kinetic energy), the loads' work f.(u - u0).
+  // the damping power v.C v (given the kinetic energy).
   double kineticEnergy(const Vector& v) const;
   double strainEnergy(const Vector& u) const;
   double contactEnergy(const Vector& u) const { return contact_ ? contact_->energy(u) : 0.0; }
   // Work of the contact pairs' friction dissipated since the start [J].
   double frictionDissipation() const { return contact_ ? contact_->frictionDissipation() : 0.0; }
   double dampingPower(const Vector& v, double kinetic) const;
-  double loadWork(const Vector& u, const Vector& u0) const;
+  const Loads* loads() const { return loads_.get(); }  // null: none
 
   int factorizations() const { return solver_->factorizations(); }
   const LinearSolver& solver() const { return *solver_; }
@@ -77,7 +78,7 @@ class StructuralOperator : public SecondOrderOperator {
   ContactSystem& system();
   RCP<const CrsMatrix> K_, M_;
   double aK_, aM_;
-  RCP<const Vector> load_;
+  std::shared_ptr<const Loads> loads_;
   ContactManager* contact_;
   DirectLinks* links_;
   std::unique_ptr<LinearSolver> solver_;

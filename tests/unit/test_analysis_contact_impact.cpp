@@ -98,7 +98,9 @@ void staticCompression(const std::string& method, int across2, bool exactPressur
   for (int n : pou1.nodes)
     if (model.dofs().ownsNode(n)) load->sumIntoGlobalValue(GO(model.dof(n, 2)), -F / pou1.nodes.size());
   Teuchos::ParameterList lsp = linearSolverParameters();
-  StructuralOperator op(model.stiffness(), model.mass(), 0, 0, load, &cm, nullptr, makeLinearSolver(lsp), nullptr);
+  auto loads = std::make_shared<Loads>();
+  loads->add({"load", load, 0.0});
+  StructuralOperator op(model.stiffness(), model.mass(), 0, 0, loads, &cm, nullptr, makeLinearSolver(lsp), nullptr);
   Vector u(model.map());
   op.initializeConstraints(u);
   ASSERT_EQ(cm.activeCount(), cm.numConstraints());

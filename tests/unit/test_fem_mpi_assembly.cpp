@@ -130,10 +130,11 @@ struct Scene {
 // Assembles K and M on `comm` (with the DofMap of that communicator) and returns them; M with
 // the nodes flagged in `massless` massless when it is not empty (redistributed mass).
 std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> assemble(const Scene& m, RCP<const Comm> comm,
-                                                   const std::vector<char>& massless = {}) {
+                                                   const std::vector<char>& massless = {},
+                                                   const std::vector<NodalSpring>& springs = {}) {
   DofMap dofs(m.mask, comm->getSize(), comm->getRank());
   Assembler a(m.mesh, dofs, m.physics, comm);
-  return {a.stiffness(), massless.empty() ? a.mass() : a.mass(massless)};
+  return {a.stiffness(springs), massless.empty() ? a.mass() : a.mass(massless)};
 }
 
 void checkRankIndependence(const Scene& m, const std::string& what,
@@ -215,6 +216,44 @@ TEST(MpiAssembly, Beam2BenchmarkMeshIsRankIndependent) {
   for (int n : m.mesh.findNodeSet("D")->nodes) m.mask[n] = 0;
   ASSERT_EQ(m.mesh.numNodes(), 102);
   checkRankIndependence(m, "BEAM2 1D");
+}
+
+// Springs to ground (Model/Springs): K gains k d d^T on each spring node's free translations
+// (a fixed component drops out), nothing else, and stays bitwise rank-independent.
+TEST(MpiAssembly, GroundedSpringsAddTheirBlockOnlyAndAreRankIndependent) {
+  Scene m = hex8BenchmarkScene();
+  m.mask = Assembler::carriedComponents(m.mesh, m.physics);
+  const std::vector<int>& clamped = m.mesh.findNodeSet("CL_POU2")->nodes;
+  for (int n : clamped) m.mask[n] &= std::uint8_t(~(1u << DZ));
+  const Point3 d{1.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0};
+  const double k = 3e8;
+  std::vector<NodalSpring> springs;
+  for (int n : {0, 7, 100}) springs.push_back({n, d, k});
+  springs.push_back({clamped[0], d, k});  // its DZ is fixed
+  auto world = Teuchos::DefaultComm<int>::getComm();
+  RCP<const Comm> self = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+  auto [Kd, Md] = assemble(m, world, {}, springs);
+  auto [Ks, Ms] = assemble(m, self, {}, springs);
+  compareWithSerial(*Kd, *Ks, "HEX8 with springs K");
+  auto [K0, M0] = assemble(m, self);
+  DofMap dofs(m.mask, 1, 0);
+  std::map<std::pair<long long, long long>, double> expected;
+  for (const NodalSpring& s : springs)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (dofs.dof(s.node, i) >= 0 && dofs.dof(s.node, j) >= 0)
+          expected[{dofs.dof(s.node, i), dofs.dof(s.node, j)}] += k * d[i] * d[j];
+  ASSERT_EQ(expected.size(), 3u * 9u + 4u);  // the clamped node keeps its DX, DY block
+  for (size_t i = 0; i < K0->getNodeNumRows(); ++i) {
+    const GO g = K0->getRowMap()->getGlobalElement(LO(i));
+    const Row with = globalRow(*Ks, g), without = globalRow(*K0, g);
+    ASSERT_EQ(with.size(), without.size()) << "row " << g;
+    for (const auto& [c, v] : with) {
+      const auto e = expected.find({g, c});
+      const double added = e == expected.end() ? 0.0 : e->second;
+      EXPECT_NEAR(v - without.at(c), added, 1e-12 * std::abs(v)) << "row " << g << ", column " << c;
+    }
+  }
 }
 
 }  // namespace

@@ -1,0 +1,60 @@
+// External loads of the direct transient: groups of nodal forces (on node sets) and pressures
+// (on side sets, integrated with the faces' shape functions), each at full value from t = 0 or
+// ramped linearly from zero at t = 0 to full at its ramp time, then constant.
+#pragma once
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/ContactFaces.hpp"
+#include "core/TpetraTypes.hpp"
+#include "core/Vec3.hpp"
+
+namespace choc {
+
+struct LoadGroup {
+  std::string name;
+  RCP<const Vector> force;  // the full value
+  double rampTime = 0.0;    // 0: full from t = 0
+  // The fraction of the full value applied at time t.
+  double factor(double t) const;
+};
+
+class Loads {
+ public:
+  void add(LoadGroup g) { groups_.push_back(std::move(g)); }
+  bool empty() const { return groups_.empty(); }
+  const std::vector<LoadGroup>& groups() const { return groups_; }
+  // out -= f(t).
+  void subtractFrom(double t, Vector& out) const;
+
+ private:
+  std::vector<LoadGroup> groups_;
+};
+
+// The loads' work from the start: for each group, the trapezoidal rule in time on its factor
+// against F.du, which is exact for constant loads and for ramps that end on a step.
+// update() is called once per accepted step, in order; the first call sets the start.
+class LoadWork {
+ public:
+  explicit LoadWork(const Loads* loads) : loads_(loads) {}
+  double update(const Vector& u, double t);
+  // For a checkpoint: the work, the last time and each group's last F.u.
+  std::vector<double> state() const;
+  void restore(const std::vector<double>& s);
+  size_t stateSize() const { return 3 + (loads_ ? loads_->groups().size() : 0); }
+
+ private:
+  const Loads* loads_;
+  bool started_ = false;
+  double work_ = 0.0, time_ = 0.0;
+  std::vector<double> projection_;
+};
+
+// The consistent nodal forces of a uniform pressure p on faces (positive pushing against the
+// outward normal, into the body): f_a = -p integral of N_a n dA, by node. Axisymmetric edges are
+// rings (length element weighted by 2 pi r): the forces of the whole 360-degree body.
+std::map<int, Point3> pressureForces(const std::vector<Face>& faces, double p, bool axisymmetric);
+
+}  // namespace choc
