@@ -15,6 +15,16 @@ double LoadGroup::factor(double t) const {
   return std::max(t, 0.0) / rampTime;
 }
 
+void Loads::add(LoadGroup g) {
+  for (LoadGroup& h : groups_)
+    if (h.rampTime == g.rampTime) {
+      h.force->update(1.0, *g.force, 1.0);
+      h.name += ", " + g.name;
+      return;
+    }
+  groups_.push_back(std::move(g));
+}
+
 void Loads::subtractFrom(double t, Vector& out) const {
   for (const LoadGroup& g : groups_) {
     const double f = g.factor(t);

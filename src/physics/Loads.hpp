@@ -15,7 +15,7 @@ namespace choc {
 
 struct LoadGroup {
   std::string name;
-  RCP<const Vector> force;  // the full value
+  RCP<Vector> force;        // the full value
   double rampTime = 0.0;    // 0: full from t = 0
   // The fraction of the full value applied at time t.
   double factor(double t) const;
@@ -23,7 +23,8 @@ struct LoadGroup {
 
 class Loads {
  public:
-  void add(LoadGroup g) { groups_.push_back(std::move(g)); }
+  // A group with the ramp time of an earlier one is summed into it (one vector per ramp).
+  void add(LoadGroup g);
   bool empty() const { return groups_.empty(); }
   const std::vector<LoadGroup>& groups() const { return groups_; }
   // out -= f(t).

@@ -62,6 +62,10 @@ choc_contact_script(sliding 300)
 # sticking inside it), the block slides then sticks, no energy growth, Newton <= 2.5 a step; and
 # mu -> 0 (1e-12) reproduces the frictionless sliding to 1e-8 of the peaks.
 choc_contact_script(sliding_friction 300)
+# SDNV104 (issue 15, BENCHMARKS section 4), QUAD4 and QUAD8: the pad's whole motion against the
+# 1-DOF closed form with the ramp (0.5 % of the peak), the friction work against mu N times the
+# distance slid (0.5 %), the Coulomb law, the normal force and the energy balance.
+choc_contact_script(sdnv104 120)
 
 # Frame invariance of the search in the current configuration (BENCHMARKS section 8): the
 # sliding scene turned as a rigid whole (mesh, velocity, loads) gives the same motion, contact

@@ -274,3 +274,18 @@ choc_cli_input_error(friction_explicit check bad_friction_explicit.xml
   "parameter 'Analyses/impact/Contact/Pairs/shock/Friction Coefficient' = '0.3': friction is solved with the implicit schemes' Newton iterations, which central differences do not make. use an implicit scheme")
 choc_cli_input_error(friction_cg check bad_friction_cg.xml
   "parameter 'Analyses/impact/Contact/Pairs/shock/Friction Coefficient' = '0.3': the tangent of a sliding node is not symmetric, which CG cannot solve. use 'Linear Solver/Method' = Direct or GMRES")
+# Loads and springs (issue 15, SDNV104): each bad input is input/sdnv104_quad4.xml with one thing
+# changed: a pressure on a side set the mesh lacks, a negative ramp time; a spring on a missing
+# node set, with a zero axis, an axis out of a 2D model's plane, a negative stiffness.
+choc_cli_input_error(pressure_side_set check bad_pressure_side_set.xml
+  "parameter 'Analyses/lagrange/Pressures/normal load/Side Set' = 'PAD_UPPER': no side set 'PAD_UPPER' in the mesh .side sets: PAD_BOTTOM, PAD_TOP")
+choc_cli_input_error(pressure_ramp check bad_pressure_ramp.xml
+  "parameter 'Analyses/lagrange/Pressures/normal load/Ramp Time' = '-0.07': out of range. valid: a number in .0, inf.")
+choc_cli_input_error(spring_node_set check bad_spring_node_set.xml
+  "parameter 'Model/Springs/ties/Node Set' = 'PAD_SPRINGS': no node set of that name in the mesh. did you mean 'PAD_SPRING'")
+choc_cli_input_error(spring_zero_direction check bad_spring_zero_direction.xml
+  "parameter 'Model/Springs/ties/Direction' = '0 0 0': a spring's axis needs a non-zero direction. give 'x y z' with a non-zero component")
+choc_cli_input_error(spring_direction_2d check bad_spring_direction_2d.xml
+  "parameter 'Model/Springs/ties/Direction' = '1 0 1': a 2D model moves in the x-y plane. give a direction with z = 0")
+choc_cli_input_error(spring_stiffness check bad_spring_stiffness.xml
+  "parameter 'Model/Springs/ties/Stiffness' = '-12000': out of range. valid: a number in .0, inf.")

@@ -109,5 +109,24 @@ TEST(LoadWork, ExactForConstantAndRampedLoadsOnALinearMotion) {
   EXPECT_NEAR(wr.update(u, 1.1), fw * (1.1 - 0.2), 1e-12);
 }
 
+// Groups with the same ramp share one vector (summed in the order given); others stay apart.
+TEST(Loads, GroupsWithOneRampAreSummed) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto map = rcp(new Map(2, 0, comm));
+  auto a = rcp(new Vector(map)), b = rcp(new Vector(map)), c = rcp(new Vector(map));
+  a->putScalar(1.0);
+  b->putScalar(2.0);
+  c->putScalar(4.0);
+  Loads loads;
+  loads.add({"a", a, 0.1});
+  loads.add({"b", b, 0.0});
+  loads.add({"c", c, 0.1});
+  ASSERT_EQ(loads.groups().size(), 2u);
+  EXPECT_EQ(loads.groups()[0].name, "a, c");
+  Vector out(map);
+  loads.subtractFrom(0.05, out);  // -(0.5 x 5 + 2)
+  for (double v : out.getData()) EXPECT_NEAR(v, -4.5, 1e-15);
+}
+
 }  // namespace
 }  // namespace choc

@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+"""SDNV104 (issue 15, BENCHMARKS section 4) over the whole history, QUAD4 and QUAD8
+(input/sdnv104_quad4.xml, input/sdnv104_quad8.xml): the 7,000 kg pad, tied by springs
+k = 24,000 N/m, pressed by N = 70 kN and pushed by F = 200 kN (both ramped from 0 to full at
+0.07 s), slides with Coulomb friction mu = 0.3 along the frame.
+
+1. The motion: DX of the pad against the 1-DOF closed form, m x'' + k x = r(t) (F - s mu N)
+   while sliding in direction s (the ramp's response, then half-cosines about (F -+ mu N) / k
+   from each stop, slipping on while |F - k x| > mu N), at every step to 0.5 % of the peak
+   (the issue's bound for the rows).
+2. The friction work: mu N r(t) times the distance the pad's own history slid, at every step
+   after the ramp, to 0.5 % (the issue's bound).
+3. The law and the loads: the tangential force never above mu times the normal force (1e-9);
+   equal to it while the pad moves faster than 0.1 m/s (1e-6); the normal force equal to
+   N r(t) after 0.2 s to 0.5 % (the pad does not move vertically; its vibrations are damped).
+4. The energy balance never above +0.1 % of the largest total energy (the pad starts at rest:
+   E0 = 0), with the external work of ramped pressures.
+usage: sdnv104.py CHOC SOURCE_DIR WORK_DIR"""
+import math
+import os
+import sys
+
+import numpy as np
+
+from deck_run import run_deck
+
+choc, src, work = sys.argv[1:4]
+os.makedirs(work, exist_ok=True)
+m, k, F, N, mu, T = 7000.0, 24000.0, 2e5, 7e4, 0.3, 0.07
+w = math.sqrt(k / m)
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def ramp(t):
+    return np.minimum(np.maximum(t, 0.0) / T, 1.0)
+
+
+def exact(times):
+    """The closed form: sliding forward through the ramp to the first stop, then half-cosines."""
+    a = (F - mu * N) / k
+
+    def forward(t):  # response to the ramped (F - mu N), from rest
+        if t < T:
+            return a * (t / T - math.sin(w * t) / (w * T))
+        return a * (1 - (math.sin(w * t) - math.sin(w * (t - T))) / (w * T))
+
+    def velocity(t):
+        if t < T:
+            return a * (1 - math.cos(w * t)) / T
+        return -a * (math.cos(w * t) - math.cos(w * (t - T))) / T
+
+    lo, hi = 1.0, 2.0  # the first stop: bisection on the velocity
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if velocity(mid) > 0 else (lo, mid)
+    stops = [(lo, forward(lo))]
+    while stops[-1][0] < times[-1] + 1:
+        t0, x0 = stops[-1]
+        if abs(F - k * x0) <= mu * N:
+            stops.append((math.inf, x0))  # sticks for good
+            break
+        s = 1.0 if F - k * x0 > 0 else -1.0
+        c = (F - s * mu * N) / k
+        stops.append((t0 + math.pi / w, 2 * c - x0))
+    x = []
+    for t in times:
+        if t <= stops[0][0]:
+            x.append(forward(t))
+            continue
+        for (t0, x0), (t1, _) in zip(stops, stops[1:]):
+            if t0 < t <= t1:
+                if t1 == math.inf:
+                    x.append(x0)
+                else:
+                    s = 1.0 if F - k * x0 > 0 else -1.0
+                    c = (F - s * mu * N) / k
+                    x.append(c + (x0 - c) * math.cos(w * (t - t0)))
+                break
+    return np.array(x)
+
+
+for element in ("quad4", "quad8"):
+    out, log = run_deck(choc, src, work, f"sdnv104_{element}.xml", element, label="sdnv104")
+    h = np.genfromtxt(os.path.join(out, "lagrange.history.csv"), delimiter=",", names=True)
+    t, x, v = h["time"], h["PAD_SPRINGDX"], h["PAD_SPRINGVX"]
+    ref = exact(t)
+    err = np.abs(x - ref).max() / np.abs(ref).max()
+    check(err <= 5e-3, f"{element}: DX against the 1-DOF closed form within {err:.1e} of its peak "
+          f"({np.abs(ref).max():.3f} m)")
+    check(x.max() > 14.8 and x[-1] < 4.0, f"{element}: slid forward to {x.max():.3f} m and back to {x[-1]:.3f} m")
+    # 2. mu N r(t) times the distance slid, by the midpoint of each step's ramp.
+    tm = 0.5 * (t[1:] + t[:-1])
+    slid = np.concatenate([[0.0], np.cumsum(mu * N * ramp(tm) * np.abs(np.diff(x)))])
+    after = t > 2 * T
+    rel = np.abs(h["padfriction_work"][after] - slid[after]) / slid[after]
+    check(rel.max() <= 5e-3, f"{element}: friction work = mu N x distance slid within {rel.max():.1e}")
+    # 3. The law and the normal force.
+    fn, ft = np.abs(h["padforce"]), np.abs(h["padtangential_force"])
+    over = (ft - mu * fn).max() / (mu * N)
+    check(over <= 1e-9, f"{element}: tangential force <= mu x normal force (excess {over:.1e} of mu N)")
+    moving = np.abs(v) > 0.1
+    cone = np.abs(ft[moving] - mu * fn[moving]).max() / (mu * N)
+    check(cone <= 1e-6, f"{element}: tangential force = mu x normal force while moving ({cone:.1e})")
+    late = t > 0.2
+    dn = np.abs(fn[late] - N * ramp(t[late])).max() / N
+    check(dn <= 5e-3, f"{element}: normal force = N r(t) within {dn:.1e} after 0.2 s")
+    # 4. The energy.
+    growth = h["energybalance"].max() / np.abs(h["energytotal"]).max()
+    check(growth <= 1e-3, f"{element}: largest energy balance {growth:+.1e} of the largest total energy")
+
+if failures:
+    sys.exit("sdnv104: " + "; ".join(failures))
+print("sdnv104: all checks hold")
