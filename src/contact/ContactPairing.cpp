@@ -9,6 +9,7 @@
 #include "contact/SurfaceSearch.hpp"
 #include "fem/DenseMatrix.hpp"
 #include "fem/MassLumping.hpp"
+#include "fem/Quadrature.hpp"
 #include "fem/ShapeFunctions.hpp"
 
 namespace choc {
@@ -33,10 +34,7 @@ std::map<int, double> tributaryAreas(const std::vector<Face>& slave, bool axisym
     }
     const int n = static_cast<int>(f.nodes.size());
     DenseMatrix m(n, n);
-    QuadratureRule line;  // 3-point Gauss on [-1, 1] for edges
-    line.points = {{-std::sqrt(0.6), 0, 0}, {0, 0, 0}, {std::sqrt(0.6), 0, 0}};
-    line.weights = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
-    const QuadratureRule& rule = f.edgeNodes ? line : massRule(f.shape);
+    const QuadratureRule& rule = f.edgeNodes ? gaussBoxRule(1, 3) : massRule(f.shape);  // edges: 3-point Gauss
     for (int k = 0; k < rule.size(); ++k) {
       const FacePoint q = evaluateFace(f, rule.points[k][0], rule.points[k][1]);
       const double ring = axisymmetric && f.edgeNodes ? 2.0 * M_PI * q.x[0] : 1.0;

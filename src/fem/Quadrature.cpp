@@ -45,11 +45,12 @@ QuadratureRule makeBoxRule(int dim, int n) {
   gaussLegendre(n, x, w);
   QuadratureRule q;
   q.degree = 2 * n - 1;
-  const int nk = dim == 3 ? n : 1;
+  const int nj = dim >= 2 ? n : 1, nk = dim == 3 ? n : 1;
   for (int k = 0; k < nk; ++k)
-    for (int j = 0; j < n; ++j)
+    for (int j = 0; j < nj; ++j)
       for (int i = 0; i < n; ++i)
-        add(q, {x[i], x[j], dim == 3 ? x[k] : 0.0}, w[i] * w[j] * (dim == 3 ? w[k] : 1.0));
+        add(q, {x[i], dim >= 2 ? x[j] : 0.0, dim == 3 ? x[k] : 0.0},
+            w[i] * (dim >= 2 ? w[j] : 1.0) * (dim == 3 ? w[k] : 1.0));
   return q;
 }
 
@@ -130,10 +131,10 @@ QuadratureRule makeTetrahedronRule(int points) {
 }  // namespace
 
 const QuadratureRule& gaussBoxRule(int dim, int n) {
-  if (dim != 2 && dim != 3) throw std::invalid_argument("Gauss box rule: dim must be 2 or 3");
+  if (dim < 1 || dim > 3) throw std::invalid_argument("Gauss box rule: dim must be 1, 2 or 3");
   static const std::map<std::pair<int, int>, QuadratureRule> rules = [] {
     std::map<std::pair<int, int>, QuadratureRule> r;
-    for (int d = 2; d <= 3; ++d)
+    for (int d = 1; d <= 3; ++d)
       for (int n = 1; n <= 3; ++n) r[{d, n}] = makeBoxRule(d, n);
     return r;
   }();

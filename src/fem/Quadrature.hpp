@@ -17,7 +17,7 @@ struct QuadratureRule {
   int size() const { return static_cast<int>(points.size()); }
 };
 
-// n x ... x n Gauss-Legendre on [-1, 1]^dim (n = 1, 2 or 3; dim = 2 or 3): degree 2n - 1 in
+// n x ... x n Gauss-Legendre on [-1, 1]^dim (n = 1, 2 or 3; dim = 1, 2 or 3): degree 2n - 1 in
 // each variable. Points ordered with xi fastest.
 const QuadratureRule& gaussBoxRule(int dim, int n);
 

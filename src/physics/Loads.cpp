@@ -6,6 +6,7 @@
 
 #include <Tpetra_Vector.hpp>
 
+#include "fem/Quadrature.hpp"
 #include "fem/ShapeFunctions.hpp"
 
 namespace choc {
@@ -63,11 +64,9 @@ void LoadWork::restore(const std::vector<double>& s) {
 
 std::map<int, Point3> pressureForces(const std::vector<Face>& faces, double p, bool axisymmetric) {
   std::map<int, Point3> forces;
-  QuadratureRule line;  // 3-point Gauss on [-1, 1]: exact for LINE3 shape functions times a ring
-  line.points = {{-std::sqrt(0.6), 0, 0}, {0, 0, 0}, {std::sqrt(0.6), 0, 0}};
-  line.weights = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
   for (const Face& f : faces) {
-    const QuadratureRule& rule = f.edgeNodes ? line : massRule(f.shape);
+    // Edges: 3-point Gauss, exact for LINE3 shape functions times a ring.
+    const QuadratureRule& rule = f.edgeNodes ? gaussBoxRule(1, 3) : massRule(f.shape);
     for (int k = 0; k < rule.size(); ++k) {
       const FacePoint q = evaluateFace(f, rule.points[k][0], rule.points[k][1]);
       const double ring = axisymmetric && f.edgeNodes ? 2.0 * M_PI * q.x[0] : 1.0;
