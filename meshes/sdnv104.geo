@@ -38,6 +38,15 @@ Transfinite Curve{12, 14} = 2;
 Transfinite Surface{11};
 Recombine Surface{11};
 
+// The frame-invariance check (tests/cli/scripts/sdnv104.py) turns the whole scene by 'angle'
+// radians about z through the origin (gmsh -setnumber angle A).
+If (!Exists(angle))
+  angle = 0;
+EndIf
+If (angle != 0)
+  Rotate {{0, 0, 1}, {0, 0, 0}, angle} { Surface{1, 11}; }
+EndIf
+
 Physical Surface("PAD") = {1};
 Physical Surface("FRAME") = {11};
 Physical Curve("PAD_BOTTOM") = {1};
