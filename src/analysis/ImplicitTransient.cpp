@@ -21,6 +21,24 @@
 
 namespace choc {
 
+namespace {
+
+// The Newton sublist of a Transient.
+void declareNewton(ParameterList& nw) {
+  declareDouble(nw, "Residual Tolerance", 1e-8,
+                "||R|| / (largest of ||inertia||, ||forces||, ||contact forces||)", Range::positive());
+  declareDouble(nw, "Increment Tolerance", 1e-8,
+                "||du|| of the last correction / ||u_{n+1} - predictor||", Range::positive());
+  declareInt(nw, "Maximum Iterations", 10, "Newton corrections per active-set pass", Range::atLeast(1));
+  declareChoice(nw, "Convergence", "auto", {"auto", "residual and increment", "residual"},
+                "which tests accept an iterate: 'residual and increment' both; 'residual' the "
+                "residual alone, saving the solve that only confirms a small increment; 'auto' "
+                "the residual alone in the passes that are linear (no friction, no shock links: "
+                "one correction per step while the contact status holds) and both otherwise");
+}
+
+}  // namespace
+
 Teuchos::ParameterList ImplicitTransient::parameters() {
   Teuchos::ParameterList p;
   declareRequiredChoice(p, "Type", {"Transient"}, "analysis type");
@@ -45,15 +63,7 @@ Teuchos::ParameterList ImplicitTransient::parameters() {
   ParameterList& ray = declareSublist(p, "Rayleigh Damping", "C = a K + b M");
   declareDouble(ray, "Stiffness Coefficient", 0.0, "a [s]", Range::nonNegative());
   declareDouble(ray, "Mass Coefficient", 0.0, "b [1/s]", Range::nonNegative());
-  ParameterList& nw = declareSublist(p, "Newton", "Newton iterations of each step");
-  declareDouble(nw, "Residual Tolerance", 1e-8,
-                "||R|| / (largest of ||inertia||, ||forces||, ||contact forces||)", Range::positive());
-  declareDouble(nw, "Increment Tolerance", 1e-8,
-                "||du|| of the last correction / ||u_{n+1} - predictor||", Range::positive());
-  declareInt(nw, "Maximum Iterations", 10, "Newton corrections per active-set pass", Range::atLeast(1));
-  declareChoice(nw, "Convergence", "residual and increment", {"residual and increment", "residual"},
-                "'residual' accepts an iterate on the residual test alone, saving the solve that "
-                "confirms a small increment (about half the solves of a linear step)");
+  declareNewton(declareSublist(p, "Newton", "Newton iterations of each step"));
   ParameterList& sc = declareSublist(p, "Step Control", "what a failed step does");
   declareInt(sc, "Maximum Step Cuts", 0,
              "cuts of dt allowed inside one step before the run stops (0: stop at once)",
@@ -146,7 +156,10 @@ void ImplicitTransient::readTimeSettings() {
   ts.newton.residualTolerance = nw.get<double>("Residual Tolerance");
   ts.newton.incrementTolerance = nw.get<double>("Increment Tolerance");
   ts.newton.maxIterations = nw.get<int>("Maximum Iterations");
-  ts.newton.requireIncrement = nw.get<std::string>("Convergence") != "residual";
+  const std::string convergence = nw.get<std::string>("Convergence");
+  ts.newton.convergence = convergence == "residual"                 ? Convergence::Residual
+                          : convergence == "residual and increment" ? Convergence::ResidualAndIncrement
+                                                                    : Convergence::Auto;
   ts.maxCuts = params_.sublist("Step Control").get<int>("Maximum Step Cuts");
   ts.cutFactor = params_.sublist("Step Control").get<double>("Cut Factor");
 }

@@ -42,6 +42,11 @@ class StructuralOperator : public SecondOrderOperator {
   // acceleration is solved by blocks; see the .cpp. Otherwise the default (W = M).
   CorrectionStatus solveInitialAcceleration(const Vector& u, const Vector& r, Vector& a) override;
   ConstraintUpdate updateConstraints(const Vector& u) override;
+  // Linear elasticity and constant-in-u loads: linear unless friction (stick and slip decided
+  // at every residual) or shock links (their status likewise) act.
+  bool linearWithinPass() const override {
+    return !links_ && !(contact_ && contact_->hasFriction());
+  }
   void beginStep(const Vector& u, double t, double dt) override;
   void acceptStep(const Vector& u) override;
   double elasticTermsNorm(const Vector& u) const override;

@@ -18,6 +18,9 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
   std::string lastSummary;
   for (int pass = 1; pass <= s.maxActiveSetIterations; ++pass) {
     out.activeSetIterations = pass;
+    const bool requireIncrement =
+        s.convergence == Convergence::ResidualAndIncrement ||
+        (s.convergence == Convergence::Auto && !op.linearWithinPass());
     bool converged = false;
     double lastIncrement = -1.0;
     for (int it = 0;; ++it) {
@@ -33,7 +36,7 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
       const bool incOk = lastIncrement >= 0 &&
                          lastIncrement <= std::max(s.incrementTolerance * stepNorm, 1e-13 * n.solutionNorm);
       const bool incrementAccepted =
-          (!s.requireIncrement && lastIncrement >= 0) || incOk || lastIncrement == 0.0 ||
+          (!requireIncrement && lastIncrement >= 0) || incOk || lastIncrement == 0.0 ||
           (lastIncrement < 0 && n.residual == 0.0);
       if (resOk && incrementAccepted) {
         converged = true;

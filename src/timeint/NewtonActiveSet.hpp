@@ -4,10 +4,13 @@
 //   ||R|| <= residualTolerance * reference   (reference: largest of the force terms' norms),
 //            or ||R|| <= 1e-12 * (round-off floor of the system, see ResidualNorms)
 //   ||du|| <= max(incrementTolerance * incrementScale, 1e-13 ||u||) on the last correction
-//   (see ResidualNorms), unless requireIncrement is false: the residual test alone then
-//   accepts any iterate after the first correction, which saves the solve that only confirms
-//   a converged one (the predictor itself is never accepted on its residual: the reference
-//   includes terms as large as c_a M u).
+//   (see ResidualNorms), unless the settings' Convergence waives it: the residual test alone
+//   then accepts any iterate after the first correction, which saves the solve that only
+//   confirms a converged one (the predictor itself is never accepted on its residual: the
+//   reference includes terms as large as c_a M u). Convergence::Auto waives it exactly in
+//   the passes the operator declares linear (SecondOrderOperator::linearWithinPass: one
+//   exact correction solves them, so its residual is the whole test), and keeps it for
+//   nonlinear ones (friction, shock links), whose residual can be small while u still moves.
 // Failure (iterations exhausted, a failed linear solve, a non-finite value) is returned,
 // never thrown, so that a step controller can react.
 #pragma once
@@ -18,11 +21,14 @@
 
 namespace choc {
 
+// Which tests accept an iterate: both, the residual alone, or the residual alone in the passes
+// that are linear (the default of the inputs).
+enum class Convergence { ResidualAndIncrement, Residual, Auto };
+
 struct NewtonSettings {
   double residualTolerance = 1e-8;
   double incrementTolerance = 1e-8;
-  // false: the residual test alone decides (no confirming solve after the last correction).
-  bool requireIncrement = true;
+  Convergence convergence = Convergence::ResidualAndIncrement;
   int maxIterations = 10;
   int maxActiveSetIterations = 20;
 };

@@ -82,6 +82,10 @@ class SecondOrderOperator {
   virtual double elasticTermsNorm(const Vector& /*u*/) const { return 0.0; }
   // A step was accepted at u (before saveState): state that accumulates over accepted steps.
   virtual void acceptStep(const Vector& /*u*/) {}
+  // Is R(u) affine in u while the constraint status is frozen (linear elasticity, contact
+  // without friction, no shock links)? Then one exact correction solves an active-set pass.
+  // false (the default) is always safe.
+  virtual bool linearWithinPass() const { return false; }
   // Re-evaluates the constraint status at u (after a converged Newton solve).
   virtual ConstraintUpdate updateConstraints(const Vector& u) = 0;
   // Initial status from u (before the first step).

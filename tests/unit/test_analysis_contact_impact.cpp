@@ -320,12 +320,15 @@ namespace {
 // one exact (direct) correction solves it: the histories must agree with the default's to the
 // Newton residual tolerance (1e-8 of the force terms, here 1e-6 of each peak with room for
 // the amplification over 2.5 transits), with about one correction per pass instead of two.
+// The default, 'auto', is 'residual' here (no friction, no links: every pass is linear).
 TEST(ContactImpact, ResidualConvergenceSavesTheConfirmingSolveAtTheSameAnswer) {
   const double L = 0.1, dt = 2e-7, T = 2 * L / kCp;
   std::map<std::string, RunResult> runs;
-  for (const char* convergence : {"residual and increment", "residual"}) {
-    const bool residualOnly = std::string(convergence) == "residual";
-    const std::string dir = scratchDir(residualOnly ? "convergence_residual" : "convergence_both");
+  for (const char* convergence : {"residual and increment", "residual", "auto"}) {
+    std::string tag = convergence;
+    for (char& ch : tag)
+      if (ch == ' ') ch = '_';
+    const std::string dir = scratchDir("convergence_" + tag);
     const std::string mesh = writeScene(dir, L, 20, 1, L, 20, 1, 1e-5, Tpetra::getDefaultComm());
     const std::string newton = std::string("<ParameterList name=\"Newton\"><Parameter name=\"Convergence\" "
                                            "type=\"string\" value=\"") + convergence + "\"/></ParameterList>";
@@ -343,6 +346,10 @@ TEST(ContactImpact, ResidualConvergenceSavesTheConfirmingSolveAtTheSameAnswer) {
   // exactly zero (free flight, where the predictor is exact): well over 1.5 per pass.
   EXPECT_GE(2 * both.figures.newtonIterations, 3 * residual.figures.newtonIterations);
   EXPECT_EQ(residual.figures.newtonIterations, residual.figures.activeSetIterations);
+  const RunResult& automatic = runs["auto"];
+  EXPECT_EQ(automatic.figures.newtonIterations, residual.figures.newtonIterations);
+  for (const std::string column : {"N1:DZ", "N1:VZ", "ifc:force"})
+    EXPECT_EQ(automatic.h.column(column), residual.h.column(column)) << column;
   for (const std::string column : {"N1:DZ", "N1:VZ", "ifc:force"}) {
     const auto a = both.h.column(column), b = residual.h.column(column);
     ASSERT_EQ(a.size(), b.size());
