@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-inputs bench-mesh bench-modal bench-explicit study-modal study-bar study-modal-direct study-friction clean
+.PHONY: all deps configure build run test study bench bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction clean
 
 all: build
 
@@ -47,6 +47,13 @@ study-modal-direct: build
 # Explicit central differences on the scale scene (issue 17), np = 1 and 2.
 bench-explicit: build
 	$(PYTHON) tools/bench_explicit.py --build $(BUILD)
+
+# choc against CalculiX on the same deck (issue 17): installs calculix-ccx, then runs both on
+# SDNL111's bars in 3D at growing sizes (tools/peer_calculix.py; PEER_ARGS, e.g. --sizes 3x100).
+PEER_ARGS ?=
+bench-peer: build
+	@tools/install-deps.sh --with-viz --with-peer
+	$(PYTHON) tools/peer_calculix.py --build $(BUILD) $(PEER_ARGS)
 
 # The same 3D scene direct and reduced to 40 modes with shock links (README "Impact statistics").
 bench-modal: build

@@ -64,11 +64,18 @@ def oedometric_speed():
     return math.sqrt(E * (1 - NU) / (RHO * (1 + NU) * (1 - 2 * NU)))
 
 
-def deck(title, mesh, kinematics, dt, contact_mass, scheme, alpha):
+LAGRANGE = '<Parameter name="Method" type="string" value="Lagrange"/>'
+
+
+def deck(title, mesh, kinematics, dt, contact_mass, scheme, alpha, end_time=END_TIME, contact=LAGRANGE):
+    """The bar-impact input (lateral motion blocked); contact: the Contact sublist's parameters
+    before its pairs; contact_mass None leaves the default."""
     axis = "DZ" if kinematics == "3D" else "DY"
     kin = "" if kinematics == "3D" else \
         f'<Parameter name="Kinematics" type="string" value="{kinematics}"/>'
-    steps = math.ceil(END_TIME / dt - 1e-9)
+    mass = "" if contact_mass is None else \
+        f'<Parameter name="Contact Mass" type="string" value="{contact_mass}"/>'
+    steps = math.ceil(end_time / dt - 1e-9)
     return f"""<ParameterList name="bar_convergence">
   <Parameter name="Title" type="string" value="{title}"/>
   <ParameterList name="Mesh"><Parameter name="File" type="string" value="{mesh}"/></ParameterList>
@@ -93,11 +100,11 @@ def deck(title, mesh, kinematics, dt, contact_mass, scheme, alpha):
     <Parameter name="Type" type="string" value="Transient"/>
     <Parameter name="Scheme" type="string" value="{scheme}"/>
     <Parameter name="Alpha" type="double" value="{alpha!r}"/>
-    <Parameter name="Contact Mass" type="string" value="{contact_mass}"/>
+    {mass}
     <Parameter name="Time Step" type="double" value="{dt!r}"/>
     <Parameter name="End Time" type="double" value="{steps * dt!r}"/>
     <ParameterList name="Contact">
-      <Parameter name="Method" type="string" value="Lagrange"/>
+      {contact}
       <ParameterList name="Pairs"><ParameterList name="interface">
         <Parameter name="Master Side Set" type="string" value="CNT_POU1"/>
         <Parameter name="Slave Side Set" type="string" value="CNT_POU2"/>
