@@ -36,11 +36,10 @@ import time
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bar_convergence import deck as bar_deck  # noqa: E402
+from bar_convergence import E, NU, RHO, LENGTH, GAP, V0, deck as bar_deck  # noqa: E402  the same scene
 from bar_exact import BarImpactExact, history_error  # noqa: E402
 
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-from bar_convergence import E, NU, RHO, LENGTH, GAP, V0  # noqa: E402  the same scene
 SIDE = 0.02
 DT, ALPHA, PENALTY = 1e-6, -0.1, 1e10
 # Exodus HEX8 side -> CalculiX C3D8 face (both number the nodes alike).
