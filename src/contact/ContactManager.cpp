@@ -70,6 +70,7 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
     try {
       res = pairs_[p].hasObstacle ? pairNodeToObstacle(mesh, pairs_[p], static_cast<int>(p))
             : !pairs_[p].masterNodeSet.empty() ? pairNodeToNode(mesh, pairs_[p], static_cast<int>(p))
+            : pairs_[p].mortar                 ? pairMortar(mesh, pairs_[p], static_cast<int>(p))
                                                : pairNodeToFace(mesh, pairs_[p], static_cast<int>(p));
     } catch (const std::exception& e) {
       throw PairingError(int(p), "contact pair '" + pairs_[p].name + "': " + e.what());

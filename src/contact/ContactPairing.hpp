@@ -27,6 +27,7 @@ struct PairDefinition {
   std::string slaveSideSet;   // e.g. CNT_POU2
   double searchDistance = 0;  // largest |g0| accepted [m]
   bool followMotion = false;  // 'Search' = current: paired again before every step
+  bool mortar = false;        // 'Discretization' = mortar (pairMortar)
   double friction = 0;        // Coulomb coefficient mu of the pair (0: frictionless)
   bool hasObstacle = false;   // the master is a rigid obstacle (masterSideSet empty)
   bool axisymmetric = false;  // slave areas of the whole ring: edge length weighted by 2 pi r
@@ -63,6 +64,17 @@ PairingResult pairNodeToFace(const Mesh& mesh, const PairDefinition& def, int pa
 // nodes; normal and gap from the obstacle's geometry). Throws std::invalid_argument as above,
 // or when a node lies where the obstacle's normal is undefined.
 PairingResult pairNodeToObstacle(const Mesh& mesh, const PairDefinition& def, int pairIndex);
+// Mortar with dual multipliers (contact/MortarSegments.hpp): for each slave node j, over the
+// overlaps of its slave faces with the master faces, D_j = int Phi_j, M_jm = int Phi_j N_m and
+// G_j = int Phi_j nu_j . (x_s - x_m), nu_j the opposite of the slave surface's averaged normal
+// at j. The projection's weights are M_jm / D_j (summing to 1, over every master node the
+// dual function reaches), its normal nu_j, its gap G_j / D_j and its area D_j: the constraint
+// g_j(u) = G_j / D_j + nu_j . (u_j - sum_m M_jm / D_j u_m), whose multiplier is the node's force
+// D_j times the dual pressure. Exact (biorthogonal) where the master covers the node's slave
+// faces; a node whose covered D_j is below a quarter of int N_j (a slave surface overhanging
+// the master) is left unpaired. Throws std::invalid_argument for quadratic slave faces, or when
+// no slave face overlaps a master face within the search distance.
+PairingResult pairMortar(const Mesh& mesh, const PairDefinition& def, int pairIndex);
 // Each slave node with the nearest master node (one to one; std::invalid_argument otherwise).
 PairingResult pairNodeToNode(const Mesh& mesh, const PairDefinition& def, int pairIndex);
 

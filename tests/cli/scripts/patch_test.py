@@ -6,11 +6,14 @@ uniform stress, a contact pressure p at every point of the interface.
 - Matching faces (meshes/patch_test.geo with tet = 0: HEX8 3 x 3 on HEX8 3 x 3): node-to-face
   contact passes the patch test: every slave node's pressure is p to 1e-8 (round-off; this
   also checks the harness: load, supports, settling, pressure output).
-- Non-matching faces (the committed mesh: HEX8 3 x 3 on TET4 4 x 4 triangles), either face as
-  the slave: node to face does not pass it; its error, the spread (max - min) / p of the slave
-  nodes' pressures, is reported (not checked: mortar contact, not implemented yet, is the
-  method that passes it). Both runs must still be static at the end (|VZ| < 1e-6 m/s) and carry
-  the load through the contact (the input's check, 1e-6).
+- Non-matching faces (the committed mesh: HEX8 3 x 3 on TET4 4 x 4 triangles; and a generated
+  one, HEX8 3 x 3 on 7 x 7), either face as the slave:
+  - mortar ('Discretization' = mortar, dual multipliers) passes it: every slave node's dual
+    pressure is p to 1e-8;
+  - node to face does not pass it in general; its error, the spread (max - min) / p of the
+    slave nodes' pressures, is reported, not checked.
+  Every run must be static at the end (|VZ| < 1e-6 m/s) and carry the load through the contact
+  (the input's check, 1e-6).
 usage: patch_test.py CHOC SOURCE_DIR WORK_DIR"""
 import os
 import subprocess
@@ -25,9 +28,14 @@ P = 1e7
 failures = []
 
 
-def run(name, mesh, swap=False):
+def run(name, mesh, swap=False, mortar=False):
     s = open(os.path.join(src, "input", "patch_test.xml")).read()
     s = s.replace('value="../meshes/patch_test.msh"', f'value="{mesh}"')
+    if mortar:
+        s = s.replace('<Parameter name="Slave Side Set" type="string" value="LOWER_TOP"/>',
+                      '<Parameter name="Slave Side Set" type="string" value="LOWER_TOP"/>\n'
+                      '<Parameter name="Discretization" type="string" value="mortar"/>')
+        assert "mortar" in s
     if swap:
         s = s.replace('value="UPPER_BOTTOM"/>', 'value="@"/>').replace('value="LOWER_TOP"/>',
                                                                       'value="UPPER_BOTTOM"/>')
@@ -60,7 +68,16 @@ spread = run("matching", matching)
 if spread is not None and not spread <= 1e-8:
     failures.append(f"matching faces: pressure spread {spread:.3e} of p (1e-8 asked)")
 committed = os.path.join(src, "meshes", "patch_test.msh")
-run("nonmatching_triangles_slave", committed)
-run("nonmatching_quadrilaterals_slave", committed, swap=True)
+fine = os.path.join(work, "fine.msh")
+subprocess.run(["gmsh", "-3", "-format", "msh41", "-setnumber", "k", "7",
+                os.path.join(src, "meshes", "patch_test.geo"), "-o", fine],
+               check=True, stdout=subprocess.DEVNULL)
+for label, mesh in (("", committed), ("7x7_", fine)):
+    run(f"nonmatching_{label}triangles_slave", mesh)
+    run(f"nonmatching_{label}quadrilaterals_slave", mesh, swap=True)
+    for swap, slave in ((False, "triangles"), (True, "quadrilaterals")):
+        spread = run(f"mortar_{label}{slave}_slave", mesh, swap=swap, mortar=True)
+        if spread is not None and not spread <= 1e-8:
+            failures.append(f"mortar, {label}{slave} slave: pressure spread {spread:.3e} of p (1e-8 asked)")
 if failures:
     sys.exit("patch_test: " + "; ".join(failures))

@@ -1,0 +1,123 @@
+// Mortar pairing with dual Lagrange multipliers (ContactPairing.hpp, pairMortar).
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "contact/ContactPairing.hpp"
+#include "contact/MortarSegments.hpp"
+#include "fem/Quadrature.hpp"
+
+namespace choc {
+
+namespace {
+
+struct Box {
+  Point3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+};
+
+Box boxOf(const Face& f, double widen) {
+  Box b;
+  for (const Point3& x : f.x)
+    for (int d = 0; d < 3; ++d) {
+      b.lo[d] = std::min(b.lo[d], x[d] - widen);
+      b.hi[d] = std::max(b.hi[d], x[d] + widen);
+    }
+  return b;
+}
+
+bool overlap(const Box& a, const Box& b) {
+  for (int d = 0; d < 3; ++d)
+    if (a.hi[d] < b.lo[d] || b.hi[d] < a.lo[d]) return false;
+  return true;
+}
+
+// int N_a over the face (rings: 2 pi r).
+std::vector<double> shapeIntegrals(const Face& f, bool axisymmetric) {
+  const QuadratureRule& rule = f.edgeNodes ? gaussBoxRule(1, 3) : massRule(f.shape);
+  std::vector<double> I(f.nodes.size(), 0.0);
+  for (int k = 0; k < rule.size(); ++k) {
+    const FacePoint q = evaluateFace(f, rule.points[k][0], rule.points[k][1]);
+    const double J = norm(cross(q.dxi, q.deta)) * rule.weights[k] * (axisymmetric ? 2.0 * M_PI * q.x[0] : 1.0);
+    for (size_t a = 0; a < I.size(); ++a) I[a] += q.N[a] * J;
+  }
+  return I;
+}
+
+// What one slave node gathers over the segments its dual function covers.
+struct NodeSums {
+  double D = 0, G = 0, full = 0;  // int Phi_j, int Phi_j gap, int N_j over its faces
+  std::map<int, double> M;         // master node -> int Phi_j N_m
+  int firstFace = -1;
+  Point3 normal{0, 0, 0};          // sum of its faces' outward normals there
+};
+
+}  // namespace
+
+PairingResult pairMortar(const Mesh& mesh, const PairDefinition& def, int pairIndex) {
+  const std::vector<Face> slave = facesOf(mesh, def.slaveSideSet), master = facesOf(mesh, def.masterSideSet);
+  for (const Face& f : slave)
+    if (!mortarSlaveFace(f))
+      throw std::invalid_argument("slave side set '" + def.slaveSideSet +
+                                  "' has quadratic faces: mortar takes TRI3, QUAD4 and LINE2 slave faces");
+  std::map<int, NodeSums> sums;
+  for (const Face& f : slave) {
+    const std::vector<double> I = shapeIntegrals(f, def.axisymmetric);
+    for (size_t a = 0; a < f.nodes.size(); ++a) {
+      NodeSums& s = sums[f.nodes[a]];
+      s.full += I[a];
+      const Point3 n = nodeNormal(f, int(a));
+      for (int d = 0; d < 3; ++d) s.normal[d] += n[d];
+    }
+  }
+  std::vector<Box> masterBoxes;
+  for (const Face& m : master) masterBoxes.push_back(boxOf(m, 0.0));
+  for (const Face& f : slave) {
+    const DenseMatrix A = dualBasis(f, def.axisymmetric);
+    const Box box = boxOf(f, def.searchDistance);
+    for (size_t mf = 0; mf < master.size(); ++mf) {
+      if (!overlap(box, masterBoxes[mf])) continue;
+      const std::vector<MortarPoint> pts = mortarPoints(f, master[mf], def.axisymmetric);
+      if (pts.empty()) continue;
+      const Point3 n = sums[f.nodes[0]].normal;
+      if (!(std::abs(dot(pts[0].xs - pts[0].xm, n)) <= def.searchDistance * norm(n))) continue;
+      for (const MortarPoint& p : pts) {
+        const std::vector<double> phi = dualShapes(A, p.Ns);
+        for (size_t a = 0; a < f.nodes.size(); ++a) {
+          NodeSums& s = sums[f.nodes[a]];
+          const double nl = norm(s.normal);
+          const Point3 nu{-s.normal[0] / nl, -s.normal[1] / nl, -s.normal[2] / nl};
+          const double w = phi[a] * p.weight;
+          s.D += w;
+          s.G += w * dot(nu, p.xs - p.xm);
+          for (size_t b = 0; b < p.Nm.size(); ++b) s.M[master[mf].nodes[b]] += w * p.Nm[b];
+          if (s.firstFace < 0) s.firstFace = int(mf);
+        }
+      }
+    }
+  }
+  PairingResult res;
+  for (const auto& [node, s] : sums) {  // ascending node number
+    if (!(s.D >= 0.25 * s.full)) {  // overhanging the master: no constraint
+      res.unpaired.push_back(node);
+      continue;
+    }
+    SlaveProjection sp;
+    sp.pair = pairIndex;
+    sp.slaveNode = node;
+    sp.masterFace = s.firstFace;
+    const double nl = norm(s.normal);
+    sp.normal = {-s.normal[0] / nl, -s.normal[1] / nl, -s.normal[2] / nl};
+    sp.gap0 = s.G / s.D;
+    sp.area = s.D;
+    for (const auto& [m, v] : s.M)
+      if (std::abs(v) > 1e-14 * s.D) sp.masterNodes.push_back(m), sp.weights.push_back(v / s.D);
+    res.projections.push_back(sp);
+  }
+  if (res.projections.empty())
+    throw std::invalid_argument("no face of slave side set '" + def.slaveSideSet + "' overlaps a face of master side set '" +
+                                def.masterSideSet + "' within the search distance " +
+                                std::to_string(def.searchDistance) + " m");
+  return res;
+}
+
+}  // namespace choc

@@ -1,0 +1,159 @@
+// Mortar contact with dual multipliers (issue 14): the dual basis is biorthogonal and a
+// partition of unity, the overlaps' integration points measure the overlap's area, and the
+// pairing's weights reproduce linear fields (which is what passes the patch test).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "contact/ContactPairing.hpp"
+#include "contact/MortarSegments.hpp"
+#include "fem/Quadrature.hpp"
+#include "mesh/BarImpactMesh.hpp"
+
+namespace choc {
+namespace {
+
+Face quad(std::vector<Point3> x) {
+  Face f;
+  f.nodes = {0, 1, 2, 3};
+  f.x = std::move(x);
+  f.shape = SolidShape::Quad4;
+  return f;
+}
+
+Face tri(std::vector<Point3> x) {
+  Face f;
+  f.nodes = {0, 1, 2};
+  f.x = std::move(x);
+  f.shape = SolidShape::Tri3;
+  return f;
+}
+
+Face edge(Point3 a, Point3 b) {
+  Face f;
+  f.nodes = {0, 1};
+  f.x = {a, b};
+  f.edgeNodes = 2;
+  return f;
+}
+
+// int Phi_a N_b over the face, by a rule exact for the integrands (A constant, N_a N_b J).
+void expectBiorthogonal(const Face& f, bool axi) {
+  const DenseMatrix A = dualBasis(f, axi);
+  const int n = static_cast<int>(f.nodes.size());
+  const QuadratureRule& r = f.edgeNodes ? gaussBoxRule(1, 3) : isTriangle(f) ? triangleRule(7) : gaussBoxRule(2, 3);
+  std::vector<double> PN(n * n, 0.0), I(n, 0.0);
+  double scale = 0;
+  for (int k = 0; k < r.size(); ++k) {
+    const FacePoint q = evaluateFace(f, r.points[k][0], r.points[k][1]);
+    const double J = norm(cross(q.dxi, q.deta)) * r.weights[k] * (axi ? 2 * M_PI * q.x[0] : 1.0);
+    const std::vector<double> phi = dualShapes(A, q.N);
+    double sum = 0;
+    for (int a = 0; a < n; ++a) {
+      sum += phi[a];
+      I[a] += q.N[a] * J;
+      for (int b = 0; b < n; ++b) PN[a * n + b] += phi[a] * q.N[b] * J;
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-13);  // partition of unity
+    scale += J;
+  }
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) EXPECT_NEAR(PN[a * n + b], a == b ? I[a] : 0.0, 1e-13 * scale) << a << b;
+}
+
+TEST(ContactMortar, DualBasisIsBiorthogonal) {
+  // A planar trapezoid (not a parallelogram), a triangle, a LINE2 edge plain and as a ring.
+  expectBiorthogonal(quad({{0, 0, 0}, {2, 0, 0}, {1.5, 1, 0}, {0.2, 1.3, 0}}), false);
+  expectBiorthogonal(tri({{0, 0, 1}, {1, 0.2, 1}, {0.3, 0.9, 1.1}}), false);
+  expectBiorthogonal(edge({0.5, 0, 0}, {1.5, 0.3, 0}), false);
+  expectBiorthogonal(edge({0.5, 0, 0}, {1.5, 0.3, 0}), true);
+  Face q8 = quad({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+  q8.shape = SolidShape::Quad8;
+  EXPECT_FALSE(mortarSlaveFace(q8));
+  EXPECT_THROW(dualBasis(q8, false), std::invalid_argument);
+}
+
+double totalWeight(const std::vector<MortarPoint>& pts) {
+  double w = 0;
+  for (const auto& p : pts) w += p.weight;
+  return w;
+}
+
+TEST(ContactMortar, OverlapPointsMeasureTheOverlap) {
+  // Slave: the unit square at z = 0, outward +z (counter-clockwise seen from +z).
+  const Face s = quad({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+  // Master: a square shifted by (0.5, 0.25), 1e-3 above, outward -z (clockwise from +z).
+  const Face m = quad({{0.5, 0.25, 1e-3}, {0.5, 1.25, 1e-3}, {1.5, 1.25, 1e-3}, {1.5, 0.25, 1e-3}});
+  const std::vector<MortarPoint> pts = mortarPoints(s, m, false);
+  EXPECT_NEAR(totalWeight(pts), 0.5 * 0.75, 1e-14);
+  for (const auto& p : pts) {
+    EXPECT_NEAR(p.xm[0] - p.xs[0], 0.0, 1e-14);  // projected along the normal
+    EXPECT_NEAR(p.xm[1] - p.xs[1], 0.0, 1e-14);
+    EXPECT_NEAR(p.xm[2] - p.xs[2], 1e-3, 1e-14);
+    EXPECT_TRUE(p.xs[0] >= 0.5 - 1e-14 && p.xs[1] >= 0.25 - 1e-14);  // inside the overlap
+  }
+  // A triangle master (outward -z) cutting the square's corner: the overlap is the triangle
+  // (0.5, 0)-(1, 0)-(1, 0.5) of area 1/8.
+  const Face t = tri({{0.5, 0, -1e-3}, {1, 0.5, -1e-3}, {1.5, 0, -1e-3}});
+  EXPECT_NEAR(totalWeight(mortarPoints(s, t, false)), 0.125, 1e-14);
+  // A master facing the same way, or beside the slave, gives nothing.
+  const Face same = quad({{0.5, 0.25, 1e-3}, {1.5, 0.25, 1e-3}, {1.5, 1.25, 1e-3}, {0.5, 1.25, 1e-3}});
+  EXPECT_TRUE(mortarPoints(s, same, false).empty());
+  const Face beside = quad({{1.5, 0, 0}, {1.5, 1, 0}, {2.5, 1, 0}, {2.5, 0, 0}});
+  EXPECT_TRUE(mortarPoints(s, beside, false).empty());
+  // Edges: the slave from r = 1 to 0 on the x axis (outward +y), the master from
+  // r = 0.4 to 2 above it (outward -y): overlap of length 0.6, as a ring pi (1 - 0.16).
+  const Face se = edge({1, 0, 0}, {0, 0, 0}), me = edge({0.4, 1e-3, 0}, {2, 1e-3, 0});
+  EXPECT_NEAR(totalWeight(mortarPoints(se, me, false)), 0.6, 1e-14);
+  EXPECT_NEAR(totalWeight(mortarPoints(se, me, true)), M_PI * (1 - 0.16), 1e-13);
+}
+
+Mesh scene(int across1, int across2, double gap) {
+  BarImpactOptions o;
+  o.dimension = 3;
+  o.axis = 'z';
+  o.along1 = o.along2 = 2;
+  o.across1 = across1;
+  o.across2 = across2;
+  o.gap = gap;
+  return generateBarImpactMesh(o);
+}
+
+// Every slave node: weights summing to 1, the gap, and sum_m w_m x_m = x_j laterally (the
+// weights reproduce linear fields: the patch test's uniform strain passes exactly).
+void expectLinearReproduction(const Mesh& m, const PairDefinition& def, size_t slaves) {
+  const PairingResult r = pairMortar(m, def, 0);
+  ASSERT_EQ(r.projections.size(), slaves);
+  EXPECT_TRUE(r.unpaired.empty());
+  double area = 0;
+  for (const auto& p : r.projections) {
+    double sum = 0;
+    Point3 x{};
+    for (size_t i = 0; i < p.weights.size(); ++i) {
+      sum += p.weights[i];
+      for (int d = 0; d < 3; ++d) x[d] += p.weights[i] * m.coords[p.masterNodes[i]][d];
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-13);
+    EXPECT_NEAR(x[0], m.coords[p.slaveNode][0], 1e-14);
+    EXPECT_NEAR(x[1], m.coords[p.slaveNode][1], 1e-14);
+    EXPECT_NEAR(std::abs(p.normal[2]), 1.0, 1e-14);
+    EXPECT_NEAR(p.gap0, 2e-5, 1e-16);
+    area += p.area;
+  }
+  EXPECT_NEAR(area, 4e-4, 1e-17);
+}
+
+TEST(ContactMortar, WeightsReproduceLinearFields) {
+  // Fine slave (3 x 3) on one master face, and a coarse slave (2 x 2) on a 3 x 3 master, whose
+  // dual functions reach master nodes of several faces.
+  const Mesh a = scene(1, 3, 2e-5);
+  expectLinearReproduction(a, {"ifc", "CNT_POU1", "CNT_POU2", 1e-3}, 16);
+  const Mesh b = scene(3, 2, 2e-5);
+  expectLinearReproduction(b, {"ifc", "CNT_POU2", "CNT_POU1", 1e-3}, 16);
+  expectLinearReproduction(b, {"ifc", "CNT_POU1", "CNT_POU2", 1e-3}, 9);
+  // Beyond the search distance nothing overlaps.
+  EXPECT_THROW(pairMortar(a, {"ifc", "CNT_POU1", "CNT_POU2", 1e-6}, 0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace choc
