@@ -1,6 +1,7 @@
 // ContactManager: the pairs whose search follows the motion ('Search' = current).
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "contact/ContactManager.hpp"
@@ -45,8 +46,22 @@ Vec3 ContactManager::tangentialOffset(const ContactConstraint& c) const {
   return d;
 }
 
+// The mortar pairs' projections on the current configuration, by pair and slave node.
+std::map<int, std::map<int, SlaveProjection>> ContactManager::followMortar() const {
+  std::map<int, std::map<int, SlaveProjection>> out;
+  for (size_t p = 0; p < pairs_.size(); ++p) {
+    if (!followed_->follows(int(p)) || !followed_->mortar(int(p))) continue;
+    const PairingResult r =
+        mortarPairing(followed_->slaveFaces(int(p)), followed_->masterFaces(int(p)), pairs_[p], int(p));
+    for (const SlaveProjection& sp : r.projections)
+      if (!sp.masterNodes.empty()) out[int(p)][sp.slaveNode] = sp;
+  }
+  return out;
+}
+
 void ContactManager::followSurfaces(const Vector& u) {
   followed_->place(gather(followed_->dofs(), u), true);
+  const auto mortar = followMortar();
   bool topology = false, turned = false;
   for (size_t s = 0; s < constraints_.size(); ++s) {
     ContactConstraint& c = constraints_[s];
@@ -55,7 +70,14 @@ void ContactManager::followSurfaces(const Vector& u) {
     SlaveProjection sp = c.geometry;
     SurfaceHit hit;
     double gap = pairs_[p].searchDistance;
-    if (followed_->find(p, followed_->position(sp.slaveNode), hit)) {
+    const bool isMortar = followed_->mortar(p);
+    const SlaveProjection* overlap = nullptr;
+    if (const auto it = mortar.find(p); it != mortar.end())
+      if (const auto jt = it->second.find(sp.slaveNode); jt != it->second.end()) overlap = &jt->second;
+    if (overlap) {
+      sp = *overlap;
+      gap = sp.gap0;
+    } else if (!isMortar && followed_->find(p, followed_->position(sp.slaveNode), hit)) {
       sp.masterFace = hit.face;
       sp.masterNodes = followed_->face(p, hit.face).nodes;
       sp.weights = hit.N;
@@ -117,7 +139,8 @@ namespace choc {
 // The pairing of the followed constraints in a checkpoint: a constraint keeps its coefficients
 // while they move by less than kCoefficientTolerance, so the pairing in use depends on the
 // steps before; a restarted run takes it from the checkpoint, not from a fresh search.
-// Per constraint: master face (-1: none), xi, eta, the normal, the number of weights and them.
+// Per constraint: master face (-1: none), xi, eta, the normal, the number of weights and them;
+// for a mortar pair then its master nodes and its area.
 void ContactManager::archivePairing(StateArchive& a) const {
   std::vector<double> g;
   for (const ContactConstraint& c : constraints_) {
@@ -126,6 +149,10 @@ void ContactManager::archivePairing(StateArchive& a) const {
     g.insert(g.end(), {double(sp.masterFace), sp.xi, sp.eta, sp.normal[0], sp.normal[1], sp.normal[2],
                        double(sp.weights.size())});
     g.insert(g.end(), sp.weights.begin(), sp.weights.end());
+    if (followed_->mortar(sp.pair)) {  // the master nodes span several faces; the area moves
+      for (int n : sp.masterNodes) g.push_back(double(n));
+      g.push_back(sp.area);
+    }
   }
   a.putVector("contact/pairing", g);
 }
@@ -147,6 +174,13 @@ void ContactManager::unarchivePairing(const StateArchive& a) {
     sp.weights.assign(g.begin() + long(k), g.begin() + long(k + nw));
     k += nw;
     sp.masterNodes = sp.masterFace >= 0 ? followed_->face(sp.pair, sp.masterFace).nodes : std::vector<int>();
+    if (followed_->mortar(sp.pair)) {
+      if (k + nw + 1 > g.size()) throw StateRecordError("record 'contact/pairing' is shorter than the followed constraints");
+      sp.masterNodes.assign(nw, 0);
+      for (size_t i = 0; i < nw; ++i) sp.masterNodes[i] = int(g[k + i]);
+      sp.area = g[k + nw];
+      k += nw + 1;
+    }
     const ContactConstraint next = makeContactConstraint(c.reference, *dofs_, sp, true);
     c.geometry = sp;
     c.terms = next.terms;

@@ -8,6 +8,7 @@
 // statuses and pressures whatever the number of ranks.
 #pragma once
 #include <array>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -177,6 +178,7 @@ class ContactManager {
  private:
   void indexTerms();
   void followSurfaces(const Vector& u);
+  std::map<int, std::map<int, SlaveProjection>> followMortar() const;
   void placeObstacles(const Vector& u, double t);
   Vec3 tangentialOffset(const ContactConstraint& c) const;  // at the followed positions
   std::vector<double> contactValues(const Vector& u) const;  // u at contactDofs_, replicated

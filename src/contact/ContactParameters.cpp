@@ -50,20 +50,18 @@ void declareContactParameters(Teuchos::ParameterList& p) {
   declareDouble(pr, "Search Distance", 1e-3,
                 "largest |gap| of a pairing with a master side set [m]; also the reach of the "
                 "search in the current configuration", Range::positive());
-  declareChoice(pr, "Search", "auto", {"auto", "current", "reference"},
+  declareChoice(pr, "Search", "current", {"current", "reference"},
                 "with a master side set: current: every slave node is paired again before each "
                 "step with the closest point of the master surface in the current configuration "
-                "(curved surfaces, non-matching meshes, large sliding); reference: paired once at "
-                "t = 0 (small sliding of aligned faces: the SDNL111 decks); auto: current for "
-                "node to face, reference for mortar (integrated once)");
+                "(mortar: the overlaps integrated again; curved surfaces, non-matching meshes, "
+                "large sliding); reference: paired once at t = 0 (small sliding of aligned "
+                "faces: the SDNL111 decks)");
   declareChoice(pr, "Discretization", "node to face", {"node to face", "mortar"},
                 "with a master side set: node to face: each slave node against the closest point "
                 "of the master surface; mortar: segment to segment with dual Lagrange "
                 "multipliers (Wohlmuth): each slave node's gap and force are its dual shape "
                 "function's averages over the master faces it overlaps, which passes the contact "
-                "patch test on non-matching meshes; linear slave faces (TRI3, QUAD4, LINE2), "
-                "integrated once on the reference configuration ('Search' = reference: small "
-                "sliding)");
+                "patch test on non-matching meshes; linear slave faces (TRI3, QUAD4, LINE2)");
   ParameterList& ob = declareSublist(pr, "Obstacle",
                                      "a rigid obstacle given by its geometry, in place of a master "
                                      "side set (every slave node is paired with it)");
@@ -154,12 +152,8 @@ PairDefinition readPair(const ParameterList& pl, const std::string& name, const 
     throwInput(file, path + "/Master Side Set", d.masterSideSet,
                "master and slave are the same surface", "pair two different side sets");
   if (d.hasObstacle) d.obstacle = readObstacle(ob, file, path + "/Obstacle");
-  const std::string search = pl.get<std::string>("Search");
   d.mortar = !d.hasObstacle && pl.get<std::string>("Discretization") == "mortar";
-  if (d.mortar && search == "current")
-    throwInput(file, path + "/Search", search, "mortar pairs are integrated once, on the reference configuration",
-               "set 'Search' = reference (or auto), or 'Discretization' = node to face");
-  d.followMotion = !d.hasObstacle && !d.mortar && search != "reference";
+  d.followMotion = !d.hasObstacle && pl.get<std::string>("Search") == "current";
   return d;
 }
 
@@ -224,7 +218,7 @@ void requireMortarFaces(const Mesh& mesh, const std::string& slave, const std::s
       throwInput(file, parameter, "mortar",
                  "slave side set '" + slave + "' has " + (f.edgeNodes ? std::string("LINE3") : topologyName(f.shape)) +
                      " faces: mortar takes TRI3, QUAD4 and LINE2 slave faces",
-                 "make the linear surface the slave, or use 'node to face'");
+                 "make a surface of linear faces the slave, or use 'node to face'");
 }
 
 }  // namespace

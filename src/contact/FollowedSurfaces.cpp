@@ -14,6 +14,7 @@ FollowedSurfaces::FollowedSurfaces(const Mesh& mesh, const DofMap& dofs,
       for (const Face& f : facesOf(mesh, set))
         for (int n : f.nodes) reference_[n] = mesh.coords[n];
     searches_[int(p)] = std::make_unique<SurfaceSearch>(std::move(master), d.searchDistance);
+    if (d.mortar) slaveFaces_[int(p)] = facesOf(mesh, d.slaveSideSet);
   }
   for (const auto& [n, x] : reference_) {
     std::array<long long, 3>& nd = nodeDofs_[n];
@@ -44,6 +45,13 @@ void FollowedSurfaces::place(const std::vector<double>& values, bool search) {
   values_ = values;
   if (!search) return;
   for (auto& [p, search] : searches_) search->moveTo([this](int n) { return position(n); });
+}
+
+std::vector<Face> FollowedSurfaces::slaveFaces(int pair) const {
+  std::vector<Face> faces = slaveFaces_.at(pair);
+  for (Face& f : faces)
+    for (size_t a = 0; a < f.nodes.size(); ++a) f.x[a] = position(f.nodes[a]);
+  return faces;
 }
 
 bool FollowedSurfaces::find(int pair, const Point3& x, SurfaceHit& hit) const {

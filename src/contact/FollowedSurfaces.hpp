@@ -5,6 +5,7 @@
 // position onto its pair's master surface: the closest face containing the projection, or,
 // when the projection falls in no face (a node over the kink between two faces of a convex
 // surface), the nearest face whose domain widened by 0.05 in its parameters contains it.
+// A mortar pair is integrated again on the current faces (slaveFaces, masterFaces).
 #pragma once
 #include <map>
 #include <memory>
@@ -29,11 +30,17 @@ class FollowedSurfaces {
   Point3 position(int node) const;          // current (after place), else reference
   double displacement(GO dof) const;        // of the last place()
   bool find(int pair, const Point3& x, SurfaceHit& hit) const;
+  // Mortar pairs: their slave faces at the current positions, and their master faces (moved
+  // by the last place with a search).
+  bool mortar(int pair) const { return slaveFaces_.count(pair) > 0; }
+  std::vector<Face> slaveFaces(int pair) const;
+  const std::vector<Face>& masterFaces(int pair) const { return searches_.at(pair)->faces(); }
   const Face& face(int pair, int f) const { return searches_.at(pair)->faces()[f]; }
   long long projections() const;
 
  private:
   std::map<int, std::unique_ptr<SurfaceSearch>> searches_;  // by pair index
+  std::map<int, std::vector<Face>> slaveFaces_;              // mortar pairs: reference slave faces
   std::map<int, Point3> reference_;                         // node -> reference position
   std::map<int, std::array<long long, 3>> nodeDofs_;        // node -> DOF per component (-1)
   std::vector<GO> dofs_;

@@ -54,11 +54,21 @@ struct NodeSums {
 }  // namespace
 
 PairingResult pairMortar(const Mesh& mesh, const PairDefinition& def, int pairIndex) {
-  const std::vector<Face> slave = facesOf(mesh, def.slaveSideSet), master = facesOf(mesh, def.masterSideSet);
+  const std::vector<Face> slave = facesOf(mesh, def.slaveSideSet);
   for (const Face& f : slave)
     if (!mortarSlaveFace(f))
       throw std::invalid_argument("slave side set '" + def.slaveSideSet +
                                   "' has quadratic faces: mortar takes TRI3, QUAD4 and LINE2 slave faces");
+  PairingResult res = mortarPairing(slave, facesOf(mesh, def.masterSideSet), def, pairIndex);
+  if (res.projections.size() == (def.followMotion ? res.unpaired.size() : 0))
+    throw std::invalid_argument("no face of slave side set '" + def.slaveSideSet + "' overlaps a face of master side set '" +
+                                def.masterSideSet + "' within the search distance " +
+                                std::to_string(def.searchDistance) + " m");
+  return res;
+}
+
+PairingResult mortarPairing(const std::vector<Face>& slave, const std::vector<Face>& master,
+                            const PairDefinition& def, int pairIndex) {
   std::map<int, NodeSums> sums;
   for (const Face& f : slave) {
     const std::vector<double> I = shapeIntegrals(f, def.axisymmetric);
@@ -97,13 +107,19 @@ PairingResult pairMortar(const Mesh& mesh, const PairDefinition& def, int pairIn
   }
   PairingResult res;
   for (const auto& [node, s] : sums) {  // ascending node number
-    if (!(s.D >= 0.25 * s.full)) {  // overhanging the master: no constraint
-      res.unpaired.push_back(node);
-      continue;
-    }
     SlaveProjection sp;
     sp.pair = pairIndex;
     sp.slaveNode = node;
+    if (!(s.D >= 0.25 * s.full)) {  // overhanging the master: no constraint
+      res.unpaired.push_back(node);
+      if (def.followMotion) {  // kept, without master nodes, until an overlap covers it
+        sp.masterFace = -1;
+        sp.gap0 = def.searchDistance;
+        sp.area = s.full;
+        res.projections.push_back(sp);
+      }
+      continue;
+    }
     sp.masterFace = s.firstFace;
     const double nl = norm(s.normal);
     sp.normal = {-s.normal[0] / nl, -s.normal[1] / nl, -s.normal[2] / nl};
@@ -113,10 +129,6 @@ PairingResult pairMortar(const Mesh& mesh, const PairDefinition& def, int pairIn
       if (std::abs(v) > 1e-14 * s.D) sp.masterNodes.push_back(m), sp.weights.push_back(v / s.D);
     res.projections.push_back(sp);
   }
-  if (res.projections.empty())
-    throw std::invalid_argument("no face of slave side set '" + def.slaveSideSet + "' overlaps a face of master side set '" +
-                                def.masterSideSet + "' within the search distance " +
-                                std::to_string(def.searchDistance) + " m");
   return res;
 }
 

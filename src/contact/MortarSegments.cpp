@@ -79,7 +79,7 @@ bool projectAlong(const Face& f, const Frame& fr, const Point3& X, double& xi, d
     }
     xi += dx;
     eta += de;
-    if (std::abs(dx) + std::abs(de) < 1e-14) return true;
+    if (std::abs(dx) + std::abs(de) < 1e-12) return true;  // parametric: 1e-12 of the face
   }
   return false;
 }

@@ -151,6 +151,10 @@ TEST(ContactMortar, WeightsReproduceLinearFields) {
   const Mesh b = scene(3, 2, 2e-5);
   expectLinearReproduction(b, {"ifc", "CNT_POU2", "CNT_POU1", 1e-3}, 16);
   expectLinearReproduction(b, {"ifc", "CNT_POU1", "CNT_POU2", 1e-3}, 9);
+  // Faces whose edges coincide (2 x 2 on 4 x 4, and the reverse).
+  const Mesh c = scene(2, 4, 2e-5);
+  expectLinearReproduction(c, {"ifc", "CNT_POU1", "CNT_POU2", 1e-3}, 25);
+  expectLinearReproduction(c, {"ifc", "CNT_POU2", "CNT_POU1", 1e-3}, 9);
   // Beyond the search distance nothing overlaps.
   EXPECT_THROW(pairMortar(a, {"ifc", "CNT_POU1", "CNT_POU2", 1e-6}, 0), std::invalid_argument);
 }
