@@ -118,6 +118,11 @@ PairDefinition readPair(const ParameterList& pl, const std::string& name, const 
   d.masterNodeSet = pl.get<std::string>("Master Node Set");
   const ParameterList& ob = pl.sublist("Obstacle");
   d.hasObstacle = ob.get<std::string>("Shape") != "none";
+  d.mortar = pl.get<std::string>("Discretization") == "mortar";
+  if (d.mortar && (d.hasObstacle || d.masterSideSet.empty()))
+    throwInput(file, path + "/Discretization", "mortar",
+               "mortar pairs a slave side set with a master side set, not with an obstacle or a node set",
+               "give a 'Master Side Set', or leave 'Discretization' = node to face");
   if (!d.masterNodeSet.empty()) {  // node to node
     if (d.slaveNodeSet.empty() || !d.slaveSideSet.empty() || !d.masterSideSet.empty() || d.hasObstacle)
       throwInput(file, path + "/Master Node Set", d.masterNodeSet,
@@ -152,7 +157,6 @@ PairDefinition readPair(const ParameterList& pl, const std::string& name, const 
     throwInput(file, path + "/Master Side Set", d.masterSideSet,
                "master and slave are the same surface", "pair two different side sets");
   if (d.hasObstacle) d.obstacle = readObstacle(ob, file, path + "/Obstacle");
-  d.mortar = !d.hasObstacle && pl.get<std::string>("Discretization") == "mortar";
   d.followMotion = !d.hasObstacle && pl.get<std::string>("Search") == "current";
   return d;
 }

@@ -153,6 +153,8 @@ choc_cli_reference_error(contact_beyond_search_distance bad_contact_search_dista
   "parameter 'Analyses/impact/Contact/Pairs/interface/Search Distance' = '1e-06': contact pair 'interface': no node of slave side set 'CNT_POU2' projects onto a face of master side set 'CNT_POU1' within the search distance 0.000001 m. check the side set names, or raise 'Search Distance' above the initial gaps")
 choc_cli_reference_error(contact_mortar_quadratic_slave bad_contact_mortar_quadratic.xml
   "parameter 'Analyses/impact/Contact/Pairs/interface/Discretization' = 'mortar': slave side set 'CNT_POU2' has TRI6 faces: mortar takes TRI3, QUAD4 and LINE2 slave faces. make a surface of linear faces the slave, or use 'node to face'")
+choc_cli_input_error(contact_mortar_obstacle check bad_contact_mortar_obstacle.xml
+  "parameter 'Analyses/impact/Contact/Pairs/interface/Discretization' = 'mortar': mortar pairs a slave side set with a master side set, not with an obstacle or a node set. give a 'Master Side Set', or leave 'Discretization' = node to face")
 choc_cli_reference_error(obstacle_zero_normal bad_obstacle_zero_normal.xml
   "parameter 'Analyses/impact/Contact/Pairs/interface/Obstacle/Normal' = '0 0 0': the plane's normal is zero. give a non-zero direction 'x y z'")
 choc_cli_reference_error(obstacle_zero_radius bad_obstacle_zero_radius.xml

@@ -15,6 +15,9 @@ k = 24,000 N/m, pressed by N = 70 kN and pushed by F = 200 kN (both ramped from 
    N r(t) after 0.2 s to 0.5 % (the pad does not move vertically; its vibrations are damped).
 4. The energy balance never above +0.1 % of the largest total energy (the pad starts at rest:
    E0 = 0), with the external work of ramped pressures.
+The same checks hold for QUAD4 with mortar contact (the pad's LINE2 edges against the frame's,
+integrated again before each step as the pad slides 15 m): friction on mortar pairs acts on the
+slave node's motion relative to its dual function's average of the master nodes.
 5. Frame invariance (BENCHMARKS section 8), QUAD4: the scene turned by 0.7 rad about z (the
    mesh by gmsh, the springs' direction with it; the pressures follow the faces) gives the same
    motion, R^T u, to 1e-8 of the peak; the same normal force and friction work (mu times it)
@@ -94,8 +97,14 @@ def exact(times):
     return np.array(x)
 
 
-for element in ("quad4", "quad8"):
-    out, log = run_deck(choc, src, work, f"sdnv104_{element}.xml", element, label="sdnv104")
+MORTAR = ('<Parameter name="Slave Side Set" type="string" value="PAD_BOTTOM"/>',
+          '<Parameter name="Slave Side Set" type="string" value="PAD_BOTTOM"/>'
+          '<Parameter name="Discretization" type="string" value="mortar"/>')
+for element, deck, edit in (("quad4", "quad4", lambda d: d), ("quad8", "quad8", lambda d: d),
+                            ("quad4_mortar", "quad4", lambda d: d.replace(*MORTAR))):
+    out, log = run_deck(choc, src, work, f"sdnv104_{deck}.xml", element, edit, label="sdnv104")
+    if element.endswith("mortar"):
+        check("mortar" in open(os.path.join(work, element + ".xml")).read(), f"{element}: the pair is mortar")
     h = np.genfromtxt(os.path.join(out, "lagrange.history.csv"), delimiter=",", names=True)
     t, x, v = h["time"], h["PAD_SPRINGDX"], h["PAD_SPRINGVX"]
     ref = exact(t)

@@ -9,6 +9,7 @@ input/sliding.xml leaving at 10 m/s with mu = 0.01, pressed by 6,400 N; it stops
    has stopped (t > 16 ms).
 2. The energy: the balance never above +1e-3 of E0 (friction dissipates) and the friction work
    of the run mu N d to 0.5 % (also a regression row); Newton averages <= 2.5 iterations a step.
+   Both hold also with the foundation pair in mortar (the input's rows too).
 3. The limit mu -> 0: input/sliding.xml with mu = 1e-12 (every friction term computed, the matrix
    graph with every component) gives the frictionless motion and contact force to 1e-8 of their
    peaks; the friction's own effect, mu N t^2 / 2m = 4e-12 m, is far below that.
@@ -42,9 +43,14 @@ def history(out, analysis):
     return np.genfromtxt(os.path.join(out, f"{analysis}.history.csv"), delimiter=",", names=True)
 
 
-# 1 and 2: the friction scene, both analyses.
-out, log = run("friction", "sliding_friction.xml")
-for analysis in ("lagrange", "penalty"):
+# 1 and 2: the friction scene, both analyses; and the Lagrange analysis with a mortar pair.
+SLAVE = '<Parameter name="Slave Side Set" type="string" value="BLOCK_BOTTOM"/>'
+mortar = lambda s: s.replace(SLAVE, SLAVE + '<Parameter name="Discretization" type="string" value="mortar"/>', 1)
+for name, edit, analysis in (("friction", None, "lagrange"), ("friction", None, "penalty"),
+                             ("friction_mortar", mortar, "lagrange")):
+    if edit is not None or analysis == "lagrange":
+        out, log = run(name, "sliding_friction.xml", edit or (lambda s: s))
+    label = analysis + (" (mortar)" if edit else "")
     with netCDF4.Dataset(os.path.join(out, f"{analysis}.exo")) as d:
         names = ["".join(c.decode() for c in n if c != b"").strip() for n in d["name_nod_var"][:]]
         get = lambda f: np.asarray(d[f"vals_nod_var{names.index(f) + 1}"][:])
@@ -61,18 +67,18 @@ for analysis in ("lagrange", "penalty"):
             sliding.append(slide.sum() > 0 and stick.sum() == 0)
         if t > 0.016:
             stuck.append(stick.sum() == 28)
-    check(cone_err <= 1e-9, f"{analysis}: sliding nodes' traction = mu p to {cone_err:.1e}")
-    check(over <= 1e-9, f"{analysis}: sticking nodes' traction <= mu p (excess {over:.1e} of mu p)")
-    check(all(sliding) and sliding, f"{analysis}: every contact node slides while the block moves "
+    check(cone_err <= 1e-9, f"{label}: sliding nodes' traction = mu p to {cone_err:.1e}")
+    check(over <= 1e-9, f"{label}: sticking nodes' traction <= mu p (excess {over:.1e} of mu p)")
+    check(all(sliding) and sliding, f"{label}: every contact node slides while the block moves "
           f"({sum(sliding)} of {len(sliding)} frames)")
-    check(all(stuck) and stuck, f"{analysis}: all 28 nodes stick once it has stopped "
+    check(all(stuck) and stuck, f"{label}: all 28 nodes stick once it has stopped "
           f"({sum(stuck)} of {len(stuck)} frames)")
     h = history(out, analysis)
     growth = h["energybalance"].max() / h["energytotal"][0]
-    check(growth <= 1e-3, f"{analysis}: largest energy balance {growth:+.2e} of E0")
+    check(growth <= 1e-3, f"{label}: largest energy balance {growth:+.2e} of E0")
     block = log[log.index(f"analysis '{analysis}'"):]
     m = re.search(r"\(([\d.]+) per step", block)
-    check(m and float(m.group(1)) <= 2.5, f"{analysis}: {m.group(1) if m else '?'} Newton iterations per step")
+    check(m and float(m.group(1)) <= 2.5, f"{label}: {m.group(1) if m else '?'} Newton iterations per step")
 
 # 3: mu -> 0 against the frictionless run.
 with_mu = lambda s: s.replace('<Parameter name="Slave Side Set" type="string" value="BLOCK_BOTTOM"/>',
