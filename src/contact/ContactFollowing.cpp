@@ -52,7 +52,7 @@ std::map<int, std::map<int, SlaveProjection>> ContactManager::followMortar() con
   for (size_t p = 0; p < pairs_.size(); ++p) {
     if (!followed_->follows(int(p)) || !followed_->mortar(int(p))) continue;
     const PairingResult r =
-        mortarPairing(followed_->slaveFaces(int(p)), followed_->masterFaces(int(p)), pairs_[p], int(p));
+        mortarPairing(followed_->slaveFaces(int(p)), followed_->masterSearch(int(p)), pairs_[p], int(p));
     for (const SlaveProjection& sp : r.projections)
       if (!sp.masterNodes.empty()) out[int(p)][sp.slaveNode] = sp;
   }

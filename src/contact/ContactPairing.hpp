@@ -17,6 +17,7 @@
 
 #include "contact/ContactFaces.hpp"
 #include "contact/RigidObstacle.hpp"
+#include "contact/SurfaceSearch.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace choc {
@@ -75,9 +76,10 @@ PairingResult pairNodeToObstacle(const Mesh& mesh, const PairDefinition& def, in
 // the master) is left unpaired. Throws std::invalid_argument for quadratic slave faces, or when
 // no slave face overlaps a master face within the search distance.
 PairingResult pairMortar(const Mesh& mesh, const PairDefinition& def, int pairIndex);
-// The same on given faces (a followed pair's current configuration); throws nothing when no
-// node pairs. A followed pair keeps its unpaired nodes as projections without master nodes.
-PairingResult mortarPairing(const std::vector<Face>& slave, const std::vector<Face>& master,
+// The same on given slave faces and master faces binned for search (a followed pair's current
+// configuration); throws nothing when no node pairs. A followed pair keeps its unpaired nodes
+// as projections without master nodes.
+PairingResult mortarPairing(const std::vector<Face>& slave, const SurfaceSearch& master,
                             const PairDefinition& def, int pairIndex);
 // Each slave node with the nearest master node (one to one; std::invalid_argument otherwise).
 PairingResult pairNodeToNode(const Mesh& mesh, const PairDefinition& def, int pairIndex);

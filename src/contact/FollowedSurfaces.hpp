@@ -31,10 +31,10 @@ class FollowedSurfaces {
   double displacement(GO dof) const;        // of the last place()
   bool find(int pair, const Point3& x, SurfaceHit& hit) const;
   // Mortar pairs: their slave faces at the current positions, and their master faces (moved
-  // by the last place with a search).
+  // and binned by the last place with a search).
   bool mortar(int pair) const { return slaveFaces_.count(pair) > 0; }
   std::vector<Face> slaveFaces(int pair) const;
-  const std::vector<Face>& masterFaces(int pair) const { return searches_.at(pair)->faces(); }
+  const SurfaceSearch& masterSearch(int pair) const { return *searches_.at(pair); }
   const Face& face(int pair, int f) const { return searches_.at(pair)->faces()[f]; }
   long long projections() const;
 

@@ -5,6 +5,7 @@
 
 #include "contact/ContactPairing.hpp"
 #include "contact/MortarSegments.hpp"
+#include "contact/SurfaceSearch.hpp"
 #include "fem/Quadrature.hpp"
 
 namespace choc {
@@ -59,7 +60,7 @@ PairingResult pairMortar(const Mesh& mesh, const PairDefinition& def, int pairIn
     if (!mortarSlaveFace(f))
       throw std::invalid_argument("slave side set '" + def.slaveSideSet +
                                   "' has quadratic faces: mortar takes TRI3, QUAD4 and LINE2 slave faces");
-  PairingResult res = mortarPairing(slave, facesOf(mesh, def.masterSideSet), def, pairIndex);
+  PairingResult res = mortarPairing(slave, SurfaceSearch(facesOf(mesh, def.masterSideSet), def.searchDistance), def, pairIndex);
   if (res.projections.size() == (def.followMotion ? res.unpaired.size() : 0))
     throw std::invalid_argument("no face of slave side set '" + def.slaveSideSet + "' overlaps a face of master side set '" +
                                 def.masterSideSet + "' within the search distance " +
@@ -67,8 +68,9 @@ PairingResult pairMortar(const Mesh& mesh, const PairDefinition& def, int pairIn
   return res;
 }
 
-PairingResult mortarPairing(const std::vector<Face>& slave, const std::vector<Face>& master,
+PairingResult mortarPairing(const std::vector<Face>& slave, const SurfaceSearch& search,
                             const PairDefinition& def, int pairIndex) {
+  const std::vector<Face>& master = search.faces();
   std::map<int, NodeSums> sums;
   for (const Face& f : slave) {
     const std::vector<double> I = shapeIntegrals(f, def.axisymmetric);
@@ -79,13 +81,11 @@ PairingResult mortarPairing(const std::vector<Face>& slave, const std::vector<Fa
       for (int d = 0; d < 3; ++d) s.normal[d] += n[d];
     }
   }
-  std::vector<Box> masterBoxes;
-  for (const Face& m : master) masterBoxes.push_back(boxOf(m, 0.0));
   for (const Face& f : slave) {
     const DenseMatrix A = dualBasis(f, def.axisymmetric);
     const Box box = boxOf(f, def.searchDistance);
-    for (size_t mf = 0; mf < master.size(); ++mf) {
-      if (!overlap(box, masterBoxes[mf])) continue;
+    for (const int mf : search.candidates(box.lo, box.hi)) {  // master faces near the slave face
+      if (!overlap(box, boxOf(master[mf], 0.0))) continue;
       const std::vector<MortarPoint> pts = mortarPoints(f, master[mf], def.axisymmetric);
       if (pts.empty()) continue;
       const Point3 n = sums[f.nodes[0]].normal;

@@ -77,6 +77,23 @@ void SurfaceSearch::rebuild() {
   }
 }
 
+std::vector<int> SurfaceSearch::candidates(const Point3& lo, const Point3& hi) const {
+  long long a[3], b[3];
+  for (int d = 0; d < 3; ++d) {
+    a[d] = static_cast<long long>(std::floor((lo[d] - origin_[d]) / cell_));
+    b[d] = static_cast<long long>(std::floor((hi[d] - origin_[d]) / cell_));
+  }
+  std::vector<int> out;
+  for (long long i = a[0]; i <= b[0]; ++i)
+    for (long long j = a[1]; j <= b[1]; ++j)
+      for (long long l = a[2]; l <= b[2]; ++l)
+        if (const auto it = bins_.find(packCell(i, j, l)); it != bins_.end())
+          out.insert(out.end(), it->second.begin(), it->second.end());
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 bool SurfaceSearch::closest(const Point3& x, SurfaceHit& hit, double widen) const {
   const auto it = bins_.find(key(x));
   if (it == bins_.end()) return false;

@@ -30,6 +30,9 @@ class SurfaceSearch {
   // The nearest face whose closest point to x lies within its parameter domain widened by
   // `widen`, with |gap| <= reach; false when there is none.
   bool closest(const Point3& x, SurfaceHit& hit, double widen = 1e-8) const;
+  // The faces whose widened boxes may overlap the box [lo, hi] (those binned in the cells it
+  // covers), ascending.
+  std::vector<int> candidates(const Point3& lo, const Point3& hi) const;
   long long projections() const { return projections_; }  // projections made so far (cost)
 
  private:
