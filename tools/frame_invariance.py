@@ -4,7 +4,7 @@ turned as a rigid whole.
 
 usage: tools/frame_invariance.py [--scene sdnv100|sliding] [--friction MU] [--build DIR] [--out DIR]
                                  [--angle RAD] [--axis X Y Z] [--tolerance T]
-                                 [--cost-tolerance C] [--energy-tolerance E] [--explicit]
+                                 [--cost-tolerance C] [--energy-tolerance E] [--explicit] [--mortar]
 
 Runs input/sdnv100.xml twice with every displacement component free (nu = 0, so the wave stays
 1D): once as drawn, once with the bar, its initial velocity and the wall turned by the rotation
@@ -19,7 +19,7 @@ at the default contact mass. Exit 0 when it holds, 1 otherwise (naming what diff
 current configuration), its mesh turned (meshes/sliding_blocks.geo), the block's velocity and
 the pressure's nodal forces turned; compared: the motion of the block's corner, the contact
 force, the cost. The contact pressures and slips of every node are compared too (same
-numbering), to the same tolerance of their peaks.
+numbering), to the same tolerance of their peaks. --mortar runs its pair in mortar.
 """
 import argparse
 import math
@@ -139,6 +139,10 @@ def sliding_deck(mesh, R, explicit=False):
     s = s.replace('value="BLOCK_TOP_CORNER:DX BLOCK_TOP_CORNER:DZ"',
                   'value="BLOCK_TOP_CORNER:DX BLOCK_TOP_CORNER:DY BLOCK_TOP_CORNER:DZ"')
     s = re.sub(r'<ParameterList name="Checks">.*?\n      </ParameterList>\n', '', s, flags=re.S)
+    if MORTAR[0]:  # --mortar: the pair in mortar
+        s = s.replace('<Parameter name="Slave Side Set" type="string" value="BLOCK_BOTTOM"/>',
+                      '<Parameter name="Slave Side Set" type="string" value="BLOCK_BOTTOM"/>\n'
+                      '            <Parameter name="Discretization" type="string" value="mortar"/>')
     if FRICTION[0] > 0:  # --friction: Coulomb friction on the pair
         s = s.replace('<Parameter name="Slave Side Set" type="string" value="BLOCK_BOTTOM"/>',
                       '<Parameter name="Slave Side Set" type="string" value="BLOCK_BOTTOM"/>\n'
@@ -147,6 +151,7 @@ def sliding_deck(mesh, R, explicit=False):
 
 
 FRICTION = [0.0]  # the sliding scene's Coulomb coefficient (--friction)
+MORTAR = [False]  # the sliding scene's pair in mortar (--mortar)
 
 
 # Per scene: its gmsh file, the extrusion the turned mesh takes, its deck, the nodes whose
@@ -226,8 +231,11 @@ def main():
                          "friction force is a reaction, known to Newton's residual tolerance (1e-8 of "
                          "the 6,400 N load: 6.4e-5 N per node, 28 nodes, 2.6e-6 of the 128 N peak); "
                          "a sliding node's is mu f_N, compared with the normal force")
+    ap.add_argument("--mortar", action="store_true",
+                    help="sliding scene: the pair in mortar ('Discretization' = mortar)")
     a = ap.parse_args()
     FRICTION[0] = a.friction
+    MORTAR[0] = a.mortar
     R = rotation(a.angle, a.axis)
     ref, ref_cost = run(a, "as_drawn", np.eye(3), False)
     rot, rot_cost = run(a, "turned", R, True)

@@ -77,6 +77,9 @@ choc_frame_invariance(sliding 300 --scene sliding)
 # 7.8 ms): the motion, contact and friction work to 1e-8 of their peaks, the friction force of
 # the stuck block (a reaction known to Newton's tolerance) to 1e-5 of its peak.
 choc_frame_invariance(sliding_friction 300 --scene sliding --friction 0.02)
+# The sliding block with its pair in mortar: the overlaps' clipping plane and integration points
+# follow the faces, so the turned scene gives the same motion, pressures and slips (1e-8).
+choc_frame_invariance(sliding_mortar 300 --scene sliding --mortar)
 
 # The contact patch test (BENCHMARKS section 3): matching faces pass it to 1e-8; on
 # non-matching faces (quadrilaterals on triangles) node to face's error is reported.
