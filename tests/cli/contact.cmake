@@ -84,6 +84,8 @@ choc_frame_invariance(sliding_mortar 300 --scene sliding --mortar)
 # The contact patch test (BENCHMARKS section 3): matching faces pass it to 1e-8; on
 # non-matching faces (quadrilaterals on triangles) node to face's error is reported.
 choc_contact_script(patch_test 300)
+# Mortar on matching axisymmetric meshes (LINE2 rings) equals node to face to round-off.
+choc_contact_script(mortar_matching 120)
 
 # Explicit central differences with Lagrange contact by forward increments (issue 17): SDNV100
 # with every component free, as drawn and turned: the same motion to 1e-8 of the peak, no
