@@ -80,6 +80,8 @@ choc_frame_invariance(sliding_friction 300 --scene sliding --friction 0.02)
 # The sliding block with its pair in mortar: the overlaps' clipping plane and integration points
 # follow the faces, so the turned scene gives the same motion, pressures and slips (1e-8).
 choc_frame_invariance(sliding_mortar 300 --scene sliding --mortar)
+# And with Coulomb friction on the mortar pair (mu = 0.02, as above).
+choc_frame_invariance(sliding_friction_mortar 300 --scene sliding --mortar --friction 0.02)
 
 # The contact patch test (BENCHMARKS section 3): matching faces pass it to 1e-8; on
 # non-matching faces (quadrilaterals on triangles) node to face's error is reported.
