@@ -5,7 +5,7 @@
 // position onto its pair's master surface: the closest face containing the projection, or,
 // when the projection falls in no face (a node over the kink between two faces of a convex
 // surface), the nearest face whose domain widened by 0.05 in its parameters contains it.
-// A mortar pair is integrated again on the current faces (slaveFaces, masterFaces).
+// A mortar pair is integrated again on the current faces (slaveFaces, masterSearch).
 #pragma once
 #include <map>
 #include <memory>

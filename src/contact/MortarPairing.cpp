@@ -50,16 +50,13 @@ struct NodeSums {
   std::map<int, double> M;         // master node -> int Phi_j N_m
   int firstFace = -1;
   Point3 normal{0, 0, 0};          // sum of its faces' outward normals there
+  Point3 nu{};                     // the contact normal: that sum normalised, turned to the slave
 };
 
 }  // namespace
 
 PairingResult pairMortar(const Mesh& mesh, const PairDefinition& def, int pairIndex) {
-  const std::vector<Face> slave = facesOf(mesh, def.slaveSideSet);
-  for (const Face& f : slave)
-    if (!mortarSlaveFace(f))
-      throw std::invalid_argument("slave side set '" + def.slaveSideSet +
-                                  "' has quadratic faces: mortar takes TRI3, QUAD4 and LINE2 slave faces");
+  const std::vector<Face> slave = facesOf(mesh, def.slaveSideSet);  // dualBasis rejects quadratic faces
   PairingResult res = mortarPairing(slave, SurfaceSearch(facesOf(mesh, def.masterSideSet), def.searchDistance), def, pairIndex);
   if (res.projections.size() == (def.followMotion ? res.unpaired.size() : 0))
     throw std::invalid_argument("no face of slave side set '" + def.slaveSideSet + "' overlaps a face of master side set '" +
@@ -81,6 +78,10 @@ PairingResult mortarPairing(const std::vector<Face>& slave, const SurfaceSearch&
       for (int d = 0; d < 3; ++d) s.normal[d] += n[d];
     }
   }
+  for (auto& [node, s] : sums) {
+    const double l = norm(s.normal);
+    s.nu = {-s.normal[0] / l, -s.normal[1] / l, -s.normal[2] / l};
+  }
   for (const Face& f : slave) {
     const DenseMatrix A = dualBasis(f, def.axisymmetric);
     const Box box = boxOf(f, def.searchDistance);
@@ -88,17 +89,14 @@ PairingResult mortarPairing(const std::vector<Face>& slave, const SurfaceSearch&
       if (!overlap(box, boxOf(master[mf], 0.0))) continue;
       const std::vector<MortarPoint> pts = mortarPoints(f, master[mf], def.axisymmetric);
       if (pts.empty()) continue;
-      const Point3 n = sums[f.nodes[0]].normal;
-      if (!(std::abs(dot(pts[0].xs - pts[0].xm, n)) <= def.searchDistance * norm(n))) continue;
+      if (!(std::abs(dot(pts[0].xs - pts[0].xm, sums[f.nodes[0]].nu)) <= def.searchDistance)) continue;
       for (const MortarPoint& p : pts) {
         const std::vector<double> phi = dualShapes(A, p.Ns);
         for (size_t a = 0; a < f.nodes.size(); ++a) {
           NodeSums& s = sums[f.nodes[a]];
-          const double nl = norm(s.normal);
-          const Point3 nu{-s.normal[0] / nl, -s.normal[1] / nl, -s.normal[2] / nl};
           const double w = phi[a] * p.weight;
           s.D += w;
-          s.G += w * dot(nu, p.xs - p.xm);
+          s.G += w * dot(s.nu, p.xs - p.xm);
           for (size_t b = 0; b < p.Nm.size(); ++b) s.M[master[mf].nodes[b]] += w * p.Nm[b];
           if (s.firstFace < 0) s.firstFace = int(mf);
         }
@@ -121,8 +119,7 @@ PairingResult mortarPairing(const std::vector<Face>& slave, const SurfaceSearch&
       continue;
     }
     sp.masterFace = s.firstFace;
-    const double nl = norm(s.normal);
-    sp.normal = {-s.normal[0] / nl, -s.normal[1] / nl, -s.normal[2] / nl};
+    sp.normal = s.nu;
     sp.gap0 = s.G / s.D;
     sp.area = s.D;
     for (const auto& [m, v] : s.M)

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Teuchos_LAPACK.hpp>
+
 #include "fem/Quadrature.hpp"
 
 namespace choc {
@@ -30,9 +32,8 @@ std::array<double, 2> nodeParameters(const Face& f, int a) {
 
 int corners(const Face& f) { return f.edgeNodes ? 2 : cornerCount(f.shape); }
 
-Point3 centre(const Face& f) {
-  return evaluateFace(f, isTriangle(f) ? 1.0 / 3.0 : 0.0, isTriangle(f) ? 1.0 / 3.0 : 0.0).x;
-}
+// Both parameters of the face's centre.
+double centreParameter(const Face& f) { return isTriangle(f) ? 1.0 / 3.0 : 0.0; }
 
 Point3 faceNormal(const Face& f, double xi, double eta) {
   const FacePoint q = evaluateFace(f, xi, eta);
@@ -48,9 +49,9 @@ struct Frame {
 
 Frame slaveFrame(const Face& s) {
   Frame fr;
-  fr.c = centre(s);
-  const double m = isTriangle(s) ? 1.0 / 3.0 : 0.0;
+  const double m = centreParameter(s);
   const FacePoint q = evaluateFace(s, m, m);
+  fr.c = q.x;
   fr.n0 = unit(cross(q.dxi, q.deta));
   fr.e1 = unit(q.dxi);
   fr.e2 = cross(fr.n0, fr.e1);
@@ -60,7 +61,7 @@ Frame slaveFrame(const Face& s) {
 // Parameters of the face's point that projects onto X along n0: e1, e2 . (x(xi) - X) = 0
 // (edges: e1 only). False when Newton does not converge.
 bool projectAlong(const Face& f, const Frame& fr, const Point3& X, double& xi, double& eta) {
-  xi = eta = isTriangle(f) ? 1.0 / 3.0 : 0.0;
+  xi = eta = centreParameter(f);
   for (int it = 0; it < 30; ++it) {
     const FacePoint q = evaluateFace(f, xi, eta);
     const Point3 d = q.x - X;
@@ -167,26 +168,20 @@ DenseMatrix dualBasis(const Face& s, bool axisymmetric) {
       for (int b = 0; b < n; ++b) M(a, b) += q.N[a] * q.N[b] * J;
     }
   }
-  // A = D M^-1: Gauss-Jordan on [M | I], then rows scaled by D.
-  DenseMatrix inv(n, n);
-  for (int a = 0; a < n; ++a) inv(a, a) = 1.0;
-  for (int c = 0; c < n; ++c) {
-    int piv = c;
-    for (int r = c + 1; r < n; ++r)
-      if (std::abs(M(r, c)) > std::abs(M(piv, c))) piv = r;
-    if (!(std::abs(M(piv, c)) > 0)) throw std::invalid_argument("degenerate slave face");
-    for (int k = 0; k < n; ++k) std::swap(M(c, k), M(piv, k)), std::swap(inv(c, k), inv(piv, k));
-    const double d = M(c, c);
-    for (int k = 0; k < n; ++k) M(c, k) /= d, inv(c, k) /= d;
-    for (int r = 0; r < n; ++r) {
-      if (r == c) continue;
-      const double f = M(r, c);
-      for (int k = 0; k < n; ++k) M(r, k) -= f * M(c, k), inv(r, k) -= f * inv(c, k);
-    }
+  // A = D M^-1; M symmetric positive definite: A^T = M^-1 D by Cholesky (column-major Y = A^T).
+  std::vector<double> Mc(size_t(n) * n), Y(size_t(n) * n, 0.0);
+  for (int a = 0; a < n; ++a) {
+    Y[size_t(a) * n + a] = D[a];
+    for (int b = 0; b < n; ++b) Mc[size_t(b) * n + a] = M(a, b);
   }
+  Teuchos::LAPACK<int, double> lapack;
+  int info = 0;
+  lapack.POSV('L', n, n, Mc.data(), n, Y.data(), n, &info);
+  if (info != 0) throw std::invalid_argument("degenerate slave face");
+  DenseMatrix A(n, n);
   for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b) inv(a, b) *= D[a];
-  return inv;
+    for (int b = 0; b < n; ++b) A(a, b) = Y[size_t(a) * n + b];  // A(a, b) = Y(b, a)
+  return A;
 }
 
 std::vector<double> dualShapes(const DenseMatrix& A, const std::vector<double>& N) {
@@ -199,7 +194,7 @@ std::vector<double> dualShapes(const DenseMatrix& A, const std::vector<double>& 
 std::vector<MortarPoint> mortarPoints(const Face& s, const Face& m, bool axisymmetric) {
   std::vector<MortarPoint> out;
   const Frame fr = slaveFrame(s);
-  if (!(dot(faceNormal(m, isTriangle(m) ? 1.0 / 3.0 : 0.0, isTriangle(m) ? 1.0 / 3.0 : 0.0), fr.n0) < 0))
+  if (!(dot(faceNormal(m, centreParameter(m), centreParameter(m)), fr.n0) < 0))
     return out;  // the master face does not face the slave
   if (s.edgeNodes) {  // intervals on the slave edge's line
     double lo = fr.local(s.x[0])[0], hi = fr.local(s.x[1])[0];
