@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 #include "contact/ContactPairing.hpp"
 #include "contact/MortarSegments.hpp"
 #include "fem/Quadrature.hpp"
-#include "mesh/BarImpactMesh.hpp"
+#include "test_contact_helpers.hpp"
+#include "test_mesh_helpers.hpp"
 
 namespace choc {
 namespace {
@@ -108,17 +110,6 @@ TEST(ContactMortar, OverlapPointsMeasureTheOverlap) {
   EXPECT_NEAR(totalWeight(mortarPoints(se, me, true)), M_PI * (1 - 0.16), 1e-13);
 }
 
-Mesh scene(int across1, int across2, double gap) {
-  BarImpactOptions o;
-  o.dimension = 3;
-  o.axis = 'z';
-  o.along1 = o.along2 = 2;
-  o.across1 = across1;
-  o.across2 = across2;
-  o.gap = gap;
-  return generateBarImpactMesh(o);
-}
-
 // Every slave node: weights summing to 1, the gap, and sum_m w_m x_m = x_j laterally (the
 // weights reproduce linear fields: the patch test's uniform strain passes exactly).
 void expectLinearReproduction(const Mesh& m, const PairDefinition& def, size_t slaves) {
@@ -128,11 +119,7 @@ void expectLinearReproduction(const Mesh& m, const PairDefinition& def, size_t s
   double area = 0;
   for (const auto& p : r.projections) {
     double sum = 0;
-    Point3 x{};
-    for (size_t i = 0; i < p.weights.size(); ++i) {
-      sum += p.weights[i];
-      for (int d = 0; d < 3; ++d) x[d] += p.weights[i] * m.coords[p.masterNodes[i]][d];
-    }
+    const Point3 x = test::masterPoint(m, p, sum);
     EXPECT_NEAR(sum, 1.0, 1e-13);
     EXPECT_NEAR(x[0], m.coords[p.slaveNode][0], 1e-14);
     EXPECT_NEAR(x[1], m.coords[p.slaveNode][1], 1e-14);
@@ -146,17 +133,45 @@ void expectLinearReproduction(const Mesh& m, const PairDefinition& def, size_t s
 TEST(ContactMortar, WeightsReproduceLinearFields) {
   // Fine slave (3 x 3) on one master face, and a coarse slave (2 x 2) on a 3 x 3 master, whose
   // dual functions reach master nodes of several faces.
-  const Mesh a = scene(1, 3, 2e-5);
+  const Mesh a = test::barContactScene(1, 3, 2e-5);
   expectLinearReproduction(a, {"ifc", "CNT_POU1", "CNT_POU2", 1e-3}, 16);
-  const Mesh b = scene(3, 2, 2e-5);
+  const Mesh b = test::barContactScene(3, 2, 2e-5);
   expectLinearReproduction(b, {"ifc", "CNT_POU2", "CNT_POU1", 1e-3}, 16);
   expectLinearReproduction(b, {"ifc", "CNT_POU1", "CNT_POU2", 1e-3}, 9);
   // Faces whose edges coincide (2 x 2 on 4 x 4, and the reverse).
-  const Mesh c = scene(2, 4, 2e-5);
+  const Mesh c = test::barContactScene(2, 4, 2e-5);
   expectLinearReproduction(c, {"ifc", "CNT_POU1", "CNT_POU2", 1e-3}, 25);
   expectLinearReproduction(c, {"ifc", "CNT_POU2", "CNT_POU1", 1e-3}, 9);
   // Beyond the search distance nothing overlaps.
   EXPECT_THROW(pairMortar(a, {"ifc", "CNT_POU1", "CNT_POU2", 1e-6}, 0), std::invalid_argument);
+}
+
+// BENCHMARKS section 8: the pairing does not depend on the mesh's numbering. The scene with its
+// nodes renumbered at random gives, node for node, the same weights on the same master nodes,
+// gaps and areas (the sums only change order: round-off).
+TEST(ContactMortar, PairingDoesNotDependOnTheNumbering) {
+  const Mesh m = test::barContactScene(3, 2, 2e-5);
+  std::vector<int> perm;
+  const Mesh r = renumberedMesh(m, 2026, &perm);
+  const PairDefinition def{"ifc", "CNT_POU1", "CNT_POU2", 1e-3};
+  const PairingResult a = pairMortar(m, def, 0), b = pairMortar(r, def, 0);
+  ASSERT_EQ(a.projections.size(), b.projections.size());
+  std::map<int, const SlaveProjection*> renumbered;
+  for (const auto& p : b.projections) renumbered[p.slaveNode] = &p;
+  for (const auto& p : a.projections) {
+    ASSERT_TRUE(renumbered.count(perm[p.slaveNode]));
+    const SlaveProjection& q = *renumbered[perm[p.slaveNode]];
+    EXPECT_NEAR(q.gap0, p.gap0, 1e-18);
+    EXPECT_NEAR(q.area, p.area, 1e-15 * p.area);
+    for (int d = 0; d < 3; ++d) EXPECT_NEAR(q.normal[d], p.normal[d], 1e-15);
+    ASSERT_EQ(q.masterNodes.size(), p.masterNodes.size());
+    std::map<int, double> w;
+    for (size_t i = 0; i < q.masterNodes.size(); ++i) w[q.masterNodes[i]] = q.weights[i];
+    for (size_t i = 0; i < p.masterNodes.size(); ++i) {
+      ASSERT_TRUE(w.count(perm[p.masterNodes[i]])) << "master node " << p.masterNodes[i];
+      EXPECT_NEAR(w[perm[p.masterNodes[i]]], p.weights[i], 1e-14);
+    }
+  }
 }
 
 }  // namespace

@@ -5,24 +5,15 @@
 #include <cmath>
 
 #include "contact/ContactPairing.hpp"
-#include "mesh/BarImpactMesh.hpp"
+#include "test_contact_helpers.hpp"
 
 namespace choc {
 namespace {
 
-Mesh scene(int across1, int across2, double gap) {
-  BarImpactOptions o;
-  o.dimension = 3;
-  o.axis = 'z';
-  o.along1 = o.along2 = 2;
-  o.across1 = across1;
-  o.across2 = across2;
-  o.gap = gap;
-  return generateBarImpactMesh(o);
-}
+using test::barContactScene;
 
 TEST(ContactPairing, MatchingFacesPairNodeToNode) {
-  const Mesh m = scene(1, 1, 1e-5);
+  const Mesh m = barContactScene(1, 1, 1e-5);
   const PairingResult r = pairNodeToFace(m, {"ifc", "CNT_POU1", "CNT_POU2", 1e-3}, 0);
   ASSERT_EQ(r.projections.size(), 4u);
   EXPECT_TRUE(r.unpaired.empty());
@@ -39,17 +30,13 @@ TEST(ContactPairing, MatchingFacesPairNodeToNode) {
 }
 
 TEST(ContactPairing, NonMatchingFacesUseBilinearWeights) {
-  const Mesh m = scene(1, 3, 2e-5);  // 16 slave nodes on one master face
+  const Mesh m = barContactScene(1, 3, 2e-5);  // 16 slave nodes on one master face
   const PairingResult r = pairNodeToFace(m, {"ifc", "CNT_POU1", "CNT_POU2", 1e-3}, 0);
   ASSERT_EQ(r.projections.size(), 16u);
   double area = 0;
   for (const auto& p : r.projections) {
     double sum = 0;
-    Point3 x{};
-    for (size_t i = 0; i < p.weights.size(); ++i) {
-      sum += p.weights[i];
-      for (int d = 0; d < 3; ++d) x[d] += p.weights[i] * m.coords[p.masterNodes[i]][d];
-    }
+    const Point3 x = test::masterPoint(m, p, sum);
     EXPECT_NEAR(sum, 1.0, 1e-14);
     // The projection lies straight above the slave node, at the gap.
     EXPECT_NEAR(x[0], m.coords[p.slaveNode][0], 1e-12);
@@ -61,7 +48,7 @@ TEST(ContactPairing, NonMatchingFacesUseBilinearWeights) {
 }
 
 TEST(ContactPairing, MissingSideSetIsNamed) {
-  const Mesh m = scene(1, 1, 1e-5);
+  const Mesh m = barContactScene(1, 1, 1e-5);
   try {
     pairNodeToFace(m, {"ifc", "CNT_POU9", "CNT_POU2", 1e-3}, 0);
     FAIL();

@@ -1,0 +1,32 @@
+// Helpers of the contact tests: the two-bar scene and the master point of a projection.
+#pragma once
+#include "contact/ContactPairing.hpp"
+#include "mesh/BarImpactMesh.hpp"
+
+namespace choc::test {
+
+// Two HEX8 bars along z (2 elements each), across1 x across1 and across2 x across2 elements in
+// their 0.02 x 0.02 sections, bar 1's contact face CNT_POU1 `gap` above bar 2's CNT_POU2.
+inline Mesh barContactScene(int across1, int across2, double gap) {
+  BarImpactOptions o;
+  o.dimension = 3;
+  o.axis = 'z';
+  o.along1 = o.along2 = 2;
+  o.across1 = across1;
+  o.across2 = across2;
+  o.gap = gap;
+  return generateBarImpactMesh(o);
+}
+
+// sum_i w_i x_i over the projection's master nodes; `sum` receives sum_i w_i.
+inline Point3 masterPoint(const Mesh& m, const SlaveProjection& p, double& sum) {
+  sum = 0;
+  Point3 x{};
+  for (size_t i = 0; i < p.weights.size(); ++i) {
+    sum += p.weights[i];
+    for (int d = 0; d < 3; ++d) x[d] += p.weights[i] * m.coords[p.masterNodes[i]][d];
+  }
+  return x;
+}
+
+}  // namespace choc::test
