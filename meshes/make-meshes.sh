@@ -23,6 +23,7 @@ gmsh -3 -order 2 -format msh41 "$here/sdnl111_3d_bars.geo" -o "$here/sdnl111_3d_
 gmsh -2 -order 2 -format msh41 "$here/sdnl111_2d.geo" -o "$here/sdnl111_2d_quad8.msh" > /dev/null
 # SDNV100 (issue 14): the bar dropped on a rigid wall, 20 HEX8 along.
 gmsh -3 -format msh41 "$here/sdnv100_bar.geo" -o "$here/sdnv100_bar.msh" > /dev/null
+gmsh -3 -format msh41 -setnumber n 1000 "$here/sdnv100_bar.geo" -o "$here/sdnv100_bar_1000.msh" > /dev/null
 # Hertz (issue 14): the sphere (axisymmetric half disc) and its lower half for the static press.
 gmsh -2 -order 2 -format msh41 "$here/hertz_axisymmetric.geo" -o "$here/hertz_axisymmetric.msh" > /dev/null
 gmsh -2 -order 2 -format msh41 "$here/hertz_hemisphere.geo" -o "$here/hertz_hemisphere.msh" > /dev/null

@@ -17,6 +17,7 @@
 #include "observers/Probes.hpp"
 #include "observers/TransientOutputs.hpp"
 #include "physics/InitialConditions.hpp"
+#include "physics/CriticalStep.hpp"
 #include "physics/DirectLinks.hpp"
 #include "physics/StructuralOperator.hpp"
 #include "solvers/LinearSolver.hpp"
@@ -67,6 +68,7 @@ class ImplicitTransient : public Analysis {
     // sub-steps per step.
     RCP<Vector> inverseMass;
     double omegaMax = 0, criticalStep = 0;
+    FrequencyBound bound;  // both bounds of the highest frequency (omegaMax the smaller)
     int substeps = 1;
   };
   void readScheme();
@@ -74,7 +76,7 @@ class ImplicitTransient : public Analysis {
   std::shared_ptr<const Loads> assembleLoads(const Model& model) const;
   void buildContact(Model& model);
   void buildSolver();
-  void setupExplicit();
+  void setupExplicit(const Model& model);
   std::unique_ptr<StepLoop> stepLoop(StructuralOperator& op) const;
   void describe(Model& model, const StructuralOperator& op) const;
   void recordFigures(const TransientSummary& sum, const StructuralOperator& op,

@@ -56,6 +56,12 @@ class Assembler {
   // any number of ranks. Throws std::invalid_argument for a wrong-sized mask or an element
   // whose nodes are all massless.
   RCP<CrsMatrix> mass(const std::vector<char>& massless) const;
+  // An upper bound of the highest eigenvalue of K x = lambda M x (the stiffness with `springs`,
+  // the lumped mass): the largest element eigenvalue (elementEigenvalue, Irons and Treharne)
+  // plus Gershgorin's bound of the springs alone on the nodes' lumped masses. +inf when a block
+  // has a consistent mass or an element's lumped mass is not positive where it is stiff.
+  // Collective; the same on any number of ranks.
+  double eigenvalueBound(const std::vector<NodalSpring>& springs = {}) const;
   // Components each node carries through the elements attached to it (bit mask per node).
   static std::vector<std::uint8_t> carriedComponents(const Mesh& mesh,
                                                      const std::vector<BlockPhysics>& blocks);

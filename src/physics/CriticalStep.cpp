@@ -71,8 +71,8 @@ RCP<Vector> lumpedMassDiagonal(const CrsMatrix& M) {
   return anyBad ? RCP<Vector>() : d;
 }
 
-double omegaMaxBound(const CrsMatrix& K, const Vector& massDiagonal, const ContactManager* contact,
-                     double contactStiffness, const DirectLinks* links) {
+FrequencyBound omegaMaxBound(const CrsMatrix& K, const Vector& massDiagonal, const ContactManager* contact,
+                             double contactStiffness, const DirectLinks* links, double meshBound) {
   auto rowMap = K.getRowMap();
   auto colMap = K.getColMap();
   Vector mCol(colMap);
@@ -80,7 +80,7 @@ double omegaMaxBound(const CrsMatrix& K, const Vector& massDiagonal, const Conta
   auto mc = mCol.getData();
   auto md = massDiagonal.getData();
   const size_t nLocal = rowMap->getNodeNumElements();
-  std::vector<double> rows(nLocal, 0.0);
+  std::vector<double> rows(nLocal, 0.0), couplings(nLocal, 0.0);
   RowCopy row;
   for (size_t i = 0; i < nLocal; ++i) {
     row.read(K, rowMap->getGlobalElement(LO(i)));
@@ -92,7 +92,7 @@ double omegaMaxBound(const CrsMatrix& K, const Vector& massDiagonal, const Conta
       std::vector<GO> dofs;
       std::vector<double> b;
       for (const auto& [gid, coef] : c.terms) dofs.push_back(gid), b.push_back(coef);
-      addCoupling(*rowMap, dofs, b, gatheredMasses(massDiagonal, dofs), contactStiffness, rows);
+      addCoupling(*rowMap, dofs, b, gatheredMasses(massDiagonal, dofs), contactStiffness, couplings);
     }
   if (links)
     for (size_t i = 0; i < links->links().size(); ++i) {
@@ -100,12 +100,20 @@ double omegaMaxBound(const CrsMatrix& K, const Vector& massDiagonal, const Conta
       const std::vector<GO> dofs = links->linkDofs(i);
       // A unit force along any direction: |b| <= 1 per component, on both nodes.
       addCoupling(*rowMap, dofs, std::vector<double>(dofs.size(), 1.0), gatheredMasses(massDiagonal, dofs),
-                  std::max(law.normalStiffness, law.tangentialStiffness), rows);
+                  std::max(law.normalStiffness, law.tangentialStiffness), couplings);
     }
-  double mine = 0.0, all = 0.0;
-  for (double r : rows) mine = std::max(mine, r);
-  Teuchos::reduceAll<int, double>(*rowMap->getComm(), Teuchos::REDUCE_MAX, mine, Teuchos::outArg(all));
-  return std::sqrt(all);
+  double mine[2] = {0.0, 0.0}, all[2] = {0.0, 0.0};
+  for (size_t i = 0; i < nLocal; ++i) {
+    mine[0] = std::max(mine[0], rows[i] + couplings[i]);
+    mine[1] = std::max(mine[1], couplings[i]);
+  }
+  Teuchos::reduceAll<int, double>(*rowMap->getComm(), Teuchos::REDUCE_MAX, 2, mine, all);
+  FrequencyBound f;
+  f.gershgorin = std::sqrt(all[0]);
+  f.element = std::sqrt(meshBound + all[1]);
+  f.elementBound = f.element < f.gershgorin;
+  f.omegaMax = std::min(f.element, f.gershgorin);
+  return f;
 }
 
 }  // namespace choc

@@ -40,6 +40,9 @@ class Model {
   // redistributed onto the other nodes (Assembler::mass(massless)); not cached. Throws
   // std::invalid_argument when an element has every node flagged.
   RCP<const CrsMatrix> mass(const std::vector<char>& massless) const;
+  // An upper bound of the highest eigenvalue of the stiffness() against the lumped mass():
+  // Assembler::eigenvalueBound (+inf with a consistent mass). Collective.
+  double eigenvalueBound() const { return assembler_->eigenvalueBound(springs_); }
   Kinematics kinematics() const { return kinematics_; }
   // Material of the block containing the node set's first node (for reference solutions).
   const Material& materialOfBlock(int block) const { return blockMaterial_[block]; }

@@ -256,5 +256,25 @@ TEST(MpiAssembly, GroundedSpringsAddTheirBlockOnlyAndAreRankIndependent) {
   }
 }
 
+// The element eigenvalue bound of the critical step (a maximum over elements plus the springs'
+// Gershgorin rows) is the same number on any number of ranks: each element is computed whole
+// on every rank that holds one of its nodes, and the maximum does not depend on the order.
+TEST(MpiAssembly, ElementEigenvalueBoundIsRankIndependent) {
+  Scene m = hex8BenchmarkScene();
+  for (auto& p : m.physics) p.mass = MassKind::Lumped;
+  m.mask = Assembler::carriedComponents(m.mesh, m.physics);
+  for (int n : m.mesh.findNodeSet("CL_POU2")->nodes) m.mask[n] &= std::uint8_t(~(1u << DZ));
+  const std::vector<NodalSpring> springs{{m.mesh.findNodeSet("B")->nodes.front(), {0.6, 0.0, 0.8}, 1e12}};
+  auto world = Teuchos::DefaultComm<int>::getComm();
+  RCP<const Comm> self = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+  DofMap dw(m.mask, world->getSize(), world->getRank()), ds(m.mask, 1, 0);
+  const Assembler aw(m.mesh, dw, m.physics, world), as(m.mesh, ds, m.physics, self);
+  for (const auto& sp : {std::vector<NodalSpring>{}, springs}) {
+    const double w = aw.eigenvalueBound(sp), s1 = as.eigenvalueBound(sp);
+    EXPECT_TRUE(std::isfinite(w) && w > 0);
+    EXPECT_TRUE(sameBits(w, s1)) << w << " on " << world->getSize() << " ranks, " << s1 << " on one";
+  }
+}
+
 }  // namespace
 }  // namespace choc

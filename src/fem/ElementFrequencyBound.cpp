@@ -1,0 +1,116 @@
+#include "fem/ElementFrequencyBound.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <Teuchos_LAPACK.hpp>
+
+namespace choc {
+
+double elementEigenvalue(const DenseMatrix& K, const DenseMatrix& M, const std::vector<char>& active) {
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<int> rows;
+  for (int i = 0; i < K.rows(); ++i)
+    if (active[i]) rows.push_back(i);
+  for (int i : rows)
+    for (int j : rows)
+      if (i != j && M(i, j) != 0.0) return inf;
+  // Rows without stiffness (a rotation an element does not resist) carry no frequency.
+  std::vector<int> keep;
+  std::vector<double> scale;
+  for (int i : rows) {
+    bool stiff = false;
+    for (int j : rows) stiff = stiff || K(i, j) != 0.0;
+    if (!stiff) continue;
+    if (!(M(i, i) > 0.0)) return inf;
+    keep.push_back(i);
+    scale.push_back(1.0 / std::sqrt(M(i, i)));
+  }
+  const int n = static_cast<int>(keep.size());
+  if (n == 0) return 0.0;
+  // M^-1/2 K M^-1/2, column-major (symmetric); its largest eigenvalue by LAPACK DSYEV.
+  std::vector<double> A(size_t(n) * n), w(n);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) A[size_t(b) * n + a] = K(keep[a], keep[b]) * scale[a] * scale[b];
+  Teuchos::LAPACK<int, double> lapack;
+  int info = 0;
+  std::vector<double> work(std::max(1, 3 * n));
+  lapack.SYEV('N', 'U', n, A.data(), n, w.data(), work.data(), int(work.size()), &info);
+  if (info != 0)
+    throw std::runtime_error("element eigenvalue bound: LAPACK DSYEV failed with info = " +
+                             std::to_string(info));
+  return w[n - 1];
+}
+
+}  // namespace choc
+
+#include <algorithm>
+#include <map>
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include "fem/Assembler.hpp"
+
+namespace choc {
+
+double Assembler::eigenvalueBound(const std::vector<NodalSpring>& springs) const {
+  const double inf = std::numeric_limits<double>::infinity();
+  double elements = 0.0;
+  std::map<long long, double> nodalMass;  // lumped masses of the springs' owned DOFs
+  for (const NodalSpring& sp : springs)
+    if (dofs_.ownsNode(sp.node))
+      for (int c = 0; c < 3; ++c)
+        if (dofs_.dof(sp.node, c) >= 0) nodalMass[dofs_.dof(sp.node, c)] = 0.0;
+  std::vector<Point3> x;
+  std::vector<char> active;
+  DenseMatrix Ke, Me;
+  for (int ge : elements_) {
+    auto [b, e] = mesh_.locateElement(ge);
+    const ElementBlock& blk = mesh_.blocks[b];
+    const ElementKernel& kernel = *blocks_[b].kernel;
+    if (blocks_[b].mass != MassKind::Lumped) {
+      elements = inf;
+      break;
+    }
+    const int* conn = &blk.connectivity[size_t(e) * blk.nodesPerElement];
+    const auto& comps = kernel.components();
+    const int nc = static_cast<int>(comps.size());
+    x.resize(blk.nodesPerElement);
+    active.assign(size_t(blk.nodesPerElement) * nc, 0);
+    for (int k = 0; k < blk.nodesPerElement; ++k) {
+      x[k] = mesh_.coords[conn[k]];
+      for (int j = 0; j < nc; ++j) active[k * nc + j] = dofs_.dof(conn[k], comps[j]) >= 0;
+    }
+    kernel.stiffness(x, Ke);
+    kernel.mass(x, MassKind::Lumped, Me);
+    elements = std::max(elements, elementEigenvalue(Ke, Me, active));
+    for (int k = 0; k < blk.nodesPerElement; ++k)
+      for (int j = 0; j < nc; ++j) {
+        auto it = nodalMass.find(dofs_.dof(conn[k], comps[j]));
+        if (it != nodalMass.end() && active[k * nc + j]) it->second += Me(k * nc + j, k * nc + j);
+      }
+  }
+  // Gershgorin on the springs alone: row i of sum_s k_s d d^T scaled by the lumped masses.
+  std::map<long long, double> rows;
+  for (const NodalSpring& sp : springs) {
+    if (!dofs_.ownsNode(sp.node)) continue;
+    for (int i = 0; i < 3; ++i) {
+      const long long gi = dofs_.dof(sp.node, i);
+      if (gi < 0 || sp.direction[i] == 0.0) continue;
+      double s = 0.0;
+      for (int j = 0; j < 3; ++j) {
+        const long long gj = dofs_.dof(sp.node, j);
+        if (gj >= 0) s += std::abs(sp.direction[j]) / std::sqrt(nodalMass[gj]);
+      }
+      rows[gi] += sp.stiffness * std::abs(sp.direction[i]) / std::sqrt(nodalMass[gi]) * s;
+    }
+  }
+  double springRows = 0.0;
+  for (const auto& [dof, r] : rows) springRows = std::max(springRows, std::isfinite(r) ? r : inf);
+  double mine[2] = {elements, springRows}, all[2] = {0.0, 0.0};
+  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MAX, 2, mine, all);
+  return all[0] + all[1];
+}
+
+}  // namespace choc
