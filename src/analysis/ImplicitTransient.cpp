@@ -1,7 +1,7 @@
 #include "analysis/ImplicitTransient.hpp"
 
-#include <limits>
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 #include <Tpetra_CrsMatrix.hpp>
@@ -265,11 +265,10 @@ void ImplicitTransient::setupExplicit(const Model& model) {
   // The element bound holds for the mesh's own lumped mass (not for a redistributed one).
   const double meshBound = b_->masslessNodes == 0 ? model.eigenvalueBound()
                                                   : std::numeric_limits<double>::infinity();
-  const FrequencyBound f = omegaMaxBound(*b_->K, *m, b_->contact.get(), k, b_->links.get(), meshBound);
-  b_->omegaMax = f.omegaMax;
-  b_->bound = f;
-  const double xi = b_->omegaMax > 0 ? 0.5 * (s_.rayleighK * b_->omegaMax + s_.rayleighM / b_->omegaMax) : 0.0;
-  b_->criticalStep = explicitCriticalStep(b_->omegaMax, xi);
+  b_->bound = omegaMaxBound(*b_->K, *m, b_->contact.get(), k, b_->links.get(), meshBound);
+  const double w = b_->bound.omegaMax;
+  const double xi = w > 0 ? 0.5 * (s_.rayleighK * w + s_.rayleighM / w) : 0.0;
+  b_->criticalStep = explicitCriticalStep(w, xi);
   // Penalty contact and links switch on and off: near the limit they chatter and create
   // energy, so they get half of it (the modal transient's rule).
   const bool switching = b_->links || (b_->contact && b_->contact->method().stiffness() > 0);
@@ -283,7 +282,7 @@ void ImplicitTransient::setupExplicit(const Model& model) {
     throwInput(inputFile_, path("Time Step"), shortNumber(dt),
                "exceeds the stable step of central differences, " + shortNumber(limit) + " s (" +
                    (switching ? "half " : "") + "the critical step " + shortNumber(b_->criticalStep) +
-                   " s: highest frequency at most " + shortNumber(b_->omegaMax) +
+                   " s: highest frequency at most " + shortNumber(b_->bound.omegaMax) +
                    " rad/s with the mesh, penalty contact and links" +
                    (switching ? "; penalty contact and links chatter above half of it" : "") + ")",
                "use a time step at most " + shortNumber(limit) + " s, or 'Stability Check' = 'substep'");
@@ -359,7 +358,7 @@ void ImplicitTransient::describe(Model& model, const StructuralOperator& op) con
     log() << format("  critical step %.4e s (highest frequency at most %.4e rad/s: mesh, penalty contact, "
                     "links; element bound %.4e, Gershgorin's %.4e); dt = %.4e s: %d sub-step(s) per "
                     "step\n",
-                    b_->criticalStep, b_->omegaMax, b_->bound.element, b_->bound.gershgorin,
+                    b_->criticalStep, b_->bound.omegaMax, b_->bound.element, b_->bound.gershgorin,
                     s_.time.timeStep, b_->substeps);
   log() << "  dt = " << s_.time.timeStep << " s to " << s_.time.endTime << " s; Rayleigh C = "
         << s_.rayleighK << " K + " << s_.rayleighM << " M; "

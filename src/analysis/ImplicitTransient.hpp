@@ -67,8 +67,8 @@ class ImplicitTransient : public Analysis {
     // Explicit scheme: 1 / M_ii, the bound of the highest frequency, the critical step and the
     // sub-steps per step.
     RCP<Vector> inverseMass;
-    double omegaMax = 0, criticalStep = 0;
-    FrequencyBound bound;  // both bounds of the highest frequency (omegaMax the smaller)
+    FrequencyBound bound;  // the bounds of the highest frequency
+    double criticalStep = 0;
     int substeps = 1;
   };
   void readScheme();

@@ -92,27 +92,33 @@ void redistributeElementMass(const std::vector<Point3>& x, const std::vector<cha
       for (int b = 0; b < n; ++b) Me(a, a) += out(a, b);
 }
 
+void Assembler::forEachElement(const std::function<void(const LocalElement&)>& fn) const {
+  LocalElement el;
+  for (int ge : elements_) {
+    auto [b, e] = mesh_.locateElement(ge);
+    const ElementBlock& blk = mesh_.blocks[b];
+    el.physics = &blocks_[b];
+    el.conn = &blk.connectivity[size_t(e) * blk.nodesPerElement];
+    const auto& comps = el.physics->kernel->components();
+    const int nc = static_cast<int>(comps.size());
+    el.x.resize(blk.nodesPerElement);
+    el.gdof.assign(size_t(blk.nodesPerElement) * nc, -1);
+    for (int k = 0; k < blk.nodesPerElement; ++k) {
+      el.x[k] = mesh_.coords[el.conn[k]];
+      for (int j = 0; j < nc; ++j) el.gdof[k * nc + j] = dofs_.dof(el.conn[k], comps[j]);
+    }
+    fn(el);
+  }
+}
+
 RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs) const {
   const int owned = dofs_.numOwned();
   const long long first = dofs_.firstOwned();
   std::vector<std::vector<std::pair<GO, double>>> rows(owned);
-  std::vector<Point3> x;
-  std::vector<long long> gdof;
   DenseMatrix Ke;
-  for (int ge : elements_) {
-    auto [b, e] = mesh_.locateElement(ge);
-    const ElementBlock& blk = mesh_.blocks[b];
-    const ElementKernel& kernel = *blocks_[b].kernel;
-    const int* conn = &blk.connectivity[size_t(e) * blk.nodesPerElement];
-    const auto& comps = kernel.components();
-    const int nc = static_cast<int>(comps.size());
-    x.resize(blk.nodesPerElement);
-    gdof.assign(size_t(blk.nodesPerElement) * nc, -1);
-    for (int k = 0; k < blk.nodesPerElement; ++k) {
-      x[k] = mesh_.coords[conn[k]];
-      for (int j = 0; j < nc; ++j) gdof[k * nc + j] = dofs_.dof(conn[k], comps[j]);
-    }
-    fn(kernel, blocks_[b].mass, x, conn, Ke);
+  forEachElement([&](const LocalElement& el) {
+    fn(*el.physics->kernel, el.physics->mass, el.x, el.conn, Ke);
+    const std::vector<long long>& gdof = el.gdof;
     const int n = static_cast<int>(gdof.size());
     for (int i = 0; i < n; ++i) {
       const long long gi = gdof[i];
@@ -121,7 +127,7 @@ RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<
       for (int j = 0; j < n; ++j)
         if (gdof[j] >= 0 && Ke(i, j) != 0.0) row.emplace_back(GO(gdof[j]), Ke(i, j));
     }
-  }
+  });
   for (const NodalSpring& sp : springs)
     for (int i = 0; i < 3; ++i) {
       const long long gi = dofs_.dof(sp.node, i);

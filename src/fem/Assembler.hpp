@@ -72,6 +72,16 @@ class Assembler {
   using ElementMatrixFn = std::function<void(const ElementKernel&, MassKind, const std::vector<Point3>&,
                                              const int* conn, DenseMatrix&)>;
   RCP<CrsMatrix> assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs = {}) const;
+  // One element this rank computes: its block's physics, nodes, coordinates and the global DOF
+  // of each (node, component) in element order (-1: fixed or not carried).
+  struct LocalElement {
+    const BlockPhysics* physics = nullptr;
+    const int* conn = nullptr;
+    std::vector<Point3> x;
+    std::vector<long long> gdof;
+  };
+  // Calls fn for every element this rank computes, in global order (one LocalElement reused).
+  void forEachElement(const std::function<void(const LocalElement&)>& fn) const;
 
   const Mesh& mesh_;
   const DofMap& dofs_;

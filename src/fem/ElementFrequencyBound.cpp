@@ -1,10 +1,15 @@
 #include "fem/ElementFrequencyBound.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_LAPACK.hpp>
+
+#include "fem/Assembler.hpp"
 
 namespace choc {
 
@@ -43,17 +48,6 @@ double elementEigenvalue(const DenseMatrix& K, const DenseMatrix& M, const std::
   return w[n - 1];
 }
 
-}  // namespace choc
-
-#include <algorithm>
-#include <map>
-
-#include <Teuchos_CommHelpers.hpp>
-
-#include "fem/Assembler.hpp"
-
-namespace choc {
-
 double Assembler::eigenvalueBound(const std::vector<NodalSpring>& springs) const {
   const double inf = std::numeric_limits<double>::infinity();
   double elements = 0.0;
@@ -62,35 +56,23 @@ double Assembler::eigenvalueBound(const std::vector<NodalSpring>& springs) const
     if (dofs_.ownsNode(sp.node))
       for (int c = 0; c < 3; ++c)
         if (dofs_.dof(sp.node, c) >= 0) nodalMass[dofs_.dof(sp.node, c)] = 0.0;
-  std::vector<Point3> x;
   std::vector<char> active;
   DenseMatrix Ke, Me;
-  for (int ge : elements_) {
-    auto [b, e] = mesh_.locateElement(ge);
-    const ElementBlock& blk = mesh_.blocks[b];
-    const ElementKernel& kernel = *blocks_[b].kernel;
-    if (blocks_[b].mass != MassKind::Lumped) {
+  forEachElement([&](const LocalElement& el) {
+    if (el.physics->mass != MassKind::Lumped) {
       elements = inf;
-      break;
+      return;
     }
-    const int* conn = &blk.connectivity[size_t(e) * blk.nodesPerElement];
-    const auto& comps = kernel.components();
-    const int nc = static_cast<int>(comps.size());
-    x.resize(blk.nodesPerElement);
-    active.assign(size_t(blk.nodesPerElement) * nc, 0);
-    for (int k = 0; k < blk.nodesPerElement; ++k) {
-      x[k] = mesh_.coords[conn[k]];
-      for (int j = 0; j < nc; ++j) active[k * nc + j] = dofs_.dof(conn[k], comps[j]) >= 0;
-    }
-    kernel.stiffness(x, Ke);
-    kernel.mass(x, MassKind::Lumped, Me);
+    active.resize(el.gdof.size());
+    for (size_t i = 0; i < el.gdof.size(); ++i) active[i] = el.gdof[i] >= 0;
+    el.physics->kernel->stiffness(el.x, Ke);
+    el.physics->kernel->mass(el.x, MassKind::Lumped, Me);
     elements = std::max(elements, elementEigenvalue(Ke, Me, active));
-    for (int k = 0; k < blk.nodesPerElement; ++k)
-      for (int j = 0; j < nc; ++j) {
-        auto it = nodalMass.find(dofs_.dof(conn[k], comps[j]));
-        if (it != nodalMass.end() && active[k * nc + j]) it->second += Me(k * nc + j, k * nc + j);
-      }
-  }
+    for (size_t i = 0; i < el.gdof.size(); ++i) {
+      auto it = nodalMass.find(el.gdof[i]);
+      if (it != nodalMass.end()) it->second += Me(int(i), int(i));
+    }
+  });
   // Gershgorin on the springs alone: row i of sum_s k_s d d^T scaled by the lumped masses.
   std::map<long long, double> rows;
   for (const NodalSpring& sp : springs) {

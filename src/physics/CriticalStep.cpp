@@ -111,7 +111,6 @@ FrequencyBound omegaMaxBound(const CrsMatrix& K, const Vector& massDiagonal, con
   FrequencyBound f;
   f.gershgorin = std::sqrt(all[0]);
   f.element = std::sqrt(meshBound + all[1]);
-  f.elementBound = f.element < f.gershgorin;
   f.omegaMax = std::min(f.element, f.gershgorin);
   return f;
 }

@@ -25,7 +25,6 @@ struct FrequencyBound {
   double omegaMax = 0.0;      // rad/s: the smaller of the two below
   double gershgorin = 0.0;    // rad/s: Gershgorin's bound of the whole
   double element = 0.0;       // rad/s: sqrt(meshBound + the couplings' Gershgorin bound)
-  bool elementBound = false;  // the element bound was the smaller one
 };
 FrequencyBound omegaMaxBound(const CrsMatrix& K, const Vector& massDiagonal, const ContactManager* contact,
                              double contactStiffness, const DirectLinks* links,

@@ -18,6 +18,7 @@
 #include "fem/Components.hpp"
 #include "fem/ElementFrequencyBound.hpp"
 #include "fem/Hex8Element.hpp"
+#include "fem/MatrixOps.hpp"
 #include "mesh/BarImpactMesh.hpp"
 #include "test_fem_helpers.hpp"
 
@@ -114,13 +115,10 @@ Scene bar(int n, int across, bool axial, double jitter) {
 DenseMatrix dense(const CrsMatrix& A) {
   const int n = static_cast<int>(A.getGlobalNumRows());
   DenseMatrix D(n, n);
+  RowCopy row;
   for (int i = 0; i < n; ++i) {
-    const size_t m = A.getNumEntriesInGlobalRow(i);
-    CrsMatrix::nonconst_global_inds_host_view_type cols("cols", m);
-    CrsMatrix::nonconst_values_host_view_type vals("vals", m);
-    size_t got = 0;
-    A.getGlobalRowCopy(i, cols, vals, got);
-    for (size_t k = 0; k < got; ++k) D(i, int(cols[k])) += vals[k];
+    row.read(A, GO(i));
+    for (size_t k = 0; k < row.size; ++k) D(i, int(row.cols[k])) += row.vals[k];
   }
   return D;
 }
@@ -169,7 +167,9 @@ TEST(ElementFrequencyBound, BoundsTheAssembledEigenvaluesOfDistortedMeshes) {
                   across, jitter, bound / lambda, gersh / lambda);
       // On a regular mesh tighter than Gershgorin's (on a distorted one either may be the
       // smaller: the critical step takes the smaller of the two).
-      if (jitter == 0.0) EXPECT_LT(bound, gersh);
+      if (jitter == 0.0) {
+        EXPECT_LT(bound, gersh);
+      }
     }
 }
 
