@@ -66,6 +66,7 @@ study: build
 	$(PYTHON) tools/modal_direct_study.py --build $(BUILD) --out results/study/modal-direct
 	$(PYTHON) tools/sdnd100_study.py --build $(BUILD) --out results/study/sdnd100
 	$(PYTHON) tools/sdnv100_explicit_study.py --build $(BUILD) --out results/study/sdnv100-explicit
+	$(PYTHON) tools/hertz_3d_study.py --build $(BUILD) --out results/study/hertz-3d
 
 # A ~1M-unknown TET10 gmsh mesh read, partitioned and assembled on 2 ranks (time, memory per phase).
 bench-mesh: build

@@ -42,3 +42,5 @@ gmsh -3 -format msh41 "$here/patch_test.geo" -o "$here/patch_test.msh" > /dev/nu
 # SDNV104 (issue 15): the pad on the frame in plane strain, QUAD4 and QUAD8.
 gmsh -2 -format msh41 "$here/sdnv104.geo" -o "$here/sdnv104_quad4.msh" > /dev/null
 gmsh -2 -order 2 -format msh41 "$here/sdnv104.geo" -o "$here/sdnv104_quad8.msh" > /dev/null
+# Hertz in 3D (issue 14): the quarter sphere in TET10, 0.1 mm near the first point of contact.
+gmsh -3 -order 2 -format msh41 "$here/hertz_quarter.geo" -o "$here/hertz_quarter.msh" > /dev/null

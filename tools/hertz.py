@@ -2,7 +2,7 @@
 """Hertz impact (BENCHMARKS section 2): a run of input/hertz.xml against Hertz's closed form.
 
 usage: tools/hertz.py RUN_DIR [--analysis NAME ...] [--tolerance T] [--rebound-tolerance V]
-                      [--energy-tolerance E] [--plot FILE.png]
+                      [--energy-tolerance E] [--fraction F] [--plot FILE.png]
        tools/hertz.py --static RUN_DIR   (input/hertz_static.xml's run)
 
 Hertz (quasi-static elastic sphere on a rigid plane): E* = E/(1 - nu^2), m = rho 4 pi R^3/3,
@@ -17,7 +17,10 @@ when the force, duration or approach differ by more than T, the rebound velocity
 V (default 0.02), or the balance exceeds E (default 1e-3) times E0. T defaults to a/R at
 Hertz's peak (0.081): Hertz's half-space theory leaves out terms of that order for a finite
 sphere (the far-field compliance of the sphere is not the half-space's), which the static
-press measures. --plot draws the force histories over Hertz's curve.
+press measures. --fraction F: the model holds the fraction F of the sphere (0.25 for the
+quarter of input/hertz_3d.xml, cut by two symmetry planes), so its force, impulse, mass and
+energy are F times the whole sphere's; the force is divided by F before it is compared.
+--plot draws the force histories over Hertz's curve.
 
 --static: the force of the plane pressing the lower half sphere (rising at 0.1 m/s) against
 Hertz's law F = (4/3) E* sqrt(R) d^(3/2) at the plane's travel d; prints F / F_Hertz with
@@ -61,11 +64,11 @@ def hertz_curve(h, dt=1e-9):
     return np.array(ts), np.array(fs)
 
 
-def measure(path, h):
+def measure(path, h, fraction=1.0):
     d = np.genfromtxt(path, delimiter=",", names=True)
     t = d["time"]
     fcol = [c for c in d.dtype.names if c.endswith("force")][0]
-    f = d[fcol]
+    f = d[fcol] / fraction
     on = np.nonzero(f > 0)[0]
     impulse = float(np.sum(0.5 * (f[1:] + f[:-1]) * np.diff(t)))
     e0 = d["energytotal"][0]
@@ -103,6 +106,7 @@ def main():
     ap.add_argument("--tolerance", type=float)
     ap.add_argument("--rebound-tolerance", type=float, default=0.02)
     ap.add_argument("--energy-tolerance", type=float, default=1e-3)
+    ap.add_argument("--fraction", type=float, default=1.0)
     ap.add_argument("--static", action="store_true")
     ap.add_argument("--plot")
     a = ap.parse_args()
@@ -115,7 +119,7 @@ def main():
           f"t_c {h['tc'] * 1e6:.2f} us, m {h['m'] * 1e3:.4f} g")
     failures, runs = [], {}
     for name in a.analysis:
-        m = measure(os.path.join(a.run_dir, f"{name}.history.csv"), h)
+        m = measure(os.path.join(a.run_dir, f"{name}.history.csv"), h, a.fraction)
         runs[name] = m
         for q, value in m.items():
             if q.startswith("_"):
@@ -137,7 +141,7 @@ def main():
             else:
                 f = rows[0].split(",")
                 impulse, velocity = float(f[7]), float(f[8])
-                ref = 2 * h["m"] * V
+                ref = 2 * h["m"] * V * a.fraction
                 print(f"{name:14s} {'impulse':18s} {impulse:12.6g}  2 m V {ref:12.6g}  "
                       f"{100 * (impulse / ref - 1):+6.3f}%; impact velocity {velocity:+.6g} m/s")
                 if not abs(impulse / ref - 1) <= 5e-3:
