@@ -60,7 +60,7 @@ def run(choc, xml, np_, out):
         sys.exit("bench_explicit: np = %d failed (exit %d):\n%s" % (np_, p.returncode, log[-3000:]))
     analysis = float(re.search(r"done in ([0-9.e+-]+) s", log).group(1))
     steps, sub = map(int, re.search(r"(\d+) steps of (\d+) sub-step", log).groups())
-    unknowns = int(re.search(r"(\d+) unknowns;", log).group(1))
+    unknowns = int(re.search(r"(\d+) unknowns( \(\+ \d+ contact pressures\))?;", log).group(1))
     mem = re.search(r"peak resident per rank \[MiB\]: ([^;]+);.*?(\d+) bytes per unknown", log)
     return analysis, steps * sub, unknowns, mem.group(1).strip(), int(mem.group(2))
 

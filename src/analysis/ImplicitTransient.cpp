@@ -121,7 +121,9 @@ ImplicitTransient::ImplicitTransient(const std::string& name, const Teuchos::Par
                  "the tangent of a sliding node is not symmetric, which CG cannot solve",
                  "use 'Linear Solver/Method' = Direct or GMRES with friction");
   }
-  if (s_.contact.hasMultipliers() && params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
+  // (Central differences make no linear solve: their forward increments need no solver.)
+  if (!s_.explicitScheme && s_.contact.hasMultipliers() &&
+      params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
     throwInput(inputFile_, path("Linear Solver/Method"), "CG",
                "the saddle-point system of contact method '" + s_.contact.method + "' is indefinite",
                "use Direct, GMRES or MINRES (or the Penalty method with CG)");

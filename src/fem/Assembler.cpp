@@ -1,10 +1,12 @@
 #include "fem/Assembler.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <utility>
 
+#include <Tpetra_CrsGraph.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 
@@ -111,61 +113,112 @@ void Assembler::forEachElement(const std::function<void(const LocalElement&)>& f
   }
 }
 
+namespace {
+
+using Graph = Tpetra::CrsGraph<LO, GO>;
+// forEachRow(visit): calls visit(owned row) with the batch of one element's (or spring's)
+// nonzero columns on that row in `cols`.
+using RowVisitor = std::function<void(const std::function<void(int)>&)>;
+
+// Sorts a row's column ids and removes the repeated ones.
+template <class Index>
+void compactPattern(std::vector<Index>& row) {
+  std::sort(row.begin(), row.end());
+  row.erase(std::unique(row.begin(), row.end()), row.end());
+}
+
+// Appends a batch of columns to a row, compacting it first when it is full, so that its
+// capacity stays within about 1.5 times its distinct columns plus a batch.
+template <class Index>
+void appendPattern(std::vector<Index>& row, const std::vector<GO>& batch) {
+  if (row.size() + batch.size() > row.capacity()) {
+    compactPattern(row);
+    const size_t need = row.size() + batch.size();
+    if (need > row.capacity() * 2 / 3) row.reserve(need + need / 2);
+  }
+  for (GO c : batch) row.push_back(Index(c));
+}
+
+// The graph of the owned rows [first, first + owned): pass 1 over the elements. Index holds a
+// column id while the pattern is gathered (32 bits when every id fits: half the memory).
+template <class Index>
+RCP<Graph> patternGraph(const RCP<const Map>& map, long long first, int owned, const RowVisitor& forEachRow,
+                        const std::vector<GO>& cols) {
+  std::vector<std::vector<Index>> pattern(owned);
+  forEachRow([&](int r) { appendPattern(pattern[r], cols); });
+  std::vector<size_t> counts(owned);
+  for (int r = 0; r < owned; ++r) {
+    compactPattern(pattern[r]);
+    if (pattern[r].empty()) pattern[r].push_back(Index(first + r));  // keep the diagonal present
+    counts[r] = pattern[r].size();
+  }
+  RCP<Graph> graph = rcp(new Graph(map, Teuchos::ArrayView<const size_t>(counts)));
+  std::vector<GO> row;
+  for (int r = 0; r < owned; ++r) {
+    row.assign(pattern[r].begin(), pattern[r].end());
+    graph->insertGlobalIndices(GO(first + r), Teuchos::ArrayView<const GO>(row));
+    std::vector<Index>().swap(pattern[r]);
+  }
+  graph->fillComplete(map, map);
+  return graph;
+}
+
+}  // namespace
+
+// Two passes over the elements, so that no element's entries are stored before they are summed
+// (storing them took 16 bytes per element entry, about 3 times the matrix): the first finds
+// each owned row's nonzero columns and makes the graph, the second sums the element matrices
+// into the matrix on that graph. An entry is present when some element (or spring) gives it a
+// nonzero value, and its value is the sum of those values in element order, then springs: the
+// same graph and bits as summing a stored list.
 RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs) const {
   const int owned = dofs_.numOwned();
   const long long first = dofs_.firstOwned();
-  std::vector<std::vector<std::pair<GO, double>>> rows(owned);
   DenseMatrix Ke;
-  forEachElement([&](const LocalElement& el) {
-    fn(*el.physics->kernel, el.physics->mass, el.x, el.conn, Ke);
-    const std::vector<long long>& gdof = el.gdof;
-    const int n = static_cast<int>(gdof.size());
-    for (int i = 0; i < n; ++i) {
-      const long long gi = gdof[i];
-      if (gi < first || gi >= first + owned) continue;
-      auto& row = rows[gi - first];
-      for (int j = 0; j < n; ++j)
-        if (gdof[j] >= 0 && Ke(i, j) != 0.0) row.emplace_back(GO(gdof[j]), Ke(i, j));
-    }
-  });
-  for (const NodalSpring& sp : springs)
-    for (int i = 0; i < 3; ++i) {
-      const long long gi = dofs_.dof(sp.node, i);
-      if (gi < first || gi >= first + owned) continue;
-      for (int j = 0; j < 3; ++j) {
-        const long long gj = dofs_.dof(sp.node, j);
-        const double kij = sp.stiffness * sp.direction[i] * sp.direction[j];
-        if (gj >= 0 && kij != 0.0) rows[gi - first].emplace_back(GO(gj), kij);
-      }
-    }
-  // Combine duplicates; stable sort keeps element order, so sums do not depend on ranks.
-  std::vector<size_t> counts(owned);
-  for (int r = 0; r < owned; ++r) {
-    auto& row = rows[r];
-    std::stable_sort(row.begin(), row.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    size_t w = 0;
-    for (size_t i = 0; i < row.size(); ++i) {
-      if (w > 0 && row[w - 1].first == row[i].first) row[w - 1].second += row[i].second;
-      else row[w++] = row[i];
-    }
-    row.resize(w);
-    if (row.empty()) row.emplace_back(GO(first + r), 0.0);  // keep the diagonal present
-    counts[r] = row.size();
-  }
-  RCP<CrsMatrix> A = rcp(new CrsMatrix(map_, Teuchos::ArrayView<const size_t>(counts)));
   std::vector<GO> cols;
   std::vector<double> vals;
-  for (int r = 0; r < owned; ++r) {
-    cols.clear();
-    vals.clear();
-    for (const auto& [c, v] : rows[r]) {
-      cols.push_back(c);
-      vals.push_back(v);
-    }
-    A->insertGlobalValues(GO(first + r), Teuchos::ArrayView<const GO>(cols),
-                          Teuchos::ArrayView<const double>(vals));
-  }
+  const RowVisitor forEachRow = [&](const std::function<void(int)>& visit) {
+    forEachElement([&](const LocalElement& el) {
+      fn(*el.physics->kernel, el.physics->mass, el.x, el.conn, Ke);
+      const std::vector<long long>& gdof = el.gdof;
+      const int n = static_cast<int>(gdof.size());
+      for (int i = 0; i < n; ++i) {
+        const long long gi = gdof[i];
+        if (gi < first || gi >= first + owned) continue;
+        cols.clear();
+        vals.clear();
+        for (int j = 0; j < n; ++j)
+          if (gdof[j] >= 0 && Ke(i, j) != 0.0) cols.push_back(GO(gdof[j])), vals.push_back(Ke(i, j));
+        if (!cols.empty()) visit(int(gi - first));
+      }
+    });
+    for (const NodalSpring& sp : springs)
+      for (int i = 0; i < 3; ++i) {
+        const long long gi = dofs_.dof(sp.node, i);
+        if (gi < first || gi >= first + owned) continue;
+        cols.clear();
+        vals.clear();
+        for (int j = 0; j < 3; ++j) {
+          const long long gj = dofs_.dof(sp.node, j);
+          const double kij = sp.stiffness * sp.direction[i] * sp.direction[j];
+          if (gj >= 0 && kij != 0.0) cols.push_back(GO(gj)), vals.push_back(kij);
+        }
+        if (!cols.empty()) visit(int(gi - first));
+      }
+  };
+  const bool narrow = dofs_.numGlobal() <= (long long)std::numeric_limits<std::uint32_t>::max();
+  RCP<Graph> graph = narrow ? patternGraph<std::uint32_t>(map_, first, owned, forEachRow, cols)
+                            : patternGraph<GO>(map_, first, owned, forEachRow, cols);
+  // Pass 2: the values on the graph, summed in element order.
+  RCP<CrsMatrix> A = rcp(new CrsMatrix(graph));
+  A->setAllToScalar(0.0);
+  size_t missing = 0;
+  forEachRow([&](int r) {
+    const LO found = A->sumIntoGlobalValues(GO(first + r), Teuchos::ArrayView<const GO>(cols),
+                                            Teuchos::ArrayView<const double>(vals));
+    missing += cols.size() - size_t(found);
+  });
+  if (missing != 0) throw std::logic_error("assembly: " + std::to_string(missing) + " entries outside the pattern");
   A->fillComplete(map_, map_);
   return A;
 }
