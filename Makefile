@@ -34,7 +34,8 @@ test: build
 bench: build
 	$(PYTHON) tools/bench_scale.py --build $(BUILD) --sizes $(BENCH_ARGS)
 	$(PYTHON) tools/bench_modal_direct.py --build $(BUILD)
-	$(PYTHON) tools/bench_explicit.py --build $(BUILD)
+	$(PYTHON) tools/bench_explicit.py --build $(BUILD) --end-time 2e-5
+	$(PYTHON) tools/bench_explicit.py --build $(BUILD) --end-time 2e-5 --mesh 18 560 --ranks 2 --contact lagrange
 
 # SDND100's friction: stick stiffness and dt against the rows and the exact motion.
 study-friction: build
@@ -44,9 +45,11 @@ study-friction: build
 study-modal-direct: build
 	$(PYTHON) tools/modal_direct_study.py --build $(BUILD)
 
-# Explicit central differences on the scale scene (issue 17), np = 1 and 2.
+# Explicit central differences on the scale scene (issue 17), np = 1 and 2, penalty and Lagrange
+# contact; then the 1.2M-unknown scene (18 x 18 x 560 HEX8 per bar) on 2 ranks.
 bench-explicit: build
-	$(PYTHON) tools/bench_explicit.py --build $(BUILD)
+	$(PYTHON) tools/bench_explicit.py --build $(BUILD) --end-time 2e-5
+	$(PYTHON) tools/bench_explicit.py --build $(BUILD) --end-time 2e-5 --mesh 18 560 --ranks 2 --contact lagrange
 
 # choc against CalculiX on the same deck (issue 17): installs calculix-ccx, then runs both on
 # SDNL111's bars in 3D at growing sizes (tools/peer_calculix.py; PEER_ARGS, e.g. --sizes 3x100).

@@ -161,6 +161,9 @@ choc_cli_reference_error(obstacle_zero_radius bad_obstacle_zero_radius.xml
   "parameter 'Analyses/impact/Contact/Pairs/interface/Obstacle/Radius' = '0': the sphere's radius must be > 0. give the radius \\[m\\]")
 choc_cli_reference_error(cg_with_contact_multipliers bad_cg_multiplier.xml
   "parameter 'Analyses/impact/Linear Solver/Method' = 'CG': the saddle-point system of contact method 'Lagrange' is indefinite. use Direct, GMRES or MINRES")
+# ... but central differences make no linear solve: the same input by them is valid.
+choc_cli_test(explicit_lagrange_with_cg RC 0 STDOUT "explicit_lagrange_cg.xml is valid"
+              ARGS check ${CLI_INPUTS}/explicit_lagrange_cg.xml)
 
 # --- the command line -------------------------------------------------------------------
 choc_cli_command_error(mesh_zero_length
