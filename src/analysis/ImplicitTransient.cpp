@@ -17,6 +17,7 @@
 #include "input/ParameterSpec.hpp"
 #include "output/InteractionList.hpp"
 #include "physics/CriticalStep.hpp"
+#include "solvers/SolverChoice.hpp"
 #include "timeint/ExplicitDriver.hpp"
 #include "timeint/ModalIntegrator.hpp"
 
@@ -292,8 +293,30 @@ void ImplicitTransient::setupExplicit(const Model& model) {
 }
 
 void ImplicitTransient::buildSolver() {
+  Teuchos::ParameterList lp = params_.sublist("Linear Solver");
+  if (lp.get<std::string>("Method") == "auto" && !s_.explicitScheme) {
+    SolverRegime r;
+    r.unknowns = (long long)b_->K->getGlobalNumRows();
+    if (b_->contact && b_->contact->method().hasMultipliers())
+      r.notSymmetricBecause = "contact method '" + s_.contact.method + "' has multipliers";
+    else if (b_->contact && b_->contact->hasFriction())
+      r.notSymmetricBecause = "contact friction";
+    else if (b_->links)
+      r.notSymmetricBecause = "shock links";
+    r.symmetricPositive = r.notSymmetricBecause.empty();
+    if (r.unknowns > kAlwaysDirectUpTo && r.symmetricPositive) {
+      const EffectiveCoefficients c = s_.scheme.effectiveCoefficients(s_.time.timeStep);
+      // W = ca M + cv C + cd K with C = aK K + aM M: the stiffness and mass parts of W.
+      r.stiffnessToMass = stiffnessToMassRatio(*b_->K, *b_->M, c.ca + c.cv * s_.rayleighM,
+                                               c.cd + c.cv * s_.rayleighK);
+    }
+    const SolverChoice choice = chooseLinearSolver(r);
+    lp.set("Method", choice.method);
+    if (!choice.preconditioner.empty()) lp.set("Preconditioner", choice.preconditioner);
+    b_->solverChoice = "'auto': " + choice.reason;
+  }
   try {
-    b_->solver = makeLinearSolver(params_.sublist("Linear Solver"));
+    b_->solver = makeLinearSolver(lp);
   } catch (const InputError& e) {
     throwInput(inputFile_, path("Linear Solver"), "", e.what());
   }
@@ -365,6 +388,7 @@ void ImplicitTransient::describe(Model& model, const StructuralOperator& op) con
   log() << "  dt = " << s_.time.timeStep << " s to " << s_.time.endTime << " s; Rayleigh C = "
         << s_.rayleighK << " K + " << s_.rayleighM << " M; "
         << (s_.explicitScheme ? std::string("no linear solve") : "linear solver " + op.solver().description())
+        << (s_.explicitScheme || b_->solverChoice.empty() ? std::string() : " (" + b_->solverChoice + ")")
         << "\n";
   if (b_->masslessNodes > 0) {
     // 1^T M 1 over the free DOFs (the mass summed over the free directions), before and after.

@@ -54,6 +54,7 @@ class ImplicitTransient : public Analysis {
   // What setup builds for the run.
   struct Built {
     RCP<const CrsMatrix> K, M;
+    std::string solverChoice;  // the 'auto' linear solver's reason, for the log
     std::shared_ptr<const Loads> loads;
     std::unique_ptr<ContactManager> contact;
     std::unique_ptr<DirectLinks> links;  // null: no shock links

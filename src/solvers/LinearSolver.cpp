@@ -11,8 +11,13 @@ namespace choc {
 
 Teuchos::ParameterList linearSolverParameters() {
   Teuchos::ParameterList p;
-  declareChoice(p, "Method", "Direct", {"Direct", "CG", "GMRES", "MINRES"},
-                "Direct: Amesos2 sparse LU; CG/GMRES/MINRES: Belos Krylov solvers");
+  declareChoice(p, "Method", "auto", {"auto", "Direct", "CG", "GMRES", "MINRES"},
+                "Direct: Amesos2 sparse LU; CG/GMRES/MINRES: Belos Krylov solvers; auto (transient; "
+                "it also picks the preconditioner): Direct up to 5,000 unknowns or when the matrix "
+                "is not symmetric positive definite (contact multipliers, friction, links); else CG "
+                "+ Jacobi when the Newton matrix is mass-dominated (largest row ratio of stiffness "
+                "to mass <= 100), Direct up to 100,000 unknowns, CG + Additive Schwarz beyond; the "
+                "log states the choice (src/solvers/SolverChoice.hpp)");
   declareChoice(p, "Direct Package", "KLU2", {"KLU2", "Basker", "SuperLU", "Umfpack"},
                 "Amesos2 package for Method = Direct");
   declareChoice(p, "Preconditioner", "RILUK", {"None", "RILUK", "ILUT", "Jacobi", "Gauss-Seidel", "Additive Schwarz"},
@@ -32,7 +37,7 @@ Teuchos::ParameterList linearSolverParameters() {
 
 std::unique_ptr<LinearSolver> makeLinearSolver(const Teuchos::ParameterList& params) {
   const std::string method = params.get<std::string>("Method");
-  if (method == "Direct")
+  if (method == "Direct" || method == "auto")  // 'auto' unresolved (no regime known): Direct
     return makeDirectSolver(params.get<std::string>("Direct Package"),
                             std::max(params.get<double>("Tolerance"), 1e-8));
   return makeIterativeSolver(params);

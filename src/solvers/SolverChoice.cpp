@@ -1,0 +1,63 @@
+#include "solvers/SolverChoice.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+
+#include "fem/MatrixOps.hpp"
+
+namespace choc {
+
+namespace {
+
+// sum_j |A_ij| of each local row.
+std::vector<double> absoluteRowSums(const CrsMatrix& A) {
+  auto rowMap = A.getRowMap();
+  std::vector<double> sums(rowMap->getNodeNumElements(), 0.0);
+  RowCopy row;
+  for (size_t i = 0; i < sums.size(); ++i) {
+    row.read(A, rowMap->getGlobalElement(LO(i)));
+    for (size_t k = 0; k < row.size; ++k) sums[i] += std::abs(row.vals[k]);
+  }
+  return sums;
+}
+
+std::string withCommas(long long n) {
+  std::string s = std::to_string(n);
+  for (int i = int(s.size()) - 3; i > 0; i -= 3) s.insert(size_t(i), ",");
+  return s;
+}
+
+}  // namespace
+
+SolverChoice chooseLinearSolver(const SolverRegime& r) {
+  const std::string size = withCommas(r.unknowns) + " unknowns";
+  if (r.unknowns <= kAlwaysDirectUpTo) return {"Direct", "", size + ", at most " + withCommas(kAlwaysDirectUpTo)};
+  if (!r.symmetricPositive)
+    return {"Direct", "", size + "; the matrix is not symmetric positive definite (" + r.notSymmetricBecause + ")"};
+  char theta[64];
+  std::snprintf(theta, sizeof theta, "%.3g", r.stiffnessToMass);
+  const std::string limit = std::to_string(int(kJacobiUpTo));
+  if (r.stiffnessToMass <= kJacobiUpTo)
+    return {"CG", "Jacobi", size + ", symmetric, mass-dominated: stiffness/mass " + theta + " <= " + limit};
+  const std::string stiff = size + ", symmetric, stiffness-dominated: stiffness/mass " + theta + " > " + limit;
+  if (r.unknowns <= kDirectUpTo) return {"Direct", "", stiff + ", at most " + withCommas(kDirectUpTo) + " unknowns"};
+  return {"CG", "Additive Schwarz", stiff + ", more than " + withCommas(kDirectUpTo) + " unknowns"};
+}
+
+double stiffnessToMassRatio(const CrsMatrix& K, const CrsMatrix& M, double mCoef, double kCoef) {
+  const std::vector<double> k = absoluteRowSums(K), m = absoluteRowSums(M);
+  double mine = 0.0;
+  for (size_t i = 0; i < k.size() && i < m.size(); ++i) {
+    if (k[i] == 0.0) continue;
+    const double mass = mCoef * m[i];
+    mine = std::max(mine, mass > 0 ? kCoef * k[i] / mass : std::numeric_limits<double>::infinity());
+  }
+  double all = 0.0;
+  Teuchos::reduceAll<int, double>(*K.getRowMap()->getComm(), Teuchos::REDUCE_MAX, mine, Teuchos::outArg(all));
+  return all;
+}
+
+}  // namespace choc

@@ -1,0 +1,75 @@
+// The 'auto' linear solver's choice (src/solvers/SolverChoice.hpp): each rule on both sides of
+// its threshold, and the stiffness-to-mass ratio of small matrices against hand computation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Teuchos_DefaultComm.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+
+#include "solvers/SolverChoice.hpp"
+
+namespace choc {
+namespace {
+
+SolverRegime regime(long long n, double theta, const std::string& notSpd = "") {
+  SolverRegime r;
+  r.unknowns = n;
+  r.stiffnessToMass = theta;
+  r.notSymmetricBecause = notSpd;
+  r.symmetricPositive = notSpd.empty();
+  return r;
+}
+
+TEST(SolverChoice, SmallProblemsAreDirect) {
+  EXPECT_EQ(chooseLinearSolver(regime(kAlwaysDirectUpTo, 1.0)).method, "Direct");
+  const SolverChoice c = chooseLinearSolver(regime(kAlwaysDirectUpTo + 1, 1.0));
+  EXPECT_EQ(c.method, "CG");
+  EXPECT_EQ(c.preconditioner, "Jacobi");
+  EXPECT_NE(c.reason.find("mass-dominated"), std::string::npos) << c.reason;
+}
+
+TEST(SolverChoice, MatricesThatAreNotSpdAreDirectAtAnySize) {
+  const SolverChoice c = chooseLinearSolver(regime(10 * kDirectUpTo, 1.0, "contact method 'Lagrange' has multipliers"));
+  EXPECT_EQ(c.method, "Direct");
+  EXPECT_NE(c.reason.find("multipliers"), std::string::npos) << c.reason;
+}
+
+TEST(SolverChoice, StiffnessDominatedIsDirectThenSchwarz) {
+  EXPECT_EQ(chooseLinearSolver(regime(50000, kJacobiUpTo)).preconditioner, "Jacobi");
+  EXPECT_EQ(chooseLinearSolver(regime(50000, 1.01 * kJacobiUpTo)).method, "Direct");
+  EXPECT_EQ(chooseLinearSolver(regime(kDirectUpTo, 1e6)).method, "Direct");
+  const SolverChoice c = chooseLinearSolver(regime(kDirectUpTo + 1, 1e6));
+  EXPECT_EQ(c.method, "CG");
+  EXPECT_EQ(c.preconditioner, "Additive Schwarz");
+  // A row without mass (theta = +inf) is stiffness-dominated.
+  EXPECT_EQ(chooseLinearSolver(regime(kDirectUpTo + 1, INFINITY)).preconditioner, "Additive Schwarz");
+}
+
+// A 3-row chain, K = k [1 -1 0; -1 2 -1; 0 -1 1], and a diagonal mass.
+RCP<CrsMatrix> matrix(const std::vector<std::vector<double>>& a) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto map = rcp(new Map(a.size(), 0, comm));
+  auto A = rcp(new CrsMatrix(map, 3));
+  for (size_t i = 0; i < a.size(); ++i)
+    if (map->isNodeGlobalElement(GO(i)))
+      for (size_t j = 0; j < a.size(); ++j)
+        if (a[i][j] != 0.0) A->insertGlobalValues(GO(i), Teuchos::tuple<GO>(GO(j)), Teuchos::tuple<double>(a[i][j]));
+  A->fillComplete();
+  return A;
+}
+
+TEST(SolverChoice, StiffnessToMassRatioIsTheLargestRowRatio) {
+  const double k = 3e8, m = 2.0;
+  auto K = matrix({{k, -k, 0}, {-k, 2 * k, -k}, {0, -k, k}});
+  // Row sums of |K|: 2k, 4k, 2k; masses m, m, 4m: the middle row holds the largest ratio.
+  auto M = matrix({{m, 0, 0}, {0, m, 0}, {0, 0, 4 * m}});
+  const double mCoef = 4e12, kCoef = 0.3;
+  EXPECT_DOUBLE_EQ(stiffnessToMassRatio(*K, *M, mCoef, kCoef), kCoef * 4 * k / (mCoef * m));
+  // A massless row with stiffness: +inf.
+  auto M0 = matrix({{m, 0, 0}, {0, 0, 0}, {0, 0, m}});
+  EXPECT_TRUE(std::isinf(stiffnessToMassRatio(*K, *M0, mCoef, kCoef)));
+}
+
+}  // namespace
+}  // namespace choc
