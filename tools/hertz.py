@@ -82,6 +82,25 @@ def measure(path, h, fraction=1.0):
     }
 
 
+def plot_forces(h, curves, path, ylabel="contact force [kN]"):
+    """Plots each measured force history (label -> measure()) over Hertz's curve into path."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    ht, hf = hertz_curve(h)
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ax.plot(ht * 1e6, hf / 1e3, "k--", label="Hertz (quasi-static)")
+    for label, m in curves.items():
+        ax.plot(m["_t"] * 1e6, m["_f"] / 1e3, label=label)
+    ax.set_xlabel("time [us]")
+    ax.set_ylabel(ylabel)
+    ax.set_xlim(0, 1.2 * h["tc"] * 1e6)
+    ax.legend()
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
 def static_press(run_dir, h, speed=0.1):
     d = np.genfromtxt(os.path.join(run_dir, "press.history.csv"), delimiter=",", names=True)
     worst = 0.0
@@ -152,21 +171,7 @@ def main():
         if not m["_balance"] <= a.energy_tolerance:
             failures.append(f"{name} energy balance {100 * m['_balance']:+.4f}% of E0")
     if a.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        ht, hf = hertz_curve(h)
-        fig, ax = plt.subplots(figsize=(7, 4))
-        ax.plot(ht * 1e6, hf / 1e3, "k--", label="Hertz (quasi-static)")
-        for name, m in runs.items():
-            ax.plot(m["_t"] * 1e6, m["_f"] / 1e3, label=f"choc, {name}")
-        ax.set_xlabel("time [us]")
-        ax.set_ylabel("contact force [kN]")
-        ax.set_xlim(0, 1.2 * h["tc"] * 1e6)
-        ax.legend()
-        ax.grid(alpha=0.3)
-        fig.tight_layout()
-        fig.savefig(a.plot, dpi=110)
+        plot_forces(h, {f"choc, {name}": m for name, m in runs.items()}, a.plot)
     if failures:
         sys.exit("hertz: outside the tolerances: " + "; ".join(failures))
 

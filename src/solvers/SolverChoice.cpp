@@ -1,11 +1,11 @@
 #include "solvers/SolverChoice.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 
+#include "core/Format.hpp"
 #include "fem/MatrixOps.hpp"
 
 namespace choc {
@@ -35,10 +35,9 @@ std::string withCommas(long long n) {
 SolverChoice chooseLinearSolver(const SolverRegime& r) {
   const std::string size = withCommas(r.unknowns) + " unknowns";
   if (r.unknowns <= kAlwaysDirectUpTo) return {"Direct", "", size + ", at most " + withCommas(kAlwaysDirectUpTo)};
-  if (!r.symmetricPositive)
+  if (!r.symmetricPositive())
     return {"Direct", "", size + "; the matrix is not symmetric positive definite (" + r.notSymmetricBecause + ")"};
-  char theta[64];
-  std::snprintf(theta, sizeof theta, "%.3g", r.stiffnessToMass);
+  const std::string theta = format("%.3g", r.stiffnessToMass);
   const std::string limit = std::to_string(int(kJacobiUpTo));
   if (r.stiffnessToMass <= kJacobiUpTo)
     return {"CG", "Jacobi", size + ", symmetric, mass-dominated: stiffness/mass " + theta + " <= " + limit};

@@ -17,7 +17,6 @@ SolverRegime regime(long long n, double theta, const std::string& notSpd = "") {
   r.unknowns = n;
   r.stiffnessToMass = theta;
   r.notSymmetricBecause = notSpd;
-  r.symmetricPositive = notSpd.empty();
   return r;
 }
 
