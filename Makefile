@@ -30,9 +30,11 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 
 # The scale benchmark: input/scale-3d.xml (300,300 unknowns) on 1 and 2 MPI ranks, then smaller
-# sizes of the same scene (README "Scale"); generates meshes/scale_3d.exo when missing.
+# sizes of the same scene (README "Scale"); generates meshes/scale_3d.exo when missing. Then the
+# same input with the linear solver 'auto' (CG + Jacobi, adaptive tolerance), best of 3.
 bench: build
 	$(PYTHON) tools/bench_scale.py --build $(BUILD) --sizes $(BENCH_ARGS)
+	$(PYTHON) tools/bench_scale.py --build $(BUILD) --solver auto --repeat 3
 	$(PYTHON) tools/bench_modal_direct.py --build $(BUILD)
 	$(PYTHON) tools/bench_explicit.py --build $(BUILD) --end-time 2e-5
 	$(PYTHON) tools/bench_explicit.py --build $(BUILD) --end-time 2e-5 --mesh 18 560 --ranks 2 --contact lagrange

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Scale benchmark (`make bench`): input/scale-3d.xml on 1 and 2 MPI ranks.
 
-usage: tools/bench_scale.py [--build DIR] [--sizes] [--end-time T] [--repeat N]
+usage: tools/bench_scale.py [--build DIR] [--sizes] [--end-time T] [--repeat N] [--solver input|auto]
 
 Generates meshes/scale_3d.exo (tools/make-scale-mesh.sh) when missing, runs the input with
 np = 1 and np = 2 (mpirun --allow-run-as-root --oversubscribe), and prints, per run: the
@@ -11,7 +11,10 @@ stacked timer), Krylov iterations per step, the peak resident memory of every ra
 unknown, the speed-up and the parallel efficiency, and the load average before the run
 (other processes on the machine distort the figures: read them next to it).
 --sizes also runs smaller meshes (same scene, 20 steps) for the growth of time per step and
-memory with the unknowns. --repeat N keeps the best of N runs for each np.
+memory with the unknowns. --repeat N keeps the best of N runs for each np. --solver auto
+drops the input's 'Method' and 'Preconditioner' (CG + Additive Schwarz), so that the default
+linear solver 'auto' chooses (CG + Jacobi here, mass-dominated) with the default adaptive
+linear tolerance, and compares its np = 1 histories with one run of the input as written.
 """
 import argparse
 import os
@@ -87,6 +90,7 @@ def main():
     ap.add_argument("--sizes", action="store_true")
     ap.add_argument("--end-time", default="")
     ap.add_argument("--repeat", type=int, default=1)
+    ap.add_argument("--solver", choices=("input", "auto"), default="input")
     a = ap.parse_args()
     choc = os.path.join(os.path.abspath(a.build), "choc")
     subprocess.run([os.path.join(TOP, "tools", "make-scale-mesh.sh"), choc], check=True)
@@ -95,11 +99,21 @@ def main():
     print(f"machine: {os.cpu_count()} cores, {open('/proc/cpuinfo').read().split('model name')[1].split(':')[1].splitlines()[0].strip()}")
     rows = []
     src = xml
-    if a.end_time:
+    title = "input/scale-3d.xml"
+    if a.end_time or a.solver == "auto":
         src = os.path.join(tmp, "scale-3d.xml")
         txt = open(xml).read().replace("../meshes/scale_3d.exo", os.path.join(TOP, "meshes", "scale_3d.exo"))
-        txt = re.sub(r'(name="End Time" type="double" value=")[^"]*', r"\g<1>" + a.end_time, txt)
+        if a.end_time:
+            txt = re.sub(r'(name="End Time" type="double" value=")[^"]*', r"\g<1>" + a.end_time, txt)
         open(src, "w").write(txt)
+        if a.solver == "auto":
+            asWritten = src
+            src = os.path.join(tmp, "scale-3d-auto.xml")
+            auto = txt.replace('<Parameter name="Method" type="string" value="CG"/>', "")
+            auto = auto.replace('<Parameter name="Preconditioner" type="string" value="Additive Schwarz"/>', "")
+            assert 'value="CG"' not in auto and "Additive Schwarz\"" not in auto
+            open(src, "w").write(auto)
+            title = "input/scale-3d.xml with the linear solver 'auto'"
     for np_ in (1, 2):
         best = None
         for _ in range(a.repeat):
@@ -107,7 +121,8 @@ def main():
             if best is None or r["analysis"] < best["analysis"]:
                 best = r
         rows.append(best)
-    table(rows, "input/scale-3d.xml")
+    table(rows, title)
+    print("linear solver:", re.search(r"linear solver (.*)", rows[0]["log"]).group(1))
     # np = 2 against np = 1.
     cmp = subprocess.run([sys.executable, os.path.join(TOP, "tools", "compare_histories.py"),
                           os.path.join(tmp, "np1", "impact.history.csv"),
@@ -115,6 +130,15 @@ def main():
                          capture_output=True, text=True)
     print("np = 2 vs np = 1 histories (max |diff| / peak):")
     print(cmp.stdout.rstrip())
+    if a.solver == "auto":
+        ref = run(choc, asWritten, 1, os.path.join(tmp, "as_written"))
+        table([ref], "input/scale-3d.xml as written (one run)")
+        cmp = subprocess.run([sys.executable, os.path.join(TOP, "tools", "compare_histories.py"),
+                              os.path.join(tmp, "as_written", "impact.history.csv"),
+                              os.path.join(tmp, "np1", "impact.history.csv"), "--rtol-peak", "1e-6"],
+                             capture_output=True, text=True)
+        print("'auto' vs the input as written, np = 1 (max |diff| / peak):")
+        print(cmp.stdout.rstrip())
     if a.sizes:
         srows = []
         for across, along in ((3, 250), (5, 300), (7, 400)):

@@ -37,6 +37,11 @@ void declareNewton(ParameterList& nw) {
                 "residual alone, saving the solve that only confirms a small increment; 'auto' "
                 "the residual alone in the passes that are linear (no friction, no shock links: "
                 "one correction per step while the contact status holds) and both otherwise");
+  declareChoice(nw, "Linear Tolerance", "adaptive", {"adaptive", "fixed"},
+                "how far an iterative linear solver (CG, GMRES, MINRES) takes each correction: "
+                "'adaptive' until its residual is a tenth of what the residual test allows (never "
+                "tighter than 'Linear Solver/Tolerance'; the Newton tests are unchanged); 'fixed' "
+                "always to 'Linear Solver/Tolerance'. A direct solver is exact either way");
 }
 
 }  // namespace
@@ -164,6 +169,7 @@ void ImplicitTransient::readTimeSettings() {
   ts.newton.convergence = convergence == "residual"                 ? Convergence::Residual
                           : convergence == "residual and increment" ? Convergence::ResidualAndIncrement
                                                                     : Convergence::Auto;
+  ts.newton.adaptiveLinearTolerance = nw.get<std::string>("Linear Tolerance") == "adaptive";
   ts.maxCuts = params_.sublist("Step Control").get<int>("Maximum Step Cuts");
   ts.cutFactor = params_.sublist("Step Control").get<double>("Cut Factor");
 }

@@ -38,6 +38,7 @@ class StructuralOperator : public SecondOrderOperator {
   double addConstraintForces(const Vector& u, const Vector& v, Vector& out) override;
   CorrectionStatus solveCorrection(const EffectiveCoefficients& c, const Vector& u,
                                    const Vector& r, Vector& du) override;
+  void relaxNextCorrection(double relative) override { nextLooser_ = relative; }
   // With massless DOFs (rows of M that are zero: redistributed contact mass) the initial
   // acceleration is solved by blocks; see the .cpp. Otherwise the default (W = M).
   CorrectionStatus solveInitialAcceleration(const Vector& u, const Vector& r, Vector& a) override;
@@ -92,6 +93,11 @@ class StructuralOperator : public SecondOrderOperator {
   int systemTopology_ = 0;
   bool forwardIncrement_ = false;  // the contact manager's topologyVersion() the graph was built for
   RCP<Vector> tmp_, energyTmp_;
+  // K u of the last applyForces and that u: the strain energy of the state a step ended at
+  // (whose forces the step's last residual computed) costs no second product with K.
+  RCP<Vector> lastU_, lastKu_;
+  bool haveLastKu_ = false;
+  double nextLooser_ = 0.0;  // relaxNextCorrection's tolerance, for one correction
   RCP<MultiVector> rhs_, x_;
   std::vector<char> massless_;  // per local DOF: its row of M is zero
   long long masslessGlobal_ = 0;

@@ -1,5 +1,6 @@
 #include "solvers/IterativeSolver.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <BelosLinearProblem.hpp>
@@ -66,13 +67,14 @@ class BelosSolver : public LinearSolver {
     problem_->setOperator(A_);
     if (!prec_.is_null()) problem_->setRightPrec(prec_);
     if (solver_.is_null()) {
-      auto params = rcp(new Teuchos::ParameterList);
-      params->set("Convergence Tolerance", tol_);
-      params->set("Maximum Iterations", maxIters_);
-      if (method_ == "GMRES") params->set("Num Blocks", std::min(maxIters_, 300));
+      params_ = rcp(new Teuchos::ParameterList);
+      params_->set("Convergence Tolerance", tol_);
+      params_->set("Maximum Iterations", maxIters_);
+      if (method_ == "GMRES") params_->set("Num Blocks", std::min(maxIters_, 300));
       Belos::SolverFactory<double, MultiVector, Operator> factory;
       solver_ = factory.create(method_ == "CG" ? "PSEUDOBLOCK CG"
-                               : method_ == "MINRES" ? "MINRES" : "PSEUDOBLOCK GMRES", params);
+                               : method_ == "MINRES" ? "MINRES" : "PSEUDOBLOCK GMRES", params_);
+      activeTol_ = tol_;
     }
     solver_->setProblem(problem_);
     ++factorizations_;
@@ -83,6 +85,12 @@ class BelosSolver : public LinearSolver {
     if (!problem_->setProblem(Teuchos::rcpFromRef(x), Teuchos::rcpFromRef(b))) {
       st.message = "Belos could not set up the linear problem";
       return st;
+    }
+    const double tol = std::max(tol_, looser_);
+    if (tol != activeTol_) {  // the whole list again: some managers reset what it leaves out
+      params_->set("Convergence Tolerance", tol);
+      solver_->setParameters(params_);
+      activeTol_ = tol;
     }
     solver_->reset(Belos::Problem);
     Belos::ReturnType ret;
@@ -96,7 +104,7 @@ class BelosSolver : public LinearSolver {
     st.relativeResidual = relativeResidual(*A_, b, x);
     // Belos' own test is on the preconditioned residual: confirm with the true one.
     st.converged = ret == Belos::Converged && std::isfinite(st.relativeResidual) &&
-                   st.relativeResidual <= 10.0 * tol_;
+                   st.relativeResidual <= 10.0 * tol;
     if (!st.converged)
       st.message = "Belos " + method_ + " did not converge in " + std::to_string(st.iterations) +
                    " iterations (true relative residual " + std::to_string(st.relativeResidual) + ")";
@@ -107,8 +115,9 @@ class BelosSolver : public LinearSolver {
 
  private:
   std::string method_, precType_;
-  double tol_;
+  double tol_, activeTol_ = 0.0;
   int maxIters_, overlap_;
+  RCP<Teuchos::ParameterList> params_;
   RCP<const CrsMatrix> A_;
   RCP<Preconditioner> prec_;
   RCP<Belos::LinearProblem<double, MultiVector, Operator>> problem_;

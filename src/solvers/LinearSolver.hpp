@@ -28,9 +28,14 @@ class LinearSolver {
   virtual LinearSolveStatus solve(const MultiVector& b, MultiVector& x) = 0;
   virtual std::string description() const = 0;
   int factorizations() const { return factorizations_; }
+  // For the following solves: an iterative solver may stop once the relative residual is at
+  // most max(its Tolerance, looser) (inexact Newton: no solve more exact than the Newton test
+  // needs); a direct solver ignores it. 0 restores the Tolerance.
+  void relaxTolerance(double looser) { looser_ = looser; }
 
  protected:
   int factorizations_ = 0;
+  double looser_ = 0.0;
 };
 
 // The valid "Linear Solver" sublist.

@@ -50,6 +50,9 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
                       (state.empty() ? "" : "; " + state) + ")";
         return out;
       }
+      if (s.adaptiveLinearTolerance && n.residual > 0.0)
+        op.relaxNextCorrection(std::min(NewtonSettings::kMaxForcing,
+                                        NewtonSettings::kForcing * s.residualTolerance * n.reference / n.residual));
       const CorrectionStatus cs = op.solveCorrection(c, u, r, du);
       ++out.iterations;
       out.krylovIterations += cs.iterations;

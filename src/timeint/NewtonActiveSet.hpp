@@ -31,6 +31,12 @@ struct NewtonSettings {
   Convergence convergence = Convergence::ResidualAndIncrement;
   int maxIterations = 10;
   int maxActiveSetIterations = 20;
+  // Inexact Newton: each correction's iterative linear solve may stop once the linear residual
+  // is a tenth of what the residual test allows, kForcing * residualTolerance * reference (and
+  // at most a relative kMaxForcing of the Newton residual it starts from); the acceptance
+  // tests above are unchanged. Off: every solve to the linear solver's own tolerance.
+  bool adaptiveLinearTolerance = false;
+  static constexpr double kForcing = 0.1, kMaxForcing = 0.1;
 };
 
 struct NewtonOutcome {

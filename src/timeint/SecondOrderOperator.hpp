@@ -55,6 +55,10 @@ class SecondOrderOperator {
   // velocity follows u with dv/du = cv / cd.
   virtual CorrectionStatus solveCorrection(const EffectiveCoefficients& c, const Vector& u,
                                            const Vector& r, Vector& du) = 0;
+  // The next solveCorrection may stop an iterative linear solve once its relative residual is
+  // at most `relative` (inexact Newton; see NewtonSettings::adaptiveLinearTolerance). By
+  // default ignored: the operator solves exactly or to its own tolerance.
+  virtual void relaxNextCorrection(double /*relative*/) {}
   // Initial acceleration from equilibrium: solves M a = -r (r = F(u0, v0, t0) + f_c(u0)); by
   // default with W = M (plus the constraint block). An operator whose M is singular (massless
   // DOFs) overrides it.

@@ -2,9 +2,14 @@
 // k u + k3 u^3 = f: the 'residual and increment' test confirms a correction with a second
 // solve; 'residual' never does; 'auto' skips it exactly when the operator declares the pass
 // linear (SecondOrderOperator::linearWithinPass), so a nonlinear operator keeps the full test.
+// With the adaptive linear tolerance (inexact Newton), each correction asks the operator for a
+// solve only as exact as the residual test needs; the spring then solves to exactly that
+// relative residual, as a Krylov solver stopping there could.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Map.hpp>
@@ -31,19 +36,25 @@ class Spring : public SecondOrderOperator {
   CorrectionStatus solveCorrection(const EffectiveCoefficients& c, const Vector& u, const Vector& r,
                                    Vector& du) override {
     const double x = get(u);
-    set(du, -get(r) / (c.cd * (k_ + 3 * k3_ * x * x)));
+    // A solve to the relative residual asked (exact when none is): du = (1 - eta) du_exact.
+    set(du, -(1.0 - relax_) * get(r) / (c.cd * (k_ + 3 * k3_ * x * x)));
+    asked.push_back(relax_);
+    relax_ = 0.0;
     CorrectionStatus s;
     s.ok = true;
     return s;
   }
   ConstraintUpdate updateConstraints(const Vector&) override { return {}; }
   bool linearWithinPass() const override { return linear_; }
+  void relaxNextCorrection(double relative) override { relax_ = relative; }
+  std::vector<double> asked;  // the relative tolerance each correction was given (0: exact)
   static double get(const Vector& x) { return x.getData()[0]; }
   static void set(Vector& x, double v) { x.getDataNonConst()[0] = v; }
 
  private:
   double k_, k3_, f_;
   bool linear_;
+  double relax_ = 0.0;
   RCP<const Map> map_;
 };
 
@@ -52,9 +63,11 @@ struct Solved {
   double u = 0.0;
 };
 
-Solved solve(Spring& op, Convergence c) {
+Solved solve(Spring& op, Convergence c, bool adaptive = false, double tolerance = 1e-8) {
   NewtonSettings s;
   s.convergence = c;
+  s.adaptiveLinearTolerance = adaptive;
+  s.residualTolerance = tolerance;
   Vector u(op.map());
   Solved r;
   r.out = solveStatic(op, u, 0.0, s);
@@ -98,6 +111,45 @@ TEST(NewtonConvergence, AutoKeepsTheIncrementTestWhenThePassIsNonlinear) {
   // small: that is what the declaration promises to be safe, so it must be truthful.
   Spring lying(k, k3, f, true);
   EXPECT_EQ(solve(lying, Convergence::Auto).out.iterations, residual.out.iterations);
+}
+
+// A linear pass: the one correction is asked for a tenth of the residual test's allowance,
+// 0.1 * tol * reference / ||R|| (reference and ||R|| both f at the predictor u = 0), never a
+// relative residual above 0.1; it is accepted at once and its residual meets the test.
+TEST(NewtonConvergence, AdaptiveLinearToleranceAsksWhatTheResidualTestNeeds) {
+  const double k = 3e7, f = 1.2e4;
+  for (double tol : {1e-8, 1e-3, 10.0}) {
+    Spring op(k, 0.0, f, true);
+    const Solved s = solve(op, Convergence::Auto, true, tol);
+    ASSERT_TRUE(s.out.converged) << s.out.message;
+    EXPECT_EQ(s.out.iterations, 1);
+    ASSERT_EQ(op.asked.size(), 1u);
+    EXPECT_DOUBLE_EQ(op.asked[0], std::min(0.1, 0.1 * tol)) << tol;
+    EXPECT_LE(std::abs(k * s.u - f), (std::min(0.1, 0.1 * tol) + 1e-15) * f) << tol;  // + round-off of k u - f
+  }
+  // Off: every correction exact, nothing asked.
+  Spring fixed(k, 0.0, f, true);
+  ASSERT_TRUE(solve(fixed, Convergence::Auto, false).out.converged);
+  ASSERT_EQ(fixed.asked.size(), 1u);
+  EXPECT_EQ(fixed.asked[0], 0.0);
+}
+
+// A nonlinear pass with inexact corrections: the acceptance tests are unchanged (residual and
+// increment), so it converges to the same root within them, each correction asked for less as
+// the residual falls.
+TEST(NewtonConvergence, AdaptiveLinearToleranceKeepsTheTestsOfANonlinearPass) {
+  const double k = 1.0, k3 = 1.0, f = 2.0;  // solution u = 1
+  Spring op(k, k3, f, false);
+  const Solved s = solve(op, Convergence::Auto, true);
+  ASSERT_TRUE(s.out.converged) << s.out.message;
+  EXPECT_NEAR(s.u, 1.0, 1e-8);
+  EXPECT_LE(std::abs(k * s.u + k3 * s.u * s.u * s.u - f), 1e-8 * f);
+  ASSERT_GE(op.asked.size(), 2u);
+  for (size_t i = 0; i < op.asked.size(); ++i) {
+    EXPECT_GT(op.asked[i], 0.0);
+    EXPECT_LE(op.asked[i], 0.1);
+    if (i > 0) EXPECT_GE(op.asked[i], op.asked[i - 1]);  // a smaller residual asks for less
+  }
 }
 
 }  // namespace
