@@ -72,6 +72,7 @@ study: build
 	$(PYTHON) tools/sdnd100_study.py --build $(BUILD) --out results/study/sdnd100
 	$(PYTHON) tools/sdnv100_explicit_study.py --build $(BUILD) --out results/study/sdnv100-explicit
 	$(PYTHON) tools/hertz_3d_study.py --build $(BUILD) --out results/study/hertz-3d
+	$(PYTHON) tools/explicit_implicit_study.py --build $(BUILD) --out results/study/explicit-implicit
 
 # A ~1M-unknown TET10 gmsh mesh read, partitioned and assembled on 2 ranks (time, memory per phase).
 bench-mesh: build

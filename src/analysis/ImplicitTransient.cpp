@@ -449,9 +449,13 @@ void ImplicitTransient::recordFigures(const TransientSummary& sum, const Structu
 void ImplicitTransient::logFigures(const TransientSummary& sum, const Model& model,
                                    Teuchos::StackedTimer& timer) const {
   const Figures& f = figures_;
-  if (s_.explicitScheme)
-    log() << format("  %d steps of %d sub-step(s) (%.3e s each), no linear solve\n", sum.steps, b_->substeps,
-                    sum.smallestStep);
+  if (s_.explicitScheme) {
+    const double each = s_.time.timeStep / b_->substeps;  // the last step may be cut to End Time
+    const std::string last = sum.smallestStep < each * (1 - 1e-9)
+                                 ? format("; the last step's %.3e s", sum.smallestStep) : std::string();
+    log() << format("  %d steps of %d sub-step(s) (%.3e s each%s), no linear solve\n", sum.steps,
+                    b_->substeps, each, last.c_str());
+  }
   else
     log() << format("  %d steps, %d Newton iterations (%.2f per step, at most %d), %d active-set "
                     "passes, %d factorisations, %d failed attempts (smallest dt %.3e s)\n",
