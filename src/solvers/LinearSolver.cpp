@@ -16,8 +16,9 @@ Teuchos::ParameterList linearSolverParameters() {
                 "it also picks the preconditioner): Direct up to 5,000 unknowns or when the matrix "
                 "is not symmetric positive definite (contact multipliers, friction, links); else CG "
                 "+ Jacobi when the Newton matrix is mass-dominated (largest row ratio of stiffness "
-                "to mass <= 100), Direct up to 100,000 unknowns, CG + Additive Schwarz beyond; the "
-                "log states the choice (src/solvers/SolverChoice.hpp)");
+                "to mass <= 100), Direct up to 100,000 unknowns, beyond CG + Jacobi up to a ratio "
+                "of 10,000 and CG + Additive Schwarz above; the log states the choice "
+                "(src/solvers/SolverChoice.hpp)");
   declareChoice(p, "Direct Package", "KLU2", {"KLU2", "Basker", "SuperLU", "Umfpack"},
                 "Amesos2 package for Method = Direct");
   declareChoice(p, "Preconditioner", "RILUK", {"None", "RILUK", "ILUT", "Jacobi", "Gauss-Seidel", "Additive Schwarz"},

@@ -6,12 +6,16 @@
 //   - symmetric and mass-dominated (theta <= kJacobiUpTo, theta the largest ratio of a row's
 //     stiffness to its mass in the Newton matrix): CG + Jacobi, whose iterations are bounded by
 //     the condition number of D^-1 W, at most about 1 + theta;
-//   - symmetric and stiffness-dominated: Direct up to kDirectUpTo unknowns, then CG + Additive
-//     Schwarz (ILU(0) per rank).
+//   - symmetric and stiffness-dominated: Direct up to kDirectUpTo unknowns; beyond, CG + Jacobi
+//     while theta <= kLargeJacobiUpTo, then CG + Additive Schwarz (ILU(0) per rank).
 // Measured on the scale scene's bars (README "Linear solver `auto`"): at dt = 1e-6 s (theta 1.6 to 22)
 // CG + Jacobi takes 0.4, 0.28, 0.22 and 0.11 of Direct's time at 9,648, 22,575, 43,308 and
 // 134,592 unknowns and 0.55 of CG + Additive Schwarz's at 300,300; at dt = 1e-5 s (43,308
-// unknowns) Direct takes 0.53 of Jacobi's time and 0.30 of Schwarz's.
+// unknowns) Direct takes 0.53 of Jacobi's time and 0.30 of Schwarz's. At 153,792 unknowns
+// (adaptive linear tolerance) CG + Jacobi takes 0.57 of Schwarz's solve time at theta 1,190
+// (dt = 1e-5 s) and 0.62 at theta 10,600 (dt = 3e-5 s, 427 iterations per solve); at theta
+// 119,000 (dt = 1e-4 s) it exceeds 1,000 iterations per solve where Schwarz takes 333. (MueLu's
+// smoothed aggregation with scalar aggregates, tried there, took 629 and longer than Schwarz.)
 #pragma once
 #include <limits>
 #include <string>
@@ -23,6 +27,7 @@ namespace choc {
 constexpr long long kAlwaysDirectUpTo = 5000;
 constexpr long long kDirectUpTo = 100000;
 constexpr double kJacobiUpTo = 100.0;
+constexpr double kLargeJacobiUpTo = 1e4;
 
 struct SolverRegime {
   long long unknowns = 0;             // global rows of K

@@ -34,10 +34,16 @@ TEST(SolverChoice, MatricesThatAreNotSpdAreDirectAtAnySize) {
   EXPECT_NE(c.reason.find("multipliers"), std::string::npos) << c.reason;
 }
 
-TEST(SolverChoice, StiffnessDominatedIsDirectThenSchwarz) {
+TEST(SolverChoice, StiffnessDominatedIsDirectThenJacobiThenSchwarz) {
   EXPECT_EQ(chooseLinearSolver(regime(50000, kJacobiUpTo)).preconditioner, "Jacobi");
   EXPECT_EQ(chooseLinearSolver(regime(50000, 1.01 * kJacobiUpTo)).method, "Direct");
   EXPECT_EQ(chooseLinearSolver(regime(kDirectUpTo, 1e6)).method, "Direct");
+  // Beyond Direct's size: Jacobi while theta <= kLargeJacobiUpTo, Schwarz above.
+  const SolverChoice j = chooseLinearSolver(regime(kDirectUpTo + 1, kLargeJacobiUpTo));
+  EXPECT_EQ(j.method, "CG");
+  EXPECT_EQ(j.preconditioner, "Jacobi");
+  EXPECT_NE(j.reason.find("<= 10,000"), std::string::npos) << j.reason;
+  EXPECT_EQ(chooseLinearSolver(regime(kDirectUpTo + 1, 1.01 * kLargeJacobiUpTo)).preconditioner, "Additive Schwarz");
   const SolverChoice c = chooseLinearSolver(regime(kDirectUpTo + 1, 1e6));
   EXPECT_EQ(c.method, "CG");
   EXPECT_EQ(c.preconditioner, "Additive Schwarz");
