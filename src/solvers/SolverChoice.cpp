@@ -43,9 +43,10 @@ SolverChoice chooseLinearSolver(const SolverRegime& r) {
     return {"CG", "Jacobi", size + ", symmetric, mass-dominated: stiffness/mass " + theta + " <= " + limit};
   const std::string stiff = size + ", symmetric, stiffness-dominated: stiffness/mass " + theta + " > " + limit;
   if (r.unknowns <= kDirectUpTo) return {"Direct", "", stiff + ", at most " + withCommas(kDirectUpTo) + " unknowns"};
-  const std::string large = stiff + ", more than " + withCommas(kDirectUpTo) + " unknowns";
-  if (r.stiffnessToMass <= kLargeJacobiUpTo) return {"CG", "Jacobi", large + ", stiffness/mass <= 10,000"};
-  return {"CG", "Additive Schwarz", large + ", stiffness/mass > 10,000"};
+  const std::string large = stiff + ", more than " + withCommas(kDirectUpTo) + " unknowns, stiffness/mass ";
+  const std::string largeLimit = withCommas((long long)kLargeJacobiUpTo);
+  if (r.stiffnessToMass <= kLargeJacobiUpTo) return {"CG", "Jacobi", large + "<= " + largeLimit};
+  return {"CG", "Additive Schwarz", large + "> " + largeLimit};
 }
 
 double stiffnessToMassRatio(const CrsMatrix& K, const CrsMatrix& M, double mCoef, double kCoef) {
