@@ -84,6 +84,17 @@ def table(rows, title):
           "each rank's process)")
 
 
+def compare(tmp, reference, other, title):
+    """Prints the largest difference of every history column of run `other` from `reference`
+    (directories under tmp), per column's peak (tools/compare_histories.py)."""
+    cmp = subprocess.run([sys.executable, os.path.join(TOP, "tools", "compare_histories.py"),
+                          os.path.join(tmp, reference, "impact.history.csv"),
+                          os.path.join(tmp, other, "impact.history.csv"), "--rtol-peak", "1e-6"],
+                         capture_output=True, text=True)
+    print(f"{title} (max |diff| / peak):")
+    print(cmp.stdout.rstrip())
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(TOP, "build"))
@@ -123,22 +134,11 @@ def main():
         rows.append(best)
     table(rows, title)
     print("linear solver:", re.search(r"linear solver (.*)", rows[0]["log"]).group(1))
-    # np = 2 against np = 1.
-    cmp = subprocess.run([sys.executable, os.path.join(TOP, "tools", "compare_histories.py"),
-                          os.path.join(tmp, "np1", "impact.history.csv"),
-                          os.path.join(tmp, "np2", "impact.history.csv"), "--rtol-peak", "1e-6"],
-                         capture_output=True, text=True)
-    print("np = 2 vs np = 1 histories (max |diff| / peak):")
-    print(cmp.stdout.rstrip())
+    compare(tmp, "np1", "np2", "np = 2 vs np = 1 histories")
     if a.solver == "auto":
         ref = run(choc, asWritten, 1, os.path.join(tmp, "as_written"))
         table([ref], "input/scale-3d.xml as written (one run)")
-        cmp = subprocess.run([sys.executable, os.path.join(TOP, "tools", "compare_histories.py"),
-                              os.path.join(tmp, "as_written", "impact.history.csv"),
-                              os.path.join(tmp, "np1", "impact.history.csv"), "--rtol-peak", "1e-6"],
-                             capture_output=True, text=True)
-        print("'auto' vs the input as written, np = 1 (max |diff| / peak):")
-        print(cmp.stdout.rstrip())
+        compare(tmp, "as_written", "np1", "'auto' vs the input as written, np = 1")
     if a.sizes:
         srows = []
         for across, along in ((3, 250), (5, 300), (7, 400)):

@@ -72,6 +72,23 @@ def run(choc, xml, outdir, repeat):
         float(sub.group(2)) if sub else None
 
 
+def measure(choc, out, scene, scheme, n, text, mesh, dt, h, c, quantities, repeat):
+    """Runs `text` (an input) on `mesh` with step dt (no Exodus output) and returns its row:
+    the max errors of `quantities` (the first is the row's error), the sub-step actually taken
+    and the Courant number c dt / h."""
+    text = sub1(r'(<Parameter name="File" type="string" value=")[^"]*"', rf'\g<1>{mesh}"', text)
+    text = set_param(set_param(text, "Time Step", repr(dt)), "Exodus Interval", "0")
+    tag = f"{scene.replace(' ', '').lower()}_{scheme.replace(', ', '_')}_{n}"
+    xml = os.path.join(out, tag + ".xml")
+    open(xml, "w").write(text)
+    err, wall, steps, substep = run(choc, xml, os.path.join(out, tag), repeat)
+    dt = substep or dt
+    print(f"  {scene} {scheme} n = {n}: {err[quantities[0]]:.3g} % in {wall:.2f} s", flush=True)
+    return {"scene": scene, "scheme": scheme, "along": n, "dt": dt, "courant": dt * c / h, "steps": steps,
+            "error": err[quantities[0]], "error_other": err[quantities[1]] if len(quantities) > 1 else "",
+            "wall": wall}
+
+
 def sdnv100(choc, out, repeat):
     C = 5000.0
     rows = []
@@ -89,18 +106,7 @@ def sdnv100(choc, out, repeat):
         h = 0.2 / n
         dt = 2e-5 / math.ceil(2e-5 / (courant * h / C) - 1e-9)
         text = {"explicit": explicit, "implicit": implicit, "implicit, trapezoidal": trapezoidal}[scheme]
-        text = sub1(r'(<Parameter name="File" type="string" value=")[^"]*"', rf'\g<1>{mesh}"', text)
-        text = set_param(text, "Time Step", repr(dt))
-        text = set_param(text, "Exodus Interval", "0")
-        tag = f"sdnv100_{scheme.replace(', ', '_')}_{n}"
-        xml = os.path.join(out, tag + ".xml")
-        open(xml, "w").write(text)
-        err, wall, steps, substep = run(choc, xml, os.path.join(out, tag), repeat)
-        dt = substep or dt
-        rows.append({"scene": "SDNV100", "scheme": scheme, "along": n, "dt": dt, "courant": dt * C / h,
-                     "steps": steps, "error": err["N5:DZ"], "error_other": err["N100:DZ"],
-                     "wall": wall})
-        print(f"  SDNV100 {scheme} n = {n}: {err['N5:DZ']:.3g} % in {wall:.2f} s", flush=True)
+        rows.append(measure(choc, out, "SDNV100", scheme, n, text, mesh, dt, h, C, ("N5:DZ", "N100:DZ"), repeat))
     return rows
 
 
@@ -108,13 +114,14 @@ def sdnl111d(choc, out, repeat):
     E, nu, rho = 2e11, 0.3, 7800.0
     C = math.sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) / rho)  # lateral motion blocked
     rows = []
-    lagrange = ('<Parameter name="Method" type="string" value="Lagrange"/>')
-    explicit = open(os.path.join(ROOT, "input", "sdnl111d_explicit.xml")).read()
-    explicit = sub1(r'<Parameter name="Method" type="string" value="Penalty"/>\s*'
-                    r'<Parameter name="Penalty Stiffness" type="double" value="[^"]*"/>', lagrange, explicit)
-    implicit = open(os.path.join(ROOT, "input", "sdnl111d.xml")).read()
-    implicit = sub1(r'<Parameter name="Method" type="string" value="Penalty"/>\s*'
-                    r'<Parameter name="Penalty Stiffness" type="double" value="[^"]*"/>', lagrange, implicit)
+
+    def lagrange(name):  # the input with Lagrange contact instead of its penalty
+        return sub1(r'<Parameter name="Method" type="string" value="Penalty"/>\s*'
+                    r'<Parameter name="Penalty Stiffness" type="double" value="[^"]*"/>',
+                    '<Parameter name="Method" type="string" value="Lagrange"/>',
+                    open(os.path.join(ROOT, "input", name)).read())
+    explicit = lagrange("sdnl111d_explicit.xml")
+    implicit = lagrange("sdnl111d.xml")
     # Lagrange contact at the default contact mass (the surfaces' mass redistributed).
     implicit = sub1(r'<Parameter name="Contact Mass" type="string" value="standard"/>', "", implicit)
     trapezoidal = set_param(implicit, "Alpha", "0")
@@ -129,19 +136,7 @@ def sdnl111d(choc, out, repeat):
             # Central differences' critical step is h / c here (the element bound, exact on a
             # regular bar): 0.95 of it, which the stability check accepts without sub-steps.
             dt = (0.95 if scheme == "explicit" else 1.0) * h / C
-            text = sub1(r'(<Parameter name="File" type="string" value=")[^"]*"', rf'\g<1>{mesh}"', text0)
-            text = set_param(text, "Time Step", repr(dt))
-            text = set_param(text, "Exodus Interval", "0") if 'name="Exodus Interval"' in text else \
-                text.replace('<Parameter name="History"', '<Parameter name="Exodus Interval" type="int" value="0"/>'
-                             '\n      <Parameter name="History"', 1)
-            tag = f"sdnl111d_{scheme.replace(', ', '_')}_{n}"
-            xml = os.path.join(out, tag + ".xml")
-            open(xml, "w").write(text)
-            err, wall, steps, substep = run(choc, xml, os.path.join(out, tag), repeat)
-            dt = substep or dt
-            rows.append({"scene": "SDNL111 D", "scheme": scheme, "along": n, "dt": dt, "courant": dt * C / h,
-                         "steps": steps, "error": err["N1:DZ"], "error_other": "", "wall": wall})
-            print(f"  SDNL111 D {scheme} n = {n}: {err['N1:DZ']:.3g} % in {wall:.2f} s", flush=True)
+            rows.append(measure(choc, out, "SDNL111 D", scheme, n, text0, mesh, dt, h, C, ("N1:DZ",), repeat))
     return rows
 
 
