@@ -26,6 +26,12 @@ class Loads {
   // A group with the ramp time of an earlier one is summed into it (one vector per ramp).
   void add(LoadGroup g);
   bool empty() const { return groups_.empty(); }
+  // Some group ramps: the loads depend on time.
+  bool ramped() const {
+    for (const LoadGroup& g : groups_)
+      if (g.rampTime > 0.0) return true;
+    return false;
+  }
   const std::vector<LoadGroup>& groups() const { return groups_; }
   // out -= f(t).
   void subtractFrom(double t, Vector& out) const;

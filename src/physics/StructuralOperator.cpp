@@ -16,12 +16,11 @@ StructuralOperator::StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatr
                                        ContactManager* contact, DirectLinks* links,
                                        std::unique_ptr<LinearSolver> solver, Teuchos::StackedTimer* timer)
     : K_(std::move(K)), M_(std::move(M)), aK_(rayleighK), aM_(rayleighM), loads_(std::move(loads)),
-      contact_(contact), links_(links), solver_(std::move(solver)), timer_(timer) {
+      contact_(contact), links_(links), solver_(std::move(solver)), timer_(timer),
+      ku_(K_->getRowMap()), kv_(K_->getRowMap()), mv_(K_->getRowMap()) {
 
   tmp_ = rcp(new Vector(K_->getRowMap()));
   energyTmp_ = rcp(new Vector(K_->getRowMap()));
-  lastU_ = rcp(new Vector(K_->getRowMap()));
-  lastKu_ = rcp(new Vector(K_->getRowMap()));
   // Massless DOFs: rows of M without a non-zero entry.
   const size_t nLocal = M_->getNodeNumRows();
   massless_.assign(nLocal, 0);
@@ -66,21 +65,13 @@ int StructuralOperator::unknowns() const {
 }
 
 double StructuralOperator::kineticEnergy(const Vector& v) const {
+  if (mv_.holds(v)) return 0.5 * v.dot(mv_.product());
   M_->apply(v, *energyTmp_);
   return 0.5 * v.dot(*energyTmp_);
 }
 
 double StructuralOperator::strainEnergy(const Vector& u) const {
-  if (haveLastKu_) {  // the same u as the last applyForces (on every rank): reuse its K u
-    int differs = 0;
-    {
-      auto a = u.getData(), b = lastU_->getData();
-      for (size_t i = 0; i < size_t(a.size()) && !differs; ++i) differs = a[i] != b[i];
-    }
-    int anyDiffers = 0;
-    Teuchos::reduceAll(*u.getMap()->getComm(), Teuchos::REDUCE_MAX, differs, Teuchos::outArg(anyDiffers));
-    if (!anyDiffers) return 0.5 * u.dot(*lastKu_);
-  }
+  if (ku_.holds(u)) return 0.5 * u.dot(ku_.product());
   K_->apply(u, *energyTmp_);
   return 0.5 * u.dot(*energyTmp_);
 }
@@ -89,6 +80,7 @@ double StructuralOperator::strainEnergy(const Vector& u) const {
 double StructuralOperator::dampingPower(const Vector& v, double kinetic) const {
   double power = aM_ * 2.0 * kinetic;
   if (aK_ != 0.0) {
+    if (kv_.holds(v)) return power + aK_ * v.dot(kv_.product());
     K_->apply(v, *energyTmp_);
     power += aK_ * v.dot(*energyTmp_);
   }
@@ -103,15 +95,15 @@ void StructuralOperator::applyMass(const Vector& a, Vector& out) {
 void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t, Vector& out) {
   TimerScope ts(timer_, "Transient: assembly");
   K_->apply(u, out);
-  lastU_->assign(u);
-  lastKu_->assign(out);
-  haveLastKu_ = true;
+  ku_.store(u, out);
   if (aK_ != 0.0) {
     K_->apply(v, *tmp_);
+    kv_.store(v, *tmp_);
     out.update(aK_, *tmp_, 1.0);
   }
   if (aM_ != 0.0) {
     M_->apply(v, *tmp_);
+    mv_.store(v, *tmp_);
     out.update(aM_, *tmp_, 1.0);
   }
   if (loads_) loads_->subtractFrom(t, out);
@@ -274,18 +266,21 @@ void StructuralOperator::beginStep(const Vector& u, double t, double dt) {
 }
 
 double StructuralOperator::elasticTermsNorm(const Vector& u) const {
-  Vector uc(K_->getColMap());
+  if (colTmp_.is_null()) colTmp_ = rcp(new Vector(K_->getColMap()));
+  Vector& uc = *colTmp_;
   auto importer = K_->getGraph()->getImporter();
   if (importer.is_null()) uc.assign(u);
   else uc.doImport(u, *importer, Tpetra::INSERT);
   auto ud = uc.getData();
-  Teuchos::ArrayView<const LO> idx;
-  Teuchos::ArrayView<const double> val;
+  // The local CRS arrays directly (a row view per row costs more than the row's arithmetic).
+  const auto A = K_->getLocalMatrixHost();
+  const auto& rows = A.graph.row_map;
+  const auto& cols = A.graph.entries;
+  const auto& vals = A.values;
   double local = 0.0;
-  for (size_t i = 0; i < K_->getNodeNumRows(); ++i) {
-    K_->getLocalRowView(LO(i), idx, val);
+  for (size_t i = 0; i + 1 < size_t(rows.extent(0)); ++i) {
     double row = 0.0;
-    for (LO k = 0; k < LO(idx.size()); ++k) row += std::abs(val[k]) * std::abs(ud[idx[k]]);
+    for (auto k = rows(i); k < rows(i + 1); ++k) row += std::abs(vals(k)) * std::abs(ud[cols(k)]);
     local += row * row;
   }
   double global = 0.0;

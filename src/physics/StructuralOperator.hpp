@@ -18,6 +18,7 @@
 #include "contact/ContactSystem.hpp"
 #include "physics/DirectLinks.hpp"
 #include "physics/Loads.hpp"
+#include "physics/ProductCache.hpp"
 #include "solvers/LinearSolver.hpp"
 #include "timeint/SecondOrderOperator.hpp"
 
@@ -51,6 +52,7 @@ class StructuralOperator : public SecondOrderOperator {
   void beginStep(const Vector& u, double t, double dt) override;
   void acceptStep(const Vector& u) override;
   double elasticTermsNorm(const Vector& u) const override;
+  bool forcesVaryInTime() const override { return loads_ && loads_->ramped(); }
   // Explicit runs with a multiplier method: contact by forward increments (ContactManager::
   // forwardIncrement) instead of forces and statuses.
   void setForwardIncrementContact(bool on) { forwardIncrement_ = on; }
@@ -93,10 +95,10 @@ class StructuralOperator : public SecondOrderOperator {
   int systemTopology_ = 0;
   bool forwardIncrement_ = false;  // the contact manager's topologyVersion() the graph was built for
   RCP<Vector> tmp_, energyTmp_;
-  // K u of the last applyForces and that u: the strain energy of the state a step ended at
-  // (whose forces the step's last residual computed) costs no second product with K.
-  RCP<Vector> lastU_, lastKu_;
-  bool haveLastKu_ = false;
+  mutable RCP<Vector> colTmp_;  // u on K's column map, for elasticTermsNorm
+  // K u, K v and M v of the last applyForces: the energies of the state a step ended at (whose
+  // forces the step's last residual computed) cost no second product with K or M.
+  ProductCache ku_, kv_, mv_;
   double nextLooser_ = 0.0;  // relaxNextCorrection's tolerance, for one correction
   RCP<MultiVector> rhs_, x_;
   std::vector<char> massless_;  // per local DOF: its row of M is zero

@@ -84,6 +84,9 @@ class SecondOrderOperator {
   // || |K| |u| ||: the size of the terms whose sum is the elastic force at u, for the
   // round-off floor of the residual (0 when not known).
   virtual double elasticTermsNorm(const Vector& /*u*/) const { return 0.0; }
+  // Whether applyForces depends on t (time-dependent loads). When not, a step's forces at its
+  // converged u are the next step's F_n without recomputing them.
+  virtual bool forcesVaryInTime() const { return true; }
   // A step was accepted at u (before saveState): state that accumulates over accepted steps.
   virtual void acceptStep(const Vector& /*u*/) {}
   // Is R(u) affine in u while the constraint status is frozen (linear elasticity, contact

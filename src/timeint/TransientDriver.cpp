@@ -15,7 +15,7 @@ TransientDriver::TransientDriver(SecondOrderOperator& op, NewmarkFamily scheme,
                                  TransientSettings settings)
     : op_(op), scheme_(std::move(scheme)), s_(std::move(settings)) {
   auto map = op_.map();
-  for (RCP<Vector>* v : {&u0_, &v0_, &a0_, &Ma0_, &F0_, &u1_, &v1_, &a1_, &uTilde_, &vTilde_,
+  for (RCP<Vector>* v : {&u0_, &v0_, &a0_, &Ma0_, &F0_, &Ma1_, &F1_, &u1_, &v1_, &a1_, &uTilde_, &vTilde_,
                          &inertia_, &forces_, &fc_, &change_})
     *v = rcp(new Vector(map));
 }
@@ -44,10 +44,18 @@ NewtonOutcome TransientDriver::attempt(double t, double dt) {
   auto residual = [&](const Vector& u, Vector& r) {
     a1_->update(1.0 / (beta * dt * dt), u, -1.0 / (beta * dt * dt), *uTilde_, 0.0);
     v1_->update(1.0, *vTilde_, gamma * dt, *a1_, 0.0);
+    // The unweighted M a_{n+1} and F_{n+1} are kept: the last residual of a converged step is
+    // evaluated at its u_{n+1}, so they become the next step's M a_n and F_n unrecomputed.
     op_.applyMass(*a1_, *inertia_);
-    inertia_->update(am, *Ma0_, 1 - am);
+    if (am != 0.0) {
+      Ma1_->assign(*inertia_);
+      inertia_->update(am, *Ma0_, 1 - am);
+    }
     op_.applyForces(u, *v1_, t1, *forces_);
-    forces_->update(af, *F0_, 1 - af);
+    if (af != 0.0) {
+      F1_->assign(*forces_);
+      forces_->update(af, *F0_, 1 - af);
+    }
     fc_->putScalar(0.0);
     const double cons = op_.addConstraintForces(u, *v1_, *fc_);
     ResidualNorms n;
@@ -131,8 +139,8 @@ TransientSummary TransientDriver::run(Vector& u, Vector& v, const Resume* resume
     initialState(sum);
     sum.smallestStep = dt;
   }
-  op_.applyMass(*a0_, *Ma0_);
-  op_.applyForces(*u0_, *v0_, t_, *F0_);
+  if (scheme_.alphaM() != 0.0) op_.applyMass(*a0_, *Ma0_);
+  if (scheme_.alphaF() != 0.0) op_.applyForces(*u0_, *v0_, t_, *F0_);
   info.time = t_;
   info.step = sum.steps;
   info.nominal = nominal_;
@@ -177,8 +185,11 @@ TransientSummary TransientDriver::run(Vector& u, Vector& v, const Resume* resume
       std::swap(a0_, a1_);
       op_.acceptStep(*u0_);
       op_.saveState();
-      op_.applyMass(*a0_, *Ma0_);
-      op_.applyForces(*u0_, *v0_, t, *F0_);
+      std::swap(Ma0_, Ma1_);  // M a and F of the converged u (zero-weighted when alpha is 0)
+      if (scheme_.alphaF() != 0.0 && op_.forcesVaryInTime())
+        op_.applyForces(*u0_, *v0_, t, *F0_);  // at t itself (t + h can differ by round-off)
+      else
+        std::swap(F0_, F1_);
       ++sum.steps;
       sum.maxNewtonPerStep = std::max(sum.maxNewtonPerStep, out.iterations);
       sum.smallestStep = std::min(sum.smallestStep, h);

@@ -118,7 +118,7 @@ class TransientDriver : public StepLoop {
   long long nominal_ = 0;   // nominal steps completed
   TransientSummary sum_;
   // State at t_n and its weighted terms, and the trial state at t_{n+1}.
-  RCP<Vector> u0_, v0_, a0_, Ma0_, F0_, u1_, v1_, a1_;
+  RCP<Vector> u0_, v0_, a0_, Ma0_, F0_, Ma1_, F1_, u1_, v1_, a1_;
   RCP<Vector> uTilde_, vTilde_, inertia_, forces_, fc_, change_;
 };
 
