@@ -9,6 +9,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 
+#include "contact/SystemGraph.hpp"
 #include "fem/MatrixOps.hpp"
 
 namespace choc {
@@ -40,81 +41,65 @@ ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, Con
     map_ = dofMap;
   }
 
-  // Graph: K and M patterns, then every contact coupling (sorted vectors, not sets: a
-  // 300,000-row system has 25 million entries).
-  std::vector<std::vector<GO>> cols(gids.size());
-  Teuchos::Array<GO> ci;
-  Teuchos::Array<double> cv;
-  for (size_t i = 0; i < nLocalDofs_; ++i) {
-    auto& row = cols[i];
-    for (const CrsMatrix* X : {K_.get(), M_.get()}) {
-      const size_t n = X->getNumEntriesInGlobalRow(gids[i]);
-      ci.resize(n);
-      cv.resize(n);
-      size_t got = 0;
-      X->getGlobalRowCopy(gids[i], ci(), cv(), got);
-      row.insert(row.end(), ci.begin(), ci.begin() + got);
-    }
-    row.push_back(gids[i]);
-  }
+  // Graph: K and M patterns and every row's diagonal (SystemGraph), then every contact
+  // coupling and the links' couplings.
+  std::map<LO, std::vector<GO>> extra;
   for (int s = 0; s < nS; ++s) {
     const auto& terms = contact_->constraints()[s].terms;
     for (const auto& [di, ciJ] : terms) {
       const LO l = dofMap->getLocalElement(di);
       if (l == Teuchos::OrdinalTraits<LO>::invalid()) continue;
-      for (const auto& t : terms) cols[l].push_back(t.first);
-      if (extended_) cols[l].push_back(nU + s);
+      for (const auto& t : terms) extra[l].push_back(t.first);
+      if (extended_) extra[l].push_back(nU + s);
       (void)ciJ;
     }
-    if (extended_ && rowOfConstraint_[s] >= 0) {
-      auto& row = cols[rowOfConstraint_[s]];
-      for (const auto& t : terms) row.push_back(t.first);
-      row.push_back(nU + s);
-    }
+    if (extended_ && rowOfConstraint_[s] >= 0)
+      for (const auto& t : terms) extra[rowOfConstraint_[s]].push_back(t.first);
   }
   for (const auto& group : couplings)
     for (GO di : group) {
       const LO l = dofMap->getLocalElement(di);
-      if (l != Teuchos::OrdinalTraits<LO>::invalid()) cols[l].insert(cols[l].end(), group.begin(), group.end());
+      if (l != Teuchos::OrdinalTraits<LO>::invalid()) extra[l].insert(extra[l].end(), group.begin(), group.end());
     }
-  std::vector<size_t> counts(gids.size());
-  for (size_t i = 0; i < gids.size(); ++i) {
-    auto& row = cols[i];
-    std::sort(row.begin(), row.end());
-    row.erase(std::unique(row.begin(), row.end()), row.end());
-    counts[i] = row.size();
-  }
-  auto graph = rcp(new Tpetra::CrsGraph<LO, GO>(map_, Teuchos::ArrayView<const size_t>(counts)));
-  for (size_t i = 0; i < gids.size(); ++i) {
-    graph->insertGlobalIndices(gids[i], Teuchos::ArrayView<const GO>(cols[i]));
-    std::vector<GO>().swap(cols[i]);
-  }
-  graph->fillComplete(map_, map_);
+  auto graph = buildSystemGraph(*K_, *M_, map_, nLocalDofs_, extra);
   A_ = rcp(new CrsMatrix(graph));
   A_->fillComplete(map_, map_);
+  auto aCols = A_->getColMap();
+  for (auto [X, out] : {std::make_pair(K_.get(), &colOfK_), std::make_pair(M_.get(), &colOfM_)}) {
+    auto xCols = X->getColMap();
+    out->resize(xCols->getNodeNumElements());
+    for (size_t j = 0; j < out->size(); ++j) (*out)[j] = aCols->getLocalElement(xCols->getGlobalElement(LO(j)));
+  }
+  slot_.assign(aCols->getNodeNumElements(), -1);
+}
+
+// Row i of the DOF block takes aK K(i,:) + aM M(i,:); A's pattern holds both. The values are
+// written through the local matrix (a search per entry by global index cost 0.37 s per fill
+// at 300,000 unknowns).
+void ContactSystem::fillBulk(double aM, double aK) {
+  const auto A = A_->getLocalMatrixHost();
+  const auto Kl = K_->getLocalMatrixHost(), Ml = M_->getLocalMatrixHost();
+  auto add = [&](const decltype(Kl)& X, const std::vector<LO>& colOf, double a, size_t i, size_t b) {
+    if (a == 0.0) return;
+    for (auto k = X.graph.row_map(i); k < X.graph.row_map(i + 1); ++k)
+      A.values(b + slot_[colOf[X.graph.entries(k)]]) += a * X.values(k);
+  };
+  for (size_t i = 0; i < nLocalDofs_; ++i) {
+    const auto b = A.graph.row_map(i), e = A.graph.row_map(i + 1);
+    for (auto k = b; k < e; ++k) slot_[A.graph.entries(k)] = LO(k - b);
+    add(Kl, colOfK_, aK, i, b);
+    add(Ml, colOfM_, aM, i, b);
+    for (auto k = b; k < e; ++k) slot_[A.graph.entries(k)] = -1;
+  }
 }
 
 void ContactSystem::fill(double aM, double aK, const std::vector<MatrixEntry>& extra) {
   if (contact_) contact_->setScale(std::max(aM * maxDiagM_ + aK * maxDiagK_, 1e-300));
   A_->resumeFill();
   A_->setAllToScalar(0.0);
+  fillBulk(aM, aK);
   auto dofMap = K_->getRowMap();
   const GO nU = GO(dofMap->getGlobalNumElements());
-  Teuchos::Array<GO> ci;
-  Teuchos::Array<double> cv;
-  for (size_t i = 0; i < nLocalDofs_; ++i) {
-    const GO g = dofMap->getGlobalElement(LO(i));
-    for (const auto& [X, a] : {std::make_pair(K_.get(), aK), std::make_pair(M_.get(), aM)}) {
-      if (a == 0.0) continue;
-      const size_t n = X->getNumEntriesInGlobalRow(g);
-      ci.resize(n);
-      cv.resize(n);
-      size_t got = 0;
-      X->getGlobalRowCopy(g, ci(), cv(), got);
-      for (size_t k = 0; k < got; ++k) cv[k] *= a;
-      A_->sumIntoGlobalValues(g, ci(0, got), cv(0, got));
-    }
-  }
   if (contact_) {
     const double S = contact_->scale();
     const double k = contact_->method().stiffness();

@@ -48,6 +48,10 @@ class ContactSystem {
   RCP<const Map> map_;
   RCP<CrsMatrix> A_;
   std::vector<LO> rowOfConstraint_;
+  // Bulk rows aM M + aK K written through the local arrays: K's and M's column indices as
+  // A's (local to each column map), and per column of A its entry in the row being written.
+  void fillBulk(double aM, double aK);
+  std::vector<LO> colOfK_, colOfM_, slot_;
 };
 
 }  // namespace choc

@@ -1,0 +1,106 @@
+// The effective matrix of an implicit step with contact (ContactSystem): its graph is built
+// from K's and M's local arrays and its bulk values written through them, so the product
+// A x is checked against aM M x + aK K x plus the contact block computed term by term, on
+// non-matching faces (slave nodes coupled to master nodes of another body, on another rank
+// under 2 ranks).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "contact/ContactManager.hpp"
+#include "contact/ContactSystem.hpp"
+#include "physics/Model.hpp"
+#include "test_analysis_contact_helpers.hpp"
+
+namespace choc {
+namespace {
+
+// The deck needs an analysis; this test only builds the model from it.
+const char* kAnalysis =
+    "<ParameterList name=\"t\"><Parameter name=\"Type\" type=\"string\" value=\"Transient\"/>"
+    "<Parameter name=\"Time Step\" type=\"double\" value=\"1e-6\"/>"
+    "<Parameter name=\"End Time\" type=\"double\" value=\"1e-6\"/></ParameterList>";
+
+// With every slave node in contact (the bars overlap by 1e-7 m): y = A [x; 0] on the DOF
+// rows equals aM M x + aK K x + k sum_s b_s (b_s . x), and a multiplier row equals -S b_s . x.
+void checkFill(const std::string& method) {
+  auto comm = Tpetra::getDefaultComm();
+  const std::string dir = test::scratchDir("system_" + method + std::to_string(comm->getSize()));
+  const std::string mesh = test::writeScene(dir, 0.1, 4, 2, 0.1, 4, 3, -1e-7, comm);
+  auto d = test::readDeck(dir, test::deck(mesh, "CL_POU2", kAnalysis), comm);
+  Model model(*d.input, d.file, comm);
+  const double k = 1e10;
+  ContactManager cm(model.mesh(), model.dofs(), model.map(), {{"ifc", "CNT_POU1", "CNT_POU2", 1e-3}},
+                    method == "Penalty" ? makePenaltyContact(k, 1e-12) : makeLagrangeContact(1e-12));
+  Vector zero(model.map());
+  cm.initialize(zero);
+  ASSERT_EQ(cm.activeCount(), cm.numConstraints());
+  ASSERT_GT(cm.numConstraints(), 0);
+  ContactSystem sys(model.stiffness(), model.mass(), &cm);
+  const double aM = 4e12, aK = 1.1;  // 1 / (beta dt^2) at dt = 1e-6 s: the three parts of one size
+  sys.fill(aM, aK);
+  ASSERT_EQ(sys.extended(), method != "Penalty");
+
+  Vector X(sys.map()), Y(sys.map());
+  X.randomize();
+  {
+    auto x = X.getDataNonConst();
+    for (size_t i = sys.numLocalDofs(); i < size_t(x.size()); ++i) x[i] = 0.0;
+  }
+  sys.matrix()->apply(X, Y);
+
+  Vector x(model.map()), expected(model.map()), t(model.map());
+  {
+    auto xs = X.getData();
+    auto xd = x.getDataNonConst();
+    for (size_t i = 0; i < sys.numLocalDofs(); ++i) xd[i] = xs[i];
+  }
+  model.mass()->apply(x, expected);
+  model.stiffness()->apply(x, t);
+  expected.update(aK, t, aM);
+  // b_s . x over the ranks that own the terms' DOFs.
+  const int nS = cm.numConstraints();
+  std::vector<double> mine(nS, 0.0), bx(nS, 0.0);
+  auto map = model.map();
+  auto xd = x.getData();
+  for (int s = 0; s < nS; ++s)
+    for (const auto& [dof, c] : cm.constraints()[s].terms) {
+      const LO l = map->getLocalElement(dof);
+      if (l != Teuchos::OrdinalTraits<LO>::invalid()) mine[s] += c * xd[l];
+    }
+  Teuchos::reduceAll<int, double>(*comm, Teuchos::REDUCE_SUM, nS, mine.data(), bx.data());
+  const double kc = cm.method().stiffness();
+  {
+    auto e = expected.getDataNonConst();
+    for (int s = 0; s < nS; ++s)
+      for (const auto& [dof, c] : cm.constraints()[s].terms) {
+        const LO l = map->getLocalElement(dof);
+        if (l != Teuchos::OrdinalTraits<LO>::invalid()) e[l] += kc * c * bx[s];
+      }
+  }
+  double worst = 0.0, scale = expected.normInf();
+  {
+    auto y = Y.getData();
+    auto e = expected.getData();
+    for (size_t i = 0; i < sys.numLocalDofs(); ++i) worst = std::max(worst, std::abs(y[i] - e[i]));
+    for (int s = 0; s < nS; ++s) {
+      const LO row = sys.multiplierRow(s);
+      if (row >= 0) EXPECT_NEAR(y[row], -cm.scale() * bx[s], 1e-12 * cm.scale() * std::abs(bx[s]) + 1e-300)
+                        << method << ": multiplier row of slave " << s;
+    }
+  }
+  double all = 0.0;
+  Teuchos::reduceAll<int, double>(*comm, Teuchos::REDUCE_MAX, 1, &worst, &all);
+  EXPECT_LE(all, 1e-13 * scale) << method << ": DOF rows of A x against aM M x + aK K x + contact";
+}
+
+TEST(MpiContactSystem, PenaltyFillIsTheMatricesPlusTheActiveCouplings) { checkFill("Penalty"); }
+TEST(MpiContactSystem, LagrangeFillIsTheMatricesPlusTheMultiplierBlock) { checkFill("Lagrange"); }
+
+}  // namespace
+}  // namespace choc
