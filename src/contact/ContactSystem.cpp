@@ -1,6 +1,7 @@
 #include "contact/ContactSystem.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <map>
 #include <set>
 
@@ -75,8 +76,8 @@ ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, Con
 
 // Row i of the DOF block takes aK K(i,:) + aM M(i,:); A's pattern holds both. The values are
 // written through the local matrix (a search per entry by global index cost 0.37 s per fill
-// at 300,000 unknowns).
-void ContactSystem::fillBulk(double aM, double aK) {
+// at 300,000 unknowns). rows: the local rows to write (null: all), each zeroed first.
+void ContactSystem::fillBulk(double aM, double aK, const std::vector<LO>* rows) {
   const auto A = A_->getLocalMatrixHost();
   const auto Kl = K_->getLocalMatrixHost(), Ml = M_->getLocalMatrixHost();
   auto add = [&](const decltype(Kl)& X, const std::vector<LO>& colOf, double a, size_t i, size_t b) {
@@ -84,20 +85,26 @@ void ContactSystem::fillBulk(double aM, double aK) {
     for (auto k = X.graph.row_map(i); k < X.graph.row_map(i + 1); ++k)
       A.values(b + slot_[colOf[X.graph.entries(k)]]) += a * X.values(k);
   };
-  for (size_t i = 0; i < nLocalDofs_; ++i) {
+  auto row = [&](size_t i) {
     const auto b = A.graph.row_map(i), e = A.graph.row_map(i + 1);
+    for (auto k = b; k < e; ++k) A.values(k) = 0.0;
+    if (i >= nLocalDofs_) return;  // a multiplier row: contact terms only
     for (auto k = b; k < e; ++k) slot_[A.graph.entries(k)] = LO(k - b);
     add(Kl, colOfK_, aK, i, b);
     add(Ml, colOfM_, aM, i, b);
     for (auto k = b; k < e; ++k) slot_[A.graph.entries(k)] = -1;
+  };
+  if (rows) {
+    for (LO i : *rows) row(size_t(i));
+  } else {
+    for (size_t i = 0; i < A.graph.row_map.extent(0) - 1; ++i) row(i);
   }
 }
 
-void ContactSystem::fill(double aM, double aK, const std::vector<MatrixEntry>& extra) {
-  if (contact_) contact_->setScale(std::max(aM * maxDiagM_ + aK * maxDiagK_, 1e-300));
-  A_->resumeFill();
-  A_->setAllToScalar(0.0);
-  fillBulk(aM, aK);
+// The entries added to aM M + aK K, in the order they are summed: the contact block for the
+// current statuses, the friction tangent, the extra entries.
+std::vector<MatrixEntry> ContactSystem::couplingEntries(const std::vector<MatrixEntry>& extra) const {
+  std::vector<MatrixEntry> out;
   auto dofMap = K_->getRowMap();
   const GO nU = GO(dofMap->getGlobalNumElements());
   if (contact_) {
@@ -109,44 +116,54 @@ void ContactSystem::fill(double aM, double aK, const std::vector<MatrixEntry>& e
       for (const auto& [di, bi] : terms) {
         if (dofMap->getLocalElement(di) == Teuchos::OrdinalTraits<LO>::invalid()) continue;
         if (active && k != 0.0)
-          for (const auto& [dj, bj] : terms) {
-            const GO c = dj;
-            const double v = k * bi * bj;
-            A_->sumIntoGlobalValues(di, Teuchos::ArrayView<const GO>(&c, 1),
-                                    Teuchos::ArrayView<const double>(&v, 1));
-          }
-        if (extended_ && active) {
-          const GO c = nU + s;
-          const double v = -S * bi;
-          A_->sumIntoGlobalValues(di, Teuchos::ArrayView<const GO>(&c, 1),
-                                  Teuchos::ArrayView<const double>(&v, 1));
-        }
+          for (const auto& [dj, bj] : terms) out.push_back({di, dj, k * bi * bj});
+        if (extended_ && active) out.push_back({di, nU + s, -S * bi});
       }
       if (extended_ && rowOfConstraint_[s] >= 0) {
         const GO row = nU + s;
         if (active) {
-          for (const auto& [dj, bj] : terms) {
-            const GO c = dj;
-            const double v = -S * bj;
-            A_->sumIntoGlobalValues(row, Teuchos::ArrayView<const GO>(&c, 1),
-                                    Teuchos::ArrayView<const double>(&v, 1));
-          }
+          for (const auto& [dj, bj] : terms) out.push_back({row, dj, -S * bj});
         } else {
-          const double v = S;
-          A_->sumIntoGlobalValues(row, Teuchos::ArrayView<const GO>(&row, 1),
-                                  Teuchos::ArrayView<const double>(&v, 1));
+          out.push_back({row, row, S});
         }
       }
     }
   }
   if (contact_ && contact_->hasFriction())
-    for (const MatrixEntry& e : contact_->frictionTangent(nU))
-      A_->sumIntoGlobalValues(e.row, Teuchos::ArrayView<const GO>(&e.col, 1),
-                              Teuchos::ArrayView<const double>(&e.value, 1));
-  for (const MatrixEntry& e : extra)
+    for (const MatrixEntry& e : contact_->frictionTangent(nU)) out.push_back(e);
+  out.insert(out.end(), extra.begin(), extra.end());
+  return out;
+}
+
+// A refill with the same (aM, aK) as the last one rewrites only the rows the last and the new
+// coupling entries touch (a change of contact status, a new friction tangent): the other rows
+// hold aM M + aK K already, so the values are those of a whole refill, bit for bit.
+void ContactSystem::fill(double aM, double aK, const std::vector<MatrixEntry>& extra) {
+  if (contact_) contact_->setScale(std::max(aM * maxDiagM_ + aK * maxDiagK_, 1e-300));
+  const std::vector<MatrixEntry> entries = couplingEntries(extra);
+  std::vector<LO> rows;
+  for (const MatrixEntry& e : entries) {
+    const LO l = map_->getLocalElement(e.row);
+    if (l != Teuchos::OrdinalTraits<LO>::invalid()) rows.push_back(l);
+  }
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  A_->resumeFill();
+  if (filled_ && aM == lastAM_ && aK == lastAK_) {
+    std::vector<LO> both;
+    std::set_union(rows.begin(), rows.end(), lastRows_.begin(), lastRows_.end(), std::back_inserter(both));
+    fillBulk(aM, aK, &both);
+  } else {
+    fillBulk(aM, aK, nullptr);
+  }
+  for (const MatrixEntry& e : entries)
     A_->sumIntoGlobalValues(e.row, Teuchos::ArrayView<const GO>(&e.col, 1),
                             Teuchos::ArrayView<const double>(&e.value, 1));
   A_->fillComplete(map_, map_);
+  filled_ = true;
+  lastAM_ = aM;
+  lastAK_ = aK;
+  lastRows_ = std::move(rows);
 }
 
 std::vector<char> ContactSystem::statusKey() const {

@@ -27,7 +27,8 @@ class ContactSystem {
   LO multiplierRow(int s) const { return rowOfConstraint_[s]; }
   // Refills the values: W = aM M + aK K plus the contact block for the current statuses,
   // the multiplier rows scaled by the largest diagonal of aM M + aK K (a balanced system),
-  // plus the extra entries (rows this rank owns, within the declared couplings).
+  // plus the extra entries (rows this rank owns, within the declared couplings). With the
+  // (aM, aK) of the last fill only the rows the coupling entries touch are rewritten.
   void fill(double aM, double aK, const std::vector<MatrixEntry>& extra = {});
   RCP<const CrsMatrix> matrix() const { return A_; }
   // What the factored matrix depends on besides (aM, aK): the contact statuses and the
@@ -50,8 +51,13 @@ class ContactSystem {
   std::vector<LO> rowOfConstraint_;
   // Bulk rows aM M + aK K written through the local arrays: K's and M's column indices as
   // A's (local to each column map), and per column of A its entry in the row being written.
-  void fillBulk(double aM, double aK);
+  void fillBulk(double aM, double aK, const std::vector<LO>* rows);
+  std::vector<MatrixEntry> couplingEntries(const std::vector<MatrixEntry>& extra) const;
   std::vector<LO> colOfK_, colOfM_, slot_;
+  // The last fill: its coefficients and the local rows its coupling entries touched.
+  bool filled_ = false;
+  double lastAM_ = 0.0, lastAK_ = 0.0;
+  std::vector<LO> lastRows_;
 };
 
 }  // namespace choc
