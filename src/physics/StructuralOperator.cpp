@@ -95,15 +95,15 @@ void StructuralOperator::applyMass(const Vector& a, Vector& out) {
 void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t, Vector& out) {
   TimerScope ts(timer_, "Transient: assembly");
   K_->apply(u, out);
-  ku_.store(u, out);
+  if (keepProducts_) ku_.store(u, out);
   if (aK_ != 0.0) {
     K_->apply(v, *tmp_);
-    kv_.store(v, *tmp_);
+    if (keepProducts_) kv_.store(v, *tmp_);
     out.update(aK_, *tmp_, 1.0);
   }
   if (aM_ != 0.0) {
     M_->apply(v, *tmp_);
-    mv_.store(v, *tmp_);
+    if (keepProducts_) mv_.store(v, *tmp_);
     out.update(aM_, *tmp_, 1.0);
   }
   if (loads_) loads_->subtractFrom(t, out);

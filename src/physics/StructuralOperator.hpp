@@ -53,6 +53,7 @@ class StructuralOperator : public SecondOrderOperator {
   void acceptStep(const Vector& u) override;
   double elasticTermsNorm(const Vector& u) const override;
   bool forcesVaryInTime() const override { return loads_ && loads_->ramped(); }
+  void keepProducts(bool on) override { keepProducts_ = on; }
   // Explicit runs with a multiplier method: contact by forward increments (ContactManager::
   // forwardIncrement) instead of forces and statuses.
   void setForwardIncrementContact(bool on) { forwardIncrement_ = on; }
@@ -99,6 +100,7 @@ class StructuralOperator : public SecondOrderOperator {
   // K u, K v and M v of the last applyForces: the energies of the state a step ended at (whose
   // forces the step's last residual computed) cost no second product with K or M.
   ProductCache ku_, kv_, mv_;
+  bool keepProducts_ = true;
   double nextLooser_ = 0.0;  // relaxNextCorrection's tolerance, for one correction
   RCP<MultiVector> rhs_, x_;
   std::vector<char> massless_;  // per local DOF: its row of M is zero

@@ -75,6 +75,7 @@ TransientSummary ExplicitDriver::run(Vector& u, Vector& v, const Resume* resume)
       vHalf_->update(1.0, *v_, 0.5 * h, *a_, 0.0);
       u_->update(h, *vHalf_, 1.0);
       const double t = k + 1 == substeps_ ? target : t_ + h;
+      op_.keepProducts(k + 1 == substeps_);  // the step's end state: the energies follow
       acceleration(*u_, *vHalf_, t, h, *a_, h, 1.0);
       v_->update(1.0, *vHalf_, 0.5 * h, *a_, 0.0);
       t_ = t;

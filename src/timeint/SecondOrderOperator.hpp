@@ -89,6 +89,10 @@ class SecondOrderOperator {
   virtual bool forcesVaryInTime() const { return true; }
   // A step was accepted at u (before saveState): state that accumulates over accepted steps.
   virtual void acceptStep(const Vector& /*u*/) {}
+  // Whether applyForces keeps its products (K u, K v, M v) for the energies of that state
+  // (on by default). An explicit run turns it off for the sub-steps no output follows: the
+  // copies would cost a tenth of such a sub-step.
+  virtual void keepProducts(bool /*on*/) {}
   // Is R(u) affine in u while the constraint status is frozen (linear elasticity, contact
   // without friction, no shock links)? Then one exact correction solves an active-set pass.
   // false (the default) is always safe.
