@@ -97,7 +97,7 @@ void ContactSystem::fillBulk(double aM, double aK, const std::vector<LO>* rows) 
   if (rows) {
     for (LO i : *rows) row(size_t(i));
   } else {
-    for (size_t i = 0; i < A.graph.row_map.extent(0) - 1; ++i) row(i);
+    for (size_t i = 0; i + 1 < size_t(A.graph.row_map.extent(0)); ++i) row(i);
   }
 }
 
