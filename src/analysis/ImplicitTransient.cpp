@@ -39,8 +39,9 @@ void declareNewton(ParameterList& nw) {
                 "one correction per step while the contact status holds) and both otherwise");
   declareChoice(nw, "Linear Tolerance", "adaptive", {"adaptive", "fixed"},
                 "how far an iterative linear solver (CG, GMRES, MINRES) takes each correction: "
-                "'adaptive' until its residual is a tenth of what the residual test allows (never "
-                "tighter than 'Linear Solver/Tolerance'; the Newton tests are unchanged); 'fixed' "
+                "'adaptive' until its residual is a tenth of what the residual test allows (its "
+                "tolerance of the reference, or the round-off floor; never tighter than 'Linear "
+                "Solver/Tolerance'; the Newton tests are unchanged); 'fixed' "
                 "always to 'Linear Solver/Tolerance'. A direct solver is exact either way");
 }
 

@@ -32,7 +32,9 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
         return out;
       }
       const double stepNorm = n.incrementScale;
-      const bool resOk = n.residual <= s.residualTolerance * n.reference || n.residual <= 1e-12 * n.roundoff;
+      // What the residual test allows: the tolerance of the reference, or the round-off floor.
+      const double allowed = std::max(s.residualTolerance * n.reference, 1e-12 * n.roundoff);
+      const bool resOk = n.residual <= allowed;
       const bool incOk = lastIncrement >= 0 &&
                          lastIncrement <= std::max(s.incrementTolerance * stepNorm, 1e-13 * n.solutionNorm);
       const bool incrementAccepted =
@@ -51,8 +53,7 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
         return out;
       }
       if (s.adaptiveLinearTolerance && n.residual > 0.0)
-        op.relaxNextCorrection(std::min(NewtonSettings::kMaxForcing,
-                                        NewtonSettings::kForcing * s.residualTolerance * n.reference / n.residual));
+        op.relaxNextCorrection(std::min(NewtonSettings::kMaxForcing, NewtonSettings::kForcing * allowed / n.residual));
       const CorrectionStatus cs = op.solveCorrection(c, u, r, du);
       ++out.iterations;
       out.krylovIterations += cs.iterations;

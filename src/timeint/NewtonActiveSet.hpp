@@ -32,9 +32,10 @@ struct NewtonSettings {
   int maxIterations = 10;
   int maxActiveSetIterations = 20;
   // Inexact Newton: each correction's iterative linear solve may stop once the linear residual
-  // is a tenth of what the residual test allows, kForcing * residualTolerance * reference (and
-  // at most a relative kMaxForcing of the Newton residual it starts from); the acceptance
-  // tests above are unchanged. Off: every solve to the linear solver's own tolerance.
+  // is a tenth of what the residual test allows, kForcing * max(residualTolerance * reference,
+  // 1e-12 * roundoff) (the test accepts a residual at its round-off floor too; at most a
+  // relative kMaxForcing of the Newton residual it starts from); the acceptance tests above
+  // are unchanged. Off: every solve to the linear solver's own tolerance.
   bool adaptiveLinearTolerance = false;
   static constexpr double kForcing = 0.1, kMaxForcing = 0.1;
 };

@@ -134,6 +134,40 @@ TEST(NewtonConvergence, AdaptiveLinearToleranceAsksWhatTheResidualTestNeeds) {
   EXPECT_EQ(fixed.asked[0], 0.0);
 }
 
+// At the round-off floor the residual test allows 1e-12 of the floor, and the correction asks
+// for a tenth of that: a residual already near the floor (a body in rigid motion, where the
+// reference is small and the residual cannot be computed more exactly) is not chased below
+// what can be measured. Here the floor allows 1e-8 against the reference's 1.2e-10, so the
+// correction asks 0.1 * 1e-8 / 1e-7 = 0.01 (1.2e-4 from the reference alone) and is accepted.
+TEST(NewtonConvergence, AdaptiveLinearToleranceAimsAtTheRoundoffFloorWhenItIsHigher) {
+  const double k = 3e7, f = 1.2e4, r0 = 1e-7, floor = 1e4, tol = 1e-14;
+  Spring op(k, 0.0, f, true);
+  NewtonSettings s;
+  s.convergence = Convergence::Auto;
+  s.adaptiveLinearTolerance = true;
+  s.residualTolerance = tol;
+  Vector u(op.map()), fu(op.map()), dummy(op.map());
+  Spring::set(u, (f + r0) / k);
+  auto residual = [&](const Vector& x, Vector& r) {
+    op.applyForces(x, dummy, 0.0, r);
+    ResidualNorms n;
+    n.residual = std::abs(Spring::get(r));
+    n.reference = f;
+    n.roundoff = floor;
+    n.incrementScale = n.solutionNorm = std::abs(Spring::get(x));
+    return n;
+  };
+  EffectiveCoefficients c;
+  c.cd = 1.0;
+  const NewtonOutcome out = solveNewtonActiveSet(op, c, residual, u, s);
+  ASSERT_TRUE(out.converged) << out.message;
+  EXPECT_EQ(out.iterations, 1);
+  ASSERT_EQ(op.asked.size(), 1u);
+  const double r = std::abs(k * ((f + r0) / k) - f);  // the start's residual as computed
+  EXPECT_DOUBLE_EQ(op.asked[0], 0.1 * 1e-12 * floor / r);
+  EXPECT_GT(op.asked[0], 0.1 * tol * f / r * 10);  // well above what the reference alone asks
+}
+
 // A nonlinear pass with inexact corrections: the acceptance tests are unchanged (residual and
 // increment), so it converges to the same root within them, each correction asked for less as
 // the residual falls.
