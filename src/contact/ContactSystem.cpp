@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <iterator>
 #include <map>
-#include <set>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsGraph.hpp>
@@ -62,16 +61,12 @@ ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, Con
       const LO l = dofMap->getLocalElement(di);
       if (l != Teuchos::OrdinalTraits<LO>::invalid()) extra[l].insert(extra[l].end(), group.begin(), group.end());
     }
-  auto graph = buildSystemGraph(*K_, *M_, map_, nLocalDofs_, extra);
-  A_ = rcp(new CrsMatrix(graph));
+  SystemGraph sg = buildSystemGraph(*K_, *M_, map_, nLocalDofs_, extra);
+  A_ = rcp(new CrsMatrix(sg.graph));
   A_->fillComplete(map_, map_);
-  auto aCols = A_->getColMap();
-  for (auto [X, out] : {std::make_pair(K_.get(), &colOfK_), std::make_pair(M_.get(), &colOfM_)}) {
-    auto xCols = X->getColMap();
-    out->resize(xCols->getNodeNumElements());
-    for (size_t j = 0; j < out->size(); ++j) (*out)[j] = aCols->getLocalElement(xCols->getGlobalElement(LO(j)));
-  }
-  slot_.assign(aCols->getNodeNumElements(), -1);
+  colOfK_ = std::move(sg.fromK);
+  colOfM_ = std::move(sg.fromM);
+  slot_.assign(A_->getColMap()->getNodeNumElements(), -1);
 }
 
 // Row i of the DOF block takes aK K(i,:) + aM M(i,:); A's pattern holds both. The values are

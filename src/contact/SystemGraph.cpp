@@ -26,8 +26,8 @@ RCP<const Map> columnMap(const Map& rows, const std::vector<GO>& remote) {
 
 }  // namespace
 
-RCP<const CrsGraph> buildSystemGraph(const CrsMatrix& K, const CrsMatrix& M, RCP<const Map> map,
-                                     size_t nLocalDofs, const std::map<LO, std::vector<GO>>& extra) {
+SystemGraph buildSystemGraph(const CrsMatrix& K, const CrsMatrix& M, RCP<const Map> map,
+                             size_t nLocalDofs, const std::map<LO, std::vector<GO>>& extra) {
   // Every column id this rank's rows reach that another rank owns.
   std::vector<GO> remote;
   for (const CrsMatrix* X : {&K, &M})
@@ -47,7 +47,11 @@ RCP<const CrsGraph> buildSystemGraph(const CrsMatrix& K, const CrsMatrix& M, RCP
     for (size_t j = 0; j < to.size(); ++j) to[j] = colMap->getLocalElement(xc->getGlobalElement(LO(j)));
     return to;
   };
-  const std::vector<LO> fromK = translate(K), fromM = translate(M);
+  SystemGraph out;
+  out.fromK = translate(K);
+  out.fromM = translate(M);
+  const std::vector<LO>& fromK = out.fromK;
+  const std::vector<LO>& fromM = out.fromM;
   const auto Kl = K.getLocalMatrixHost(), Ml = M.getLocalMatrixHost();
 
   const size_t nRows = map->getNodeNumElements();
@@ -75,7 +79,8 @@ RCP<const CrsGraph> buildSystemGraph(const CrsMatrix& K, const CrsMatrix& M, RCP
   std::vector<LO>().swap(cols);
   auto graph = rcp(new CrsGraph(map, colMap, rowPtr, colInd));
   graph->expertStaticFillComplete(map, map);
-  return graph;
+  out.graph = graph;
+  return out;
 }
 
 }  // namespace choc

@@ -14,9 +14,16 @@ namespace choc {
 
 using CrsGraph = Tpetra::CrsGraph<LO, GO>;
 
+// The graph and, per local column of K and of M, the graph's local column: what a fill of
+// aM M + aK K through the local arrays needs.
+struct SystemGraph {
+  RCP<const CrsGraph> graph;
+  std::vector<LO> fromK, fromM;
+};
+
 // map: the system's row, domain and range map; its first nLocalDofs local rows are K's and
 // M's local rows (same global ids). extra: per local row of map, more global columns.
-RCP<const CrsGraph> buildSystemGraph(const CrsMatrix& K, const CrsMatrix& M, RCP<const Map> map,
-                                     size_t nLocalDofs, const std::map<LO, std::vector<GO>>& extra);
+SystemGraph buildSystemGraph(const CrsMatrix& K, const CrsMatrix& M, RCP<const Map> map,
+                             size_t nLocalDofs, const std::map<LO, std::vector<GO>>& extra);
 
 }  // namespace choc
