@@ -17,7 +17,7 @@ StructuralOperator::StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatr
                                        std::unique_ptr<LinearSolver> solver, Teuchos::StackedTimer* timer)
     : K_(std::move(K)), M_(std::move(M)), aK_(rayleighK), aM_(rayleighM), loads_(std::move(loads)),
       contact_(contact), links_(links), solver_(std::move(solver)), timer_(timer),
-      ku_(K_->getRowMap()), kv_(K_->getRowMap()), mv_(K_->getRowMap()) {
+      ku_(K_->getRowMap(), 1), vProducts_(K_->getRowMap(), 2) {
 
   tmp_ = rcp(new Vector(K_->getRowMap()));
   energyTmp_ = rcp(new Vector(K_->getRowMap()));
@@ -65,13 +65,13 @@ int StructuralOperator::unknowns() const {
 }
 
 double StructuralOperator::kineticEnergy(const Vector& v) const {
-  if (mv_.holds(v)) return 0.5 * v.dot(mv_.product());
+  if (vProducts_.holds(v, kMv)) return 0.5 * v.dot(vProducts_.product(kMv));
   M_->apply(v, *energyTmp_);
   return 0.5 * v.dot(*energyTmp_);
 }
 
 double StructuralOperator::strainEnergy(const Vector& u) const {
-  if (ku_.holds(u)) return 0.5 * u.dot(ku_.product());
+  if (ku_.holds(u, 0)) return 0.5 * u.dot(ku_.product(0));
   K_->apply(u, *energyTmp_);
   return 0.5 * u.dot(*energyTmp_);
 }
@@ -80,7 +80,7 @@ double StructuralOperator::strainEnergy(const Vector& u) const {
 double StructuralOperator::dampingPower(const Vector& v, double kinetic) const {
   double power = aM_ * 2.0 * kinetic;
   if (aK_ != 0.0) {
-    if (kv_.holds(v)) return power + aK_ * v.dot(kv_.product());
+    if (vProducts_.holds(v, kKv)) return power + aK_ * v.dot(vProducts_.product(kKv));
     K_->apply(v, *energyTmp_);
     power += aK_ * v.dot(*energyTmp_);
   }
@@ -95,16 +95,21 @@ void StructuralOperator::applyMass(const Vector& a, Vector& out) {
 void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t, Vector& out) {
   TimerScope ts(timer_, "Transient: assembly");
   K_->apply(u, out);
-  if (keepProducts_) ku_.store(u, out);
+  if (keepProducts_) {
+    ku_.reset(u);
+    ku_.write(0).assign(out);
+    vProducts_.reset(v);
+  }
+  // K v and M v straight into the cache's buffers when kept.
   if (aK_ != 0.0) {
-    K_->apply(v, *tmp_);
-    if (keepProducts_) kv_.store(v, *tmp_);
-    out.update(aK_, *tmp_, 1.0);
+    Vector& Kv = keepProducts_ ? vProducts_.write(kKv) : *tmp_;
+    K_->apply(v, Kv);
+    out.update(aK_, Kv, 1.0);
   }
   if (aM_ != 0.0) {
-    M_->apply(v, *tmp_);
-    if (keepProducts_) mv_.store(v, *tmp_);
-    out.update(aM_, *tmp_, 1.0);
+    Vector& Mv = keepProducts_ ? vProducts_.write(kMv) : *tmp_;
+    M_->apply(v, Mv);
+    out.update(aM_, Mv, 1.0);
   }
   if (loads_) loads_->subtractFrom(t, out);
 }

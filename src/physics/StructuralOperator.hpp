@@ -99,7 +99,8 @@ class StructuralOperator : public SecondOrderOperator {
   mutable RCP<Vector> colTmp_;  // u on K's column map, for elasticTermsNorm
   // K u, K v and M v of the last applyForces: the energies of the state a step ended at (whose
   // forces the step's last residual computed) cost no second product with K or M.
-  ProductCache ku_, kv_, mv_;
+  ProductCache ku_, vProducts_;  // K u; K v and M v (one copy of v)
+  static constexpr int kKv = 0, kMv = 1;
   bool keepProducts_ = true;
   double nextLooser_ = 0.0;  // relaxNextCorrection's tolerance, for one correction
   RCP<MultiVector> rhs_, x_;
