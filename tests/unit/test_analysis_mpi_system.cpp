@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -26,23 +28,39 @@ const char* kAnalysis =
     "<Parameter name=\"Time Step\" type=\"double\" value=\"1e-6\"/>"
     "<Parameter name=\"End Time\" type=\"double\" value=\"1e-6\"/></ParameterList>";
 
+// The two bars overlapping by 1e-7 m, 2 x 2 against 3 x 3 elements across (non-matching
+// faces), and their contact pair by `method` (penalty 1e10 N/m per node, or Lagrange).
+struct Scene {
+  RCP<const Comm> comm = Tpetra::getDefaultComm();
+  std::unique_ptr<Model> model;
+  std::unique_ptr<ContactManager> cm;
+  Scene(const std::string& name, const std::string& method) {
+    const std::string dir = test::scratchDir(name + "_" + method + std::to_string(comm->getSize()));
+    const std::string mesh = test::writeScene(dir, 0.1, 4, 2, 0.1, 4, 3, -1e-7, comm);
+    auto d = test::readDeck(dir, test::deck(mesh, "CL_POU2", kAnalysis), comm);
+    model = std::make_unique<Model>(*d.input, d.file, comm);
+    cm = std::make_unique<ContactManager>(
+        model->mesh(), model->dofs(), model->map(), std::vector<PairDefinition>{{"ifc", "CNT_POU1", "CNT_POU2", 1e-3}},
+        method == "Penalty" ? makePenaltyContact(1e10, 1e-12) : makeLagrangeContact(1e-12));
+  }
+};
+
+// 1 / (beta dt^2) at dt = 1e-6 s: the mass, stiffness and penalty parts of one size.
+const double kAM = 4e12, kAK = 1.1;
+
 // With every slave node in contact (the bars overlap by 1e-7 m): y = A [x; 0] on the DOF
 // rows equals aM M x + aK K x + k sum_s b_s (b_s . x), and a multiplier row equals -S b_s . x.
 void checkFill(const std::string& method) {
-  auto comm = Tpetra::getDefaultComm();
-  const std::string dir = test::scratchDir("system_" + method + std::to_string(comm->getSize()));
-  const std::string mesh = test::writeScene(dir, 0.1, 4, 2, 0.1, 4, 3, -1e-7, comm);
-  auto d = test::readDeck(dir, test::deck(mesh, "CL_POU2", kAnalysis), comm);
-  Model model(*d.input, d.file, comm);
-  const double k = 1e10;
-  ContactManager cm(model.mesh(), model.dofs(), model.map(), {{"ifc", "CNT_POU1", "CNT_POU2", 1e-3}},
-                    method == "Penalty" ? makePenaltyContact(k, 1e-12) : makeLagrangeContact(1e-12));
+  Scene scene("system", method);
+  Model& model = *scene.model;
+  ContactManager& cm = *scene.cm;
+  auto comm = scene.comm;
   Vector zero(model.map());
   cm.initialize(zero);
   ASSERT_EQ(cm.activeCount(), cm.numConstraints());
   ASSERT_GT(cm.numConstraints(), 0);
   ContactSystem sys(model.stiffness(), model.mass(), &cm);
-  const double aM = 4e12, aK = 1.1;  // 1 / (beta dt^2) at dt = 1e-6 s: the three parts of one size
+  const double aM = kAM, aK = kAK;
   sys.fill(aM, aK);
   ASSERT_EQ(sys.extended(), method != "Penalty");
 
@@ -102,16 +120,12 @@ void checkFill(const std::string& method) {
 // A refill after a change of statuses with the same (aM, aK) rewrites only the contact rows:
 // A x equals, bit for bit, that of a system filled once for the new statuses.
 void checkRefill(const std::string& method) {
-  auto comm = Tpetra::getDefaultComm();
-  const std::string dir = test::scratchDir("refill_" + method + std::to_string(comm->getSize()));
-  const std::string mesh = test::writeScene(dir, 0.1, 4, 2, 0.1, 4, 3, -1e-7, comm);
-  auto d = test::readDeck(dir, test::deck(mesh, "CL_POU2", kAnalysis), comm);
-  Model model(*d.input, d.file, comm);
-  ContactManager cm(model.mesh(), model.dofs(), model.map(), {{"ifc", "CNT_POU1", "CNT_POU2", 1e-3}},
-                    method == "Penalty" ? makePenaltyContact(1e10, 1e-12) : makeLagrangeContact(1e-12));
+  Scene scene("refill", method);
+  Model& model = *scene.model;
+  ContactManager& cm = *scene.cm;
   Vector u(model.map());
   cm.initialize(u);  // all in contact
-  const double aM = 4e12, aK = 1.1;
+  const double aM = kAM, aK = kAK;
   ContactSystem kept(model.stiffness(), model.mass(), &cm);
   kept.fill(aM, aK);
   // Bar 1 pulled back by 1e-6 m on its half x > 0 (across 2 elements): the slave nodes
