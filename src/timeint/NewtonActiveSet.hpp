@@ -6,8 +6,9 @@
 //   ||du|| <= max(incrementTolerance * incrementScale, 1e-13 ||u||) on the last correction
 //   (see ResidualNorms), unless the settings' Convergence waives it: the residual test alone
 //   then accepts any iterate after the first correction, which saves the solve that only
-//   confirms a converged one (the predictor itself is never accepted on its residual: the
-//   reference includes terms as large as c_a M u). Convergence::Auto waives it exactly in
+//   confirms a converged one (the predictor itself is accepted on its residual only when that
+//   residual is at its round-off floor and no constraint row is violated: a body in free
+//   flight, where any correction would move u by round-off). Convergence::Auto waives it exactly in
 //   the passes the operator declares linear (SecondOrderOperator::linearWithinPass: one
 //   exact correction solves them, so its residual is the whole test), and keeps it for
 //   nonlinear ones (friction, shock links), whose residual can be small while u still moves.
@@ -47,6 +48,9 @@ struct NewtonOutcome {
   int refactorizations = 0;
   int krylovIterations = 0;
   double residual = 0.0, reference = 0.0;
+  // The constraint rows' part of the residual (gaps of active multipliers, multipliers of
+  // inactive ones): measured in their own units, not against the round-off floor's forces.
+  double constraintResidual = 0.0;
   std::string message;  // why it failed
 };
 
@@ -54,6 +58,9 @@ struct NewtonOutcome {
 // reference force norm}.
 struct ResidualNorms {
   double residual = 0.0, reference = 0.0;
+  // The constraint rows' part of the residual (gaps of active multipliers, multipliers of
+  // inactive ones): measured in their own units, not against the round-off floor's forces.
+  double constraintResidual = 0.0;
   // Round-off floor: the size of the largest terms of the residual at u (||c_a M u||,
   // || |K| |u| ||); a residual below 1e-12 of it is at round-off, whatever the reference
   // (rigid motion, loads that cancel).

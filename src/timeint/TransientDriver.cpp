@@ -64,6 +64,7 @@ NewtonOutcome TransientDriver::attempt(double t, double dt) {
     r.update(1.0, *fc_, 1.0);
     const double rn = r.norm2();
     n.residual = std::sqrt(rn * rn + cons * cons);
+    n.constraintResidual = cons;
     n.roundoff = roundoff;
     change_->update(1.0, u, -1.0, *u0_, 0.0);
     n.incrementScale = change_->norm2();

@@ -356,7 +356,13 @@ TEST(ContactImpact, ResidualConvergenceSavesTheConfirmingSolveAtTheSameAnswer) {
   // The default confirms each correction with a second solve, except where the first one is
   // exactly zero (free flight, where the predictor is exact): well over 1.5 per pass.
   EXPECT_GE(2 * both.figures.newtonIterations, 3 * residual.figures.newtonIterations);
-  EXPECT_EQ(residual.figures.newtonIterations, residual.figures.activeSetIterations);
+  // One correction per pass, except where the predictor is exact (its residual at round-off,
+  // no constraint violated): the rigid approach over the gap 1e-5 at 1 m/s, 50 steps of dt,
+  // and the first pass of the step contact begins in (free flight until its status update).
+  const int approach = int(std::floor(1e-5 / 1.0 / dt + 1e-9));
+  const int saved = residual.figures.activeSetIterations - residual.figures.newtonIterations;
+  EXPECT_GE(saved, approach);
+  EXPECT_LE(saved, approach + 1);
   const RunResult& automatic = runs["auto"];
   EXPECT_EQ(automatic.figures.newtonIterations, residual.figures.newtonIterations);
   for (const std::string column : {"N1:DZ", "N1:VZ", "ifc:force"})

@@ -168,6 +168,55 @@ TEST(NewtonConvergence, AdaptiveLinearToleranceAimsAtTheRoundoffFloorWhenItIsHig
   EXPECT_GT(op.asked[0], 0.1 * tol * f / r * 10);  // well above what the reference alone asks
 }
 
+// A predictor whose residual is already at its round-off floor (a body in free flight) is
+// accepted without a correction where the residual test decides alone (a linear pass under
+// 'auto', or 'residual'); the increment test still asks for one, and so does a declared
+// nonlinear pass or a violated constraint row (a gap, which the floor's forces do not
+// measure). Just above the floor (and above tol * reference) the predictor is corrected.
+TEST(NewtonConvergence, APredictorAtItsRoundoffFloorIsAcceptedInALinearPass) {
+  const double k = 3e7, f = 1.2e4, floor = 1e4, tol = 1e-14;
+  struct Case {
+    Convergence convergence;
+    bool declaredLinear;
+    double r0;  // the predictor's residual
+    int corrections;
+    double constraint = 0.0;  // the predictor's constraint rows' residual
+  };
+  const double atFloor = 0.5e-12 * floor, aboveFloor = 2e-12 * floor;
+  for (const Case& cs : {Case{Convergence::Auto, true, atFloor, 0}, Case{Convergence::Residual, false, atFloor, 0},
+                         Case{Convergence::Auto, false, atFloor, 1},
+                         Case{Convergence::ResidualAndIncrement, true, atFloor, 1},
+                         Case{Convergence::Auto, true, aboveFloor, 1},
+                         Case{Convergence::Auto, true, atFloor, 1, 1e-9}}) {
+    Spring op(k, 0.0, f, cs.declaredLinear);
+    NewtonSettings s;
+    s.convergence = cs.convergence;
+    s.residualTolerance = tol;
+    Vector u(op.map()), dummy(op.map());
+    Spring::set(u, (f + cs.r0) / k);
+    auto residual = [&](const Vector& x, Vector& r) {
+      op.applyForces(x, dummy, 0.0, r);
+      ResidualNorms n;
+      n.residual = std::abs(Spring::get(r));
+      // A constraint row the correction satisfies (it is violated at the predictor only).
+      n.constraintResidual = op.asked.empty() ? cs.constraint : 0.0;
+      n.residual = std::hypot(n.residual, n.constraintResidual);
+      n.reference = f;
+      n.roundoff = floor;
+      n.incrementScale = n.solutionNorm = std::abs(Spring::get(x));
+      return n;
+    };
+    EffectiveCoefficients c;
+    c.cd = 1.0;
+    const NewtonOutcome out = solveNewtonActiveSet(op, c, residual, u, s);
+    ASSERT_TRUE(out.converged) << out.message;
+    EXPECT_EQ(out.iterations, cs.corrections) << int(cs.convergence) << " " << cs.declaredLinear << " " << cs.r0;
+    if (cs.corrections == 0) {
+      EXPECT_EQ(Spring::get(u), (f + cs.r0) / k);  // the predictor, untouched
+    }
+  }
+}
+
 // A nonlinear pass with inexact corrections: the acceptance tests are unchanged (residual and
 // increment), so it converges to the same root within them, each correction asked for less as
 // the residual falls.
@@ -182,7 +231,9 @@ TEST(NewtonConvergence, AdaptiveLinearToleranceKeepsTheTestsOfANonlinearPass) {
   for (size_t i = 0; i < op.asked.size(); ++i) {
     EXPECT_GT(op.asked[i], 0.0);
     EXPECT_LE(op.asked[i], 0.1);
-    if (i > 0) EXPECT_GE(op.asked[i], op.asked[i - 1]);  // a smaller residual asks for less
+    if (i > 0) {
+      EXPECT_GE(op.asked[i], op.asked[i - 1]);  // a smaller residual asks for less
+    }
   }
 }
 
