@@ -62,7 +62,10 @@ ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, Con
       if (l != Teuchos::OrdinalTraits<LO>::invalid()) extra[l].insert(extra[l].end(), group.begin(), group.end());
     }
   SystemGraph sg = buildSystemGraph(*K_, *M_, map_, nLocalDofs_, extra);
-  A_ = rcp(new CrsMatrix(sg.graph));
+  // The values are left unzeroed: the first fill writes every row (and zeroes it first).
+  using Values = typename CrsMatrix::local_matrix_device_type::values_type;
+  A_ = rcp(new CrsMatrix(sg.graph, Values(Kokkos::ViewAllocateWithoutInitializing("system values"),
+                                          sg.graph->getNodeNumEntries())));
   A_->fillComplete(map_, map_);
   colOfK_ = std::move(sg.fromK);
   colOfM_ = std::move(sg.fromM);
