@@ -276,16 +276,26 @@ double StructuralOperator::elasticTermsNorm(const Vector& u) const {
   auto importer = K_->getGraph()->getImporter();
   if (importer.is_null()) uc.assign(u);
   else uc.doImport(u, *importer, Tpetra::INSERT);
-  auto ud = uc.getData();
-  // The local CRS arrays directly (a row view per row costs more than the row's arithmetic).
+  auto udata = uc.getData();
+  const double* ud = udata.getRawPtr();
+  // The local CRS arrays directly, through raw pointers (a row view per row costs more than
+  // the row's arithmetic; the views' accessors in the inner loop cost twice the raw loop).
   const auto A = K_->getLocalMatrixHost();
-  const auto& rows = A.graph.row_map;
-  const auto& cols = A.graph.entries;
-  const auto& vals = A.values;
+  const size_t nRows = size_t(A.graph.row_map.extent(0)) - 1;
+  const auto* rows = A.graph.row_map.data();
+  const LO* cols = A.graph.entries.data();
+  const double* vals = A.values.data();
+  // Four partial sums per row: one running sum waits on each addition's latency (3 times
+  // the time of a product with K).
   double local = 0.0;
-  for (size_t i = 0; i + 1 < size_t(rows.extent(0)); ++i) {
-    double row = 0.0;
-    for (auto k = rows(i); k < rows(i + 1); ++k) row += std::abs(vals(k)) * std::abs(ud[cols(k)]);
+  for (size_t i = 0; i < nRows; ++i) {
+    double part[4] = {0.0, 0.0, 0.0, 0.0};
+    auto k = rows[i];
+    const auto end = rows[i + 1];
+    for (; k + 4 <= end; k += 4)
+      for (int j = 0; j < 4; ++j) part[j] += std::abs(vals[k + j]) * std::abs(ud[cols[k + j]]);
+    for (; k < end; ++k) part[0] += std::abs(vals[k]) * std::abs(ud[cols[k]]);
+    const double row = (part[0] + part[1]) + (part[2] + part[3]);
     local += row * row;
   }
   double global = 0.0;
