@@ -75,6 +75,31 @@ Solved solve(Spring& op, Convergence c, bool adaptive = false, double tolerance 
   return r;
 }
 
+// Solves the spring from u = start with a residual of reference f and round-off floor
+// `floor` (as a transient step gives them), plus a constraint row's residual `constraint`
+// that the first correction satisfies (violated at the predictor only).
+Solved solveFrom(Spring& op, const NewtonSettings& s, double start, double f, double floor,
+                 double constraint = 0.0) {
+  Vector u(op.map()), dummy(op.map());
+  Spring::set(u, start);
+  auto residual = [&](const Vector& x, Vector& r) {
+    op.applyForces(x, dummy, 0.0, r);
+    ResidualNorms n;
+    n.constraintResidual = op.asked.empty() ? constraint : 0.0;
+    n.residual = std::hypot(Spring::get(r), n.constraintResidual);
+    n.reference = f;
+    n.roundoff = floor;
+    n.incrementScale = n.solutionNorm = std::abs(Spring::get(x));
+    return n;
+  };
+  EffectiveCoefficients c;
+  c.cd = 1.0;
+  Solved out;
+  out.out = solveNewtonActiveSet(op, c, residual, u, s);
+  out.u = Spring::get(u);
+  return out;
+}
+
 TEST(NewtonConvergence, ALinearPassTakesOneCorrectionUnlessTheIncrementIsRequired) {
   const double k = 3e7, f = 1.2e4;
   Spring op(k, 0.0, f, true);
@@ -146,20 +171,7 @@ TEST(NewtonConvergence, AdaptiveLinearToleranceAimsAtTheRoundoffFloorWhenItIsHig
   s.convergence = Convergence::Auto;
   s.adaptiveLinearTolerance = true;
   s.residualTolerance = tol;
-  Vector u(op.map()), fu(op.map()), dummy(op.map());
-  Spring::set(u, (f + r0) / k);
-  auto residual = [&](const Vector& x, Vector& r) {
-    op.applyForces(x, dummy, 0.0, r);
-    ResidualNorms n;
-    n.residual = std::abs(Spring::get(r));
-    n.reference = f;
-    n.roundoff = floor;
-    n.incrementScale = n.solutionNorm = std::abs(Spring::get(x));
-    return n;
-  };
-  EffectiveCoefficients c;
-  c.cd = 1.0;
-  const NewtonOutcome out = solveNewtonActiveSet(op, c, residual, u, s);
+  const NewtonOutcome out = solveFrom(op, s, (f + r0) / k, f, floor).out;
   ASSERT_TRUE(out.converged) << out.message;
   EXPECT_EQ(out.iterations, 1);
   ASSERT_EQ(op.asked.size(), 1u);
@@ -192,27 +204,11 @@ TEST(NewtonConvergence, APredictorAtItsRoundoffFloorIsAcceptedInALinearPass) {
     NewtonSettings s;
     s.convergence = cs.convergence;
     s.residualTolerance = tol;
-    Vector u(op.map()), dummy(op.map());
-    Spring::set(u, (f + cs.r0) / k);
-    auto residual = [&](const Vector& x, Vector& r) {
-      op.applyForces(x, dummy, 0.0, r);
-      ResidualNorms n;
-      n.residual = std::abs(Spring::get(r));
-      // A constraint row the correction satisfies (it is violated at the predictor only).
-      n.constraintResidual = op.asked.empty() ? cs.constraint : 0.0;
-      n.residual = std::hypot(n.residual, n.constraintResidual);
-      n.reference = f;
-      n.roundoff = floor;
-      n.incrementScale = n.solutionNorm = std::abs(Spring::get(x));
-      return n;
-    };
-    EffectiveCoefficients c;
-    c.cd = 1.0;
-    const NewtonOutcome out = solveNewtonActiveSet(op, c, residual, u, s);
-    ASSERT_TRUE(out.converged) << out.message;
-    EXPECT_EQ(out.iterations, cs.corrections) << int(cs.convergence) << " " << cs.declaredLinear << " " << cs.r0;
+    const Solved run = solveFrom(op, s, (f + cs.r0) / k, f, floor, cs.constraint);
+    ASSERT_TRUE(run.out.converged) << run.out.message;
+    EXPECT_EQ(run.out.iterations, cs.corrections) << int(cs.convergence) << " " << cs.declaredLinear << " " << cs.r0;
     if (cs.corrections == 0) {
-      EXPECT_EQ(Spring::get(u), (f + cs.r0) / k);  // the predictor, untouched
+      EXPECT_EQ(run.u, (f + cs.r0) / k);  // the predictor, untouched
     }
   }
 }
