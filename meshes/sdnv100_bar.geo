@@ -8,13 +8,17 @@
 If (!Exists(n))
   n = 20;
 EndIf
+// m HEX8 across each side of the section (default 1).
+If (!Exists(m))
+  m = 1;
+EndIf
 a = 0.02;
 L = 0.2;
 Point(1) = {0, 0, 0}; Point(2) = {a, 0, 0}; Point(3) = {a, a, 0}; Point(4) = {0, a, 0};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
 Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
-Transfinite Curve{1, 2, 3, 4} = 2;
+Transfinite Curve{1, 2, 3, 4} = m + 1;
 Transfinite Surface{1};
 Recombine Surface{1};
 // The frame-invariance test (tools/frame_invariance.py) turns the bar by 'angle' radians

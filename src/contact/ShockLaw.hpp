@@ -20,8 +20,10 @@
 //                delta = (DIST_2 - DIST_1) - r, the link pulls the nodes together.
 //   PLAN_Y / PLAN_Z: one plane (a unilateral stop) whose outward normal is e2 / e3: node 1
 //                stays on its +e side, delta = (x1 - x2).e - DIST_1 - DIST_2 (with one node:
-//                x2 is node 1's initial position, so delta = u1.e - DIST_1 - DIST_2).
-// With one node (a fixed obstacle), node 2 is the obstacle at its origin.
+//                x2 is the obstacle's origin, by default node 1's initial position, so
+//                delta = u1.e - DIST_1 - DIST_2).
+// With one node (a fixed obstacle), node 2 is the obstacle at its origin ('Obstacle Origin',
+// ORIG_OBST; by default node 1's initial position).
 // Normal law "rigid": no penetration at all. The link is then a unilateral constraint
 // enforced by the integrator with a forward-increment Lagrange multiplier (the force at t_n is
 // chosen so that the gap at t_{n+1} is closed, never tensile): see ModalLinks::project().

@@ -17,8 +17,11 @@ void declareShockLinks(Teuchos::ParameterList& p) {
                         "'<name>.k', one per node, each with these parameters");
   declareString(l, "Node 2", "",
                 "node set of the second node (with k nodes: each node of 'Node 1' is linked to "
-                "the nearest of these, one to one); empty: a fixed obstacle at node 1's initial "
-                "position");
+                "the nearest of these, one to one); empty: a fixed obstacle, at 'Obstacle Origin'");
+  declareString(l, "Obstacle Origin", "",
+                "position 'x y z' of a fixed obstacle's origin (ORIG_OBST; only when 'Node 2' is "
+                "empty): a plane passes through it, a circle is centred on its axis; empty: node "
+                "1's initial position (each node of a set its own)");
   declareChoice(l, "Obstacle", "BI_PLAN_Z", obstacleShapeNames(),
                 "shape: two planes normal to the local y or z axis, two circles, an inner "
                 "circle moving in an outer circle, or one plane (a unilateral stop, PLAN_Y / "
@@ -88,6 +91,13 @@ ShockLink readLink(const ParameterList& lp, const std::string& name, int node1, 
   const auto& X = model.mesh().coords;
   l.x1 = X[l.node1];
   l.x2 = l.node2 >= 0 ? X[l.node2] : X[l.node1];
+  const std::string origin = lp.get<std::string>("Obstacle Origin");
+  if (!origin.empty()) {
+    if (l.node2 >= 0)
+      throwInput(file, lpath + "/Obstacle Origin", origin, "places a fixed obstacle, but 'Node 2' = '" + n2 + "' is given",
+                 "leave 'Node 2' empty for a fixed obstacle at this origin, or leave 'Obstacle Origin' empty");
+    l.x2 = parseVector3(origin, file, lpath + "/Obstacle Origin");
+  }
   return l;
 }
 

@@ -21,9 +21,9 @@ void declareShockLinks(Teuchos::ParameterList& analysisParameters);
 struct ShockLink {
   std::string name;
   std::string path;  // of its entry in the input, e.g. 'Analyses/run/Shock Links/stop'
-  int node1 = -1, node2 = -1;  // node2 = -1: fixed obstacle at node 1's initial position
+  int node1 = -1, node2 = -1;  // node2 = -1: fixed obstacle at x2 ('Obstacle Origin')
   ShockLawParameters law;
-  Vec3 x1{}, x2{};  // initial positions
+  Vec3 x1{}, x2{};  // initial positions (x2: the fixed obstacle's origin when node2 = -1)
   ShockLawState state;
   ShockResponse last;
 };

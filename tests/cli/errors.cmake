@@ -263,6 +263,9 @@ choc_cli_input_error(link_negative_friction check bad_link_negative_friction.xml
   "parameter 'Analyses/shock/Shock Links/link/Friction Coefficient' = '-0.1': out of range. valid: a number in .0, inf.")
 choc_cli_input_error(link_negative_stick check bad_link_negative_stick.xml
   "parameter 'Analyses/shock/Shock Links/link/Tangential Stiffness' = '-400000': out of range. valid: a number in .0, inf.")
+# A fixed obstacle's origin on a link between two nodes (issue 14, SDNV100 (f)).
+choc_cli_input_error(link_origin_with_node2 check bad_link_origin_with_node2.xml
+  "parameter 'Analyses/shock/Shock Links/link/Obstacle Origin' = '0 0 -0.002': places a fixed obstacle, but 'Node 2' = 'C' is given. leave 'Node 2' empty for a fixed obstacle at this origin, or leave 'Obstacle Origin' empty")
 # Explicit central differences (issue 17): a consistent mass, pressure unknowns, a step above
 # the stable one.
 choc_cli_input_error(explicit_consistent_mass check bad_explicit_consistent_mass.xml
