@@ -48,9 +48,6 @@ struct NewtonOutcome {
   int refactorizations = 0;
   int krylovIterations = 0;
   double residual = 0.0, reference = 0.0;
-  // The constraint rows' part of the residual (gaps of active multipliers, multipliers of
-  // inactive ones): measured in their own units, not against the round-off floor's forces.
-  double constraintResidual = 0.0;
   std::string message;  // why it failed
 };
 
