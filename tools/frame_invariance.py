@@ -2,7 +2,7 @@
 """Frame invariance of a contact scene (BENCHMARKS section 8): SDNV100 or the sliding block
 turned as a rigid whole.
 
-usage: tools/frame_invariance.py [--scene sdnv100|sliding] [--friction MU] [--build DIR] [--out DIR]
+usage: tools/frame_invariance.py [--scene sdnv100|sdnv100_springs|sliding] [--friction MU] [--build DIR] [--out DIR]
                                  [--angle RAD] [--axis X Y Z] [--tolerance T]
                                  [--cost-tolerance C] [--energy-tolerance E] [--explicit] [--mortar]
 
@@ -14,6 +14,11 @@ must equal the unturned motion to TOL times the peak displacement (default 1e-8)
 force likewise, the cost (Newton iterations, factorisations) must agree within C (default
 10%), and no run's energy balance may rise above E (default 1e-3, the issue's +0.1%) times E0
 at the default contact mass. Exit 0 when it holds, 1 otherwise (naming what differs). `ctest -R frame_invariance`.
+
+--scene sdnv100_springs: input/sdnv100_shock_springs.xml (SDNV100 (f): 4 shock links on a fixed
+PLAN_Z through 'Obstacle Origin', central differences), every component free, the bar, its
+velocity and the plane (origin, and the links' Axis and Twist so that the plane's normal turns
+with the scene) turned; compared: N5's and N100's motion, the force of link wall.1, the steps.
 
 --scene sliding: input/sliding.xml (the block pushed across the foundation, search in the
 current configuration), its mesh turned (meshes/sliding_blocks.geo), the block's velocity and
@@ -150,6 +155,40 @@ def sliding_deck(mesh, R, explicit=False):
     return s
 
 
+def link_axis_and_twist(axis, normal):
+    """The shock links' 'Twist' [degrees] about `axis` (unit, orthogonal to `normal`) that brings
+    their frame's e3, the PLAN_Z normal, onto `normal` (src/contact/ObstacleFrame.cpp: the frame
+    is Rz(alpha) Ry(beta) Rx(twist), so e3 = cos(twist) e3(0) - sin(twist) e2(0))."""
+    n = np.asarray(axis, float)
+    alpha, beta = math.atan2(n[1], n[0]), -math.asin(max(-1.0, min(1.0, n[2])))
+    ca, sa, cb, sb = math.cos(alpha), math.sin(alpha), math.cos(beta), math.sin(beta)
+    e2, e3 = np.array([-sa, ca, 0.0]), np.array([ca * sb, sa * sb, cb])
+    return math.degrees(math.atan2(-np.dot(normal, e2), np.dot(normal, e3)))
+
+
+def springs_deck(mesh, R, explicit=False):
+    """input/sdnv100_shock_springs.xml (SDNV100 (f): nodal shock links on a fixed plane, central
+    differences) with every component free, turned by R: the plane's origin and normal, the
+    initial velocity; without its checks."""
+    s = open(os.path.join(TOP, "input", "sdnv100_shock_springs.xml")).read()
+    s = s.replace('value="../meshes/sdnv100_bar.msh"', f'value="{mesh}"')
+    s = s.replace('<Parameter name="Active Components" type="string" value="DZ"/>',
+                  '<Parameter name="Active Components" type="string" value="DX DY DZ"/>')
+    axis = R @ [1.0, 0.0, 0.0]  # the input's Axis, 1 0 0, turned
+    twist = link_axis_and_twist(axis, R @ [0.0, 0.0, 1.0])
+    old = '<Parameter name="Axis" type="string" value="1 0 0"/>'
+    assert old in s
+    s = s.replace(old, f'<Parameter name="Axis" type="string" value="{vec(axis)}"/>\n'
+                       f'          <Parameter name="Twist" type="double" value="{twist!r}"/>')
+    s = s.replace('value="0 0 -0.002"', f'value="{vec(R @ [0, 0, -0.002])}"')
+    s = re.sub(r'<ParameterList name="the bar falls at 100 m/s">.*?</ParameterList>',
+               components("v", "BAR", "velocity", R @ [0, 0, -100.0]), s, flags=re.S)
+    s = s.replace('value="N5:DZ N5:VZ N100:DZ N100:VZ"',
+                  'value="N5:DX N5:DY N5:DZ N100:DX N100:DY N100:DZ"')
+    s = re.sub(r'<ParameterList name="Checks">.*?\n      </ParameterList>\n', '', s, flags=re.S)
+    return s
+
+
 FRICTION = [0.0]  # the sliding scene's Coulomb coefficient (--friction)
 MORTAR = [False]  # the sliding scene's pair in mortar (--mortar)
 
@@ -159,6 +198,7 @@ MORTAR = [False]  # the sliding scene's pair in mortar (--mortar)
 SCENES = {
     "sdnv100": ("sdnv100_bar.geo", [0, 0, LENGTH], deck, ("N5", "N100"), "wallforce"),
     "sliding": ("sliding_blocks.geo", [0, 0, -1.0], sliding_deck, ("BLOCK_TOP_CORNER",), "slideforce"),
+    "sdnv100_springs": ("sdnv100_bar.geo", [0, 0, LENGTH], springs_deck, ("N5", "N100"), "wall1force"),
 }
 
 

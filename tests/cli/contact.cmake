@@ -22,6 +22,10 @@ endfunction()
 # the same Newton iterations and factorisations (10%), for penalty, continuous and Lagrange, and
 # no energy balance above +0.1% of E0 at the default contact mass (BENCHMARKS section 8).
 choc_frame_invariance(sdnv100 120)
+# SDNV100 (f): the bar on 4 nodal shock links against a fixed PLAN_Z (central differences), turned
+# the same way with the plane's origin and normal (the links' Axis and Twist): the same motion and
+# link force to 1e-8 of their peaks, the same steps, no energy balance above +0.1% of E0.
+choc_frame_invariance(sdnv100_springs 120 --scene sdnv100_springs)
 
 # Hertz's impact (BENCHMARKS section 2), axisymmetric: the sphere's peak force, contact duration
 # and largest approach within a/R of Hertz (the order of the finite-sphere terms Hertz's
