@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction clean
+.PHONY: all deps configure build run test study bench bench-kept bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction clean
 
 all: build
 
@@ -38,6 +38,11 @@ bench: build
 	$(PYTHON) tools/bench_modal_direct.py --build $(BUILD)
 	$(PYTHON) tools/bench_explicit.py --build $(BUILD) --end-time 2e-5
 	$(PYTHON) tools/bench_explicit.py --build $(BUILD) --end-time 2e-5 --mesh 18 560 --ranks 2 --contact lagrange
+	$(PYTHON) tools/bench_kept_factorization.py --build $(BUILD)
+
+# Contact status changes on a kept factorisation (Update Budget) against refactoring at each.
+bench-kept: build
+	$(PYTHON) tools/bench_kept_factorization.py --build $(BUILD)
 
 # SDND100's friction: stick stiffness and dt against the rows and the exact motion.
 study-friction: build

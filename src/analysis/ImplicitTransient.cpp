@@ -435,6 +435,7 @@ void ImplicitTransient::recordFigures(const TransientSummary& sum, const Structu
   figures_.steps = sum.steps;
   figures_.newtonIterations = sum.newtonIterations;
   figures_.refactorizations = op.factorizations();
+  figures_.keptFactorizations = op.keptFactorizations();
   figures_.activeSetIterations = sum.activeSetIterations;
   figures_.maxNewtonPerStep = sum.maxNewtonPerStep;
   figures_.failedSteps = sum.failedSteps;
@@ -459,10 +460,14 @@ void ImplicitTransient::logFigures(const TransientSummary& sum, const Model& mod
   }
   else
     log() << format("  %d steps, %d Newton iterations (%.2f per step, at most %d), %d active-set "
-                    "passes, %d factorisations, %d failed attempts (smallest dt %.3e s)\n",
+                    "passes, %d factorisations%s, %d failed attempts (smallest dt %.3e s)\n",
                     sum.steps, sum.newtonIterations, double(sum.newtonIterations) / std::max(1, sum.steps),
-                    sum.maxNewtonPerStep, sum.activeSetIterations, f.refactorizations, sum.failedSteps,
-                    sum.smallestStep);
+                    sum.maxNewtonPerStep, sum.activeSetIterations, f.refactorizations,
+                    f.keptFactorizations > 0
+                        ? format(" (%d changes of contact status solved by GMRES on the factorisation "
+                                 "kept, see Update Budget)", f.keptFactorizations).c_str()
+                        : "",
+                    sum.failedSteps, sum.smallestStep);
   if (b_->links && b_->links->dashpotDrops() > 0)
     log() << format("  shock links: a dashpot was dropped in %lld step(s): closing while approaching, the "
                     "law's force jumps and the step had no solution with it\n",

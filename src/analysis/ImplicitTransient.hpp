@@ -36,6 +36,7 @@ class ImplicitTransient : public Analysis {
   // Figures of the last run (for tests and the benchmark).
   struct Figures {
     int steps = 0, newtonIterations = 0, refactorizations = 0, activeSetIterations = 0;
+    int keptFactorizations = 0;  // changes of contact status solved on the previous factorisation
     int maxNewtonPerStep = 0, failedSteps = 0, unknowns = 0;
     double wall = 0, assembly = 0, linearSolve = 0, contact = 0, output = 0;
   };

@@ -138,11 +138,18 @@ std::vector<MatrixEntry> ContactSystem::couplingEntries(const std::vector<Matrix
 // hold aM M + aK K already, so the values are those of a whole refill, bit for bit.
 void ContactSystem::fill(double aM, double aK, const std::vector<MatrixEntry>& extra) {
   if (contact_) contact_->setScale(std::max(aM * maxDiagM_ + aK * maxDiagK_, 1e-300));
-  const std::vector<MatrixEntry> entries = couplingEntries(extra);
+  fillEntries(aM, aK, couplingEntries(extra));
+}
+
+void ContactSystem::fillEntries(double aM, double aK, const std::vector<MatrixEntry>& all) {
+  if (contact_) contact_->setScale(std::max(aM * maxDiagM_ + aK * maxDiagK_, 1e-300));
+  std::vector<MatrixEntry> entries;  // the rows this rank owns (others are not summed)
   std::vector<LO> rows;
-  for (const MatrixEntry& e : entries) {
+  for (const MatrixEntry& e : all) {
     const LO l = map_->getLocalElement(e.row);
-    if (l != Teuchos::OrdinalTraits<LO>::invalid()) rows.push_back(l);
+    if (l == Teuchos::OrdinalTraits<LO>::invalid()) continue;
+    rows.push_back(l);
+    entries.push_back(e);
   }
   std::sort(rows.begin(), rows.end());
   rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
@@ -162,6 +169,7 @@ void ContactSystem::fill(double aM, double aK, const std::vector<MatrixEntry>& e
   lastAM_ = aM;
   lastAK_ = aK;
   lastRows_ = std::move(rows);
+  lastEntries_ = std::move(entries);
 }
 
 std::vector<char> ContactSystem::statusKey() const {

@@ -30,6 +30,10 @@ class ContactSystem {
   // plus the extra entries (rows this rank owns, within the declared couplings). With the
   // (aM, aK) of the last fill only the rows the coupling entries touch are rewritten.
   void fill(double aM, double aK, const std::vector<MatrixEntry>& extra = {});
+  // The same with the coupling entries given (those of an earlier fill, from lastEntries()).
+  void fillEntries(double aM, double aK, const std::vector<MatrixEntry>& entries);
+  // The coupling entries of the last fill that this rank summed (rows it owns), in order.
+  const std::vector<MatrixEntry>& lastEntries() const { return lastEntries_; }
   RCP<const CrsMatrix> matrix() const { return A_; }
   // What the factored matrix depends on besides (aM, aK): the contact statuses and the
   // version of the constraints' coefficients.
@@ -58,6 +62,7 @@ class ContactSystem {
   bool filled_ = false;
   double lastAM_ = 0.0, lastAK_ = 0.0;
   std::vector<LO> lastRows_;
+  std::vector<MatrixEntry> lastEntries_;
 };
 
 }  // namespace choc

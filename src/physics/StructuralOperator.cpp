@@ -124,6 +124,7 @@ double StructuralOperator::addConstraintForces(const Vector& u, const Vector& v,
 CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients& c,
                                                      const Vector& u, const Vector& r, Vector& du) {
   CorrectionStatus st;
+  if (restoreKept_) restoreKeptFactorization();
   ContactSystem& sys = system();
   std::vector<char> status = sys.statusKey();
   // The links' tangent, with v following u (dv/du = cv / cd); none for W = M.
@@ -139,7 +140,11 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
                     linkTangent ? links_->tangent(c.cv / c.cd) : std::vector<MatrixEntry>());
     }
     TimerScope ts(timer_, "Transient: linear solve");
-    solver_->setMatrix(sys.matrix());  // throws NumericalError when singular
+    // throws NumericalError when singular
+    if (haveKey_ && keyCoefficients_ == c)
+      solver_->updateMatrix(sys.matrix());  // a change of status: contact rows only
+    else
+      solver_->setMatrix(sys.matrix());
     haveKey_ = true;
     keyCoefficients_ = c;
     keyStatus_ = status;
@@ -157,6 +162,11 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
     ls = solver_->solve(*rhs_, *x_);
     solver_->relaxTolerance(0.0);
     nextLooser_ = 0.0;
+  }
+  const std::vector<long long> keptState = solver_->keptState();
+  if (!keptState.empty() && keptState[0] == 0) {  // the factored matrix is the current one
+    kept_.factored = sys.lastEntries();
+    kept_.coefficients = c;
   }
   st.ok = ls.converged;
   st.iterations = ls.iterations;
@@ -340,10 +350,37 @@ void StructuralOperator::restoreState() {
 void StructuralOperator::archive(StateArchive& a) const {
   if (contact_) contact_->archive(a);
   if (links_) links_->archive(a);
+  if (system_ && haveKey_ && solver_->mayKeepFactorization()) {
+    KeptFactorization k = kept_;
+    k.last = system_->lastEntries();
+    k.keyStatus = keyStatus_;
+    k.solverState = solver_->keptState();
+    k.archive(a, *K_->getComm());
+  }
 }
 void StructuralOperator::unarchive(const StateArchive& a) {
   if (contact_) contact_->unarchive(a);
   if (links_) links_->unarchive(a);
+  restoreKept_ = kept_.unarchive(a, *K_->getComm());
+}
+
+// The checkpoint's factored matrix, factored again, then its last filled matrix on the
+// kept factorisation with the solver's state: the path of the run that wrote it.
+void StructuralOperator::restoreKeptFactorization() {
+  restoreKept_ = false;
+  ContactSystem& sys = system();
+  const EffectiveCoefficients& c = kept_.coefficients;
+  const double aM = c.ca + c.cv * aM_, aK = c.cd + c.cv * aK_;
+  TimerScope ts(timer_, "Transient: linear solve");
+  sys.fillEntries(aM, aK, kept_.factored);  // rows another rank owns are skipped
+  solver_->setMatrix(sys.matrix());
+  kept_.factored = sys.lastEntries();
+  sys.fillEntries(aM, aK, kept_.last);
+  if (!kept_.solverState.empty() && kept_.solverState[0] != 0) solver_->updateMatrix(sys.matrix());
+  solver_->restoreKeptState(kept_.solverState);
+  haveKey_ = true;
+  keyCoefficients_ = c;
+  keyStatus_ = kept_.keyStatus;
 }
 
 }  // namespace choc

@@ -16,6 +16,7 @@
 #include "core/TimerScope.hpp"
 #include "contact/ContactManager.hpp"
 #include "contact/ContactSystem.hpp"
+#include "physics/KeptFactorization.hpp"
 #include "physics/DirectLinks.hpp"
 #include "physics/Loads.hpp"
 #include "physics/ProductCache.hpp"
@@ -78,6 +79,7 @@ class StructuralOperator : public SecondOrderOperator {
   const Loads* loads() const { return loads_.get(); }  // null: none
 
   int factorizations() const { return solver_->factorizations(); }
+  int keptFactorizations() const { return solver_->updates(); }
   const LinearSolver& solver() const { return *solver_; }
   int unknowns() const;  // global rows of the solved system (DOFs + pressure unknowns)
   long long masslessDofs() const { return masslessGlobal_; }  // DOFs whose mass row is zero
@@ -110,6 +112,11 @@ class StructuralOperator : public SecondOrderOperator {
   bool haveKey_ = false;
   EffectiveCoefficients keyCoefficients_;
   std::vector<char> keyStatus_;
+  // The factored matrix's coupling entries and coefficients, while the solver may keep it
+  // through changes of status; a checkpoint's, to rebuild at the first correction.
+  KeptFactorization kept_;
+  bool restoreKept_ = false;
+  void restoreKeptFactorization();
 };
 
 }  // namespace choc

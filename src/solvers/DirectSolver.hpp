@@ -5,6 +5,9 @@
 
 namespace choc {
 
-std::unique_ptr<LinearSolver> makeDirectSolver(const std::string& package, double residualTolerance);
+// budget: preconditioned solves a kept factorisation may spend after updateMatrix() before a
+// refactorisation (0: always refactor; -1: by the size, see DirectSolver.cpp).
+std::unique_ptr<LinearSolver> makeDirectSolver(const std::string& package, double residualTolerance,
+                                               int budget = -1);
 
 }  // namespace choc

@@ -5,6 +5,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -25,9 +26,22 @@ class LinearSolver {
   // Sets the matrix and computes the factorisation or the preconditioner. Throws
   // NumericalError when the matrix is singular or the factorisation fails.
   virtual void setMatrix(RCP<const CrsMatrix> A) = 0;
+  // A has the graph of the matrix last set and differs from it in a few rows (a change of
+  // contact status with the same effective coefficients). A direct solver may keep its
+  // factorisation and solve by GMRES preconditioned by it (a low-rank update); by default,
+  // and whenever that does not pay, it is setMatrix(A).
+  virtual void updateMatrix(RCP<const CrsMatrix> A) { setMatrix(A); }
+  // Whether updateMatrix() may keep the factorisation of the matrix last set.
+  virtual bool mayKeepFactorization() const { return false; }
+  // The state of a kept factorisation besides the matrices (for checkpoints), and back after
+  // setMatrix(factored) and updateMatrix(current).
+  virtual std::vector<long long> keptState() const { return {}; }
+  virtual void restoreKeptState(const std::vector<long long>& /*state*/) {}
   virtual LinearSolveStatus solve(const MultiVector& b, MultiVector& x) = 0;
   virtual std::string description() const = 0;
   int factorizations() const { return factorizations_; }
+  // Matrices given by updateMatrix() that were solved on the kept factorisation.
+  int updates() const { return updates_; }
   // For the following solves: an iterative solver may stop once the relative residual is at
   // most max(its Tolerance, looser) (inexact Newton: no solve more exact than the Newton test
   // needs); a direct solver ignores it. 0 restores the Tolerance.
@@ -35,6 +49,7 @@ class LinearSolver {
 
  protected:
   int factorizations_ = 0;
+  int updates_ = 0;
   double looser_ = 0.0;
 };
 

@@ -1,0 +1,154 @@
+// The direct solver's kept factorisation (LinearSolver::updateMatrix, "Update Budget"), on 1
+// and 2 ranks: a matrix that differs from the factored one in r rows is solved by GMRES
+// preconditioned by the old factorisation in at most r + 1 iterations (A P^-1 - I has rank
+// <= r) to the solver's tolerance, without a new factorisation; a budget too small for that
+// rank, or a budget of 0, refactors and still gives the new matrix's solution.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Teuchos_DefaultComm.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include "solvers/LinearSolver.hpp"
+#include "solvers/PreconditionedGmres.hpp"
+
+namespace choc {
+namespace {
+
+constexpr GO kN = 240;
+
+// A symmetric positive definite matrix with the graph of a 1D chain plus links i -- i+7:
+// diagonal 6, -1 on the chain, -0.5 on the links. In each row listed in `changed` (global
+// ids) the diagonal becomes 6 + 3 sin(i) + 2 and every off-diagonal entry is scaled by -1.5:
+// a row change like a contact node's status change (same graph, other values).
+RCP<CrsMatrix> matrix(const std::vector<GO>& changed) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto map = rcp(new Map(Tpetra::global_size_t(kN), 0, comm));
+  auto A = rcp(new CrsMatrix(map, 5));
+  for (size_t l = 0; l < map->getNodeNumElements(); ++l) {
+    const GO i = map->getGlobalElement(LO(l));
+    const bool ch = std::find(changed.begin(), changed.end(), i) != changed.end();
+    std::vector<GO> cols;
+    std::vector<double> vals;
+    auto add = [&](GO j, double v) {
+      if (j < 0 || j >= kN) return;
+      cols.push_back(j);
+      vals.push_back(ch && j != i ? -1.5 * v : v);
+    };
+    add(i, ch ? 8.0 + 3.0 * std::sin(double(i)) : 6.0);
+    add(i - 1, -1.0);
+    add(i + 1, -1.0);
+    add(i - 7, -0.5);
+    add(i + 7, -0.5);
+    A->insertGlobalValues(i, Teuchos::ArrayView<const GO>(cols), Teuchos::ArrayView<const double>(vals));
+  }
+  A->fillComplete();
+  return A;
+}
+
+Teuchos::ParameterList directWithBudget(int budget) {
+  Teuchos::ParameterList p = linearSolverParameters();
+  p.set("Method", "Direct");
+  p.set("Tolerance", 1e-12);
+  p.set("Update Budget", budget);
+  return p;
+}
+
+// b_i = 1 + i / kN; the solution of A x = b by a fresh factorisation of A.
+void reference(const RCP<CrsMatrix>& A, MultiVector& b, MultiVector& x) {
+  for (size_t l = 0; l < b.getLocalLength(); ++l)
+    b.replaceLocalValue(LO(l), 0, 1.0 + double(b.getMap()->getGlobalElement(LO(l))) / kN);
+  auto fresh = makeLinearSolver(directWithBudget(0));
+  fresh->setMatrix(A);
+  ASSERT_TRUE(fresh->solve(b, x).converged);
+}
+
+double relativeDifference(const MultiVector& x, const MultiVector& y) {
+  MultiVector d(x, Teuchos::Copy);
+  d.update(-1.0, y, 1.0);
+  std::vector<double> nd(1), ny(1);
+  d.norm2(Teuchos::ArrayView<double>(nd));
+  y.norm2(Teuchos::ArrayView<double>(ny));
+  return nd[0] / ny[0];
+}
+
+TEST(MpiKeptFactorization, RowChangesAreSolvedWithinRankPlusOneIterations) {
+  const std::vector<GO> changed{3, 100, 101, 239};  // rows on both ranks of a 2-rank run
+  auto A0 = matrix({}), A1 = matrix(changed);
+  MultiVector b(A1->getRangeMap(), 1), x(A1->getDomainMap(), 1), xRef(A1->getDomainMap(), 1);
+  reference(A1, b, xRef);
+  auto solver = makeLinearSolver(directWithBudget(100));
+  solver->setMatrix(A0);
+  solver->updateMatrix(A1);
+  const LinearSolveStatus st = solver->solve(b, x);
+  ASSERT_TRUE(st.converged) << st.message;
+  EXPECT_LE(st.iterations, int(changed.size()) + 1);
+  EXPECT_GE(st.iterations, 1);  // A1 is not A0: x0 = A0^-1 b alone does not solve it
+  EXPECT_LE(st.relativeResidual, 1e-12);
+  EXPECT_LT(relativeDifference(x, xRef), 1e-10);
+  EXPECT_EQ(solver->factorizations(), 1);
+  EXPECT_EQ(solver->updates(), 1);
+  // Back to the factored matrix: exact at once, no iteration.
+  solver->updateMatrix(A0);
+  MultiVector x0(A0->getDomainMap(), 1), x0Ref(A0->getDomainMap(), 1);
+  reference(A0, b, x0Ref);
+  const LinearSolveStatus st0 = solver->solve(b, x0);
+  ASSERT_TRUE(st0.converged) << st0.message;
+  EXPECT_EQ(st0.iterations, 0);
+  EXPECT_LT(relativeDifference(x0, x0Ref), 1e-12);
+  EXPECT_EQ(solver->factorizations(), 1);
+}
+
+TEST(MpiKeptFactorization, AnExhaustedOrZeroBudgetRefactors) {
+  std::vector<GO> changed;
+  for (GO i = 5; i < kN; i += 20) changed.push_back(i);  // 12 rows: rank 12
+  auto A0 = matrix({}), A1 = matrix(changed);
+  MultiVector b(A1->getRangeMap(), 1), xRef(A1->getDomainMap(), 1);
+  reference(A1, b, xRef);
+  for (int budget : {0, 3}) {
+    auto solver = makeLinearSolver(directWithBudget(budget));
+    solver->setMatrix(A0);
+    solver->updateMatrix(A1);
+    MultiVector x(A1->getDomainMap(), 1);
+    const LinearSolveStatus st = solver->solve(b, x);
+    ASSERT_TRUE(st.converged) << st.message;
+    EXPECT_LT(relativeDifference(x, xRef), 1e-10) << "budget " << budget;
+    EXPECT_EQ(solver->factorizations(), 2) << "budget " << budget;
+    EXPECT_EQ(solver->updates(), 0) << "budget " << budget;
+  }
+}
+
+// GMRES itself, with the identity as preconditioner on a diagonal matrix of eigenvalues 2, 3
+// and 4: x0 = b leaves a residual (1 - d) b in all three eigenspaces, so 3 iterations solve it
+// and 2 do not.
+TEST(MpiKeptFactorization, GmresConvergesInAsManyIterationsAsDistinctEigenvalues) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  auto map = rcp(new Map(Tpetra::global_size_t(kN), 0, comm));
+  auto D = rcp(new CrsMatrix(map, 1));
+  for (size_t l = 0; l < map->getNodeNumElements(); ++l) {
+    const GO i = map->getGlobalElement(LO(l));
+    const double v = 2.0 + double(i % 3);
+    D->insertGlobalValues(i, Teuchos::ArrayView<const GO>(&i, 1), Teuchos::ArrayView<const double>(&v, 1));
+  }
+  D->fillComplete();
+  Vector b(map), x(map);
+  b.putScalar(1.0);
+  auto identity = [](const Vector& v, Vector& z) {
+    z.assign(v);
+    return std::string();
+  };
+  const GmresOutcome g = preconditionedGmres(*D, identity, b, x, 1e-12, 50);
+  ASSERT_TRUE(g.converged);
+  EXPECT_EQ(g.iterations, 3);
+  auto xd = x.getData();
+  for (size_t l = 0; l < map->getNodeNumElements(); ++l)
+    EXPECT_NEAR(xd[l], 1.0 / (2.0 + double(map->getGlobalElement(LO(l)) % 3)), 1e-12);
+  const GmresOutcome short2 = preconditionedGmres(*D, identity, b, x, 1e-12, 2);
+  EXPECT_FALSE(short2.converged);
+}
+
+}  // namespace
+}  // namespace choc
