@@ -24,10 +24,10 @@ Teuchos::ParameterList linearSolverParameters() {
   declareInt(p, "Update Budget", -1,
              "Method = Direct: after a change of contact status alone (same time step and "
              "coefficients) the factorisation is kept and the changed matrix solved by GMRES "
-             "preconditioned by it (a low-rank update) until this many preconditioned solves "
-             "were spent since the factorisation, then refactored; 0 always refactors; -1 "
-             "(auto): none below 5,000 unknowns, else half the measured cost of a KLU2 "
-             "factorisation in solves (20 at 43,308 unknowns, 47 at 115,392)",
+             "preconditioned by it (a low-rank update) until that matrix has cost this many "
+             "extra preconditioned solves, then it is factored itself; 0 always refactors; -1 "
+             "(auto): none below 5,000 unknowns, else the measured cost of a KLU2 "
+             "factorisation in solves (40 at 43,308 unknowns, 93 at 115,392)",
              Range::atLeast(-1));
   declareChoice(p, "Preconditioner", "RILUK", {"None", "RILUK", "ILUT", "Jacobi", "Gauss-Seidel", "Additive Schwarz"},
                 "Ifpack2 preconditioner for the Krylov methods (RILUK, ILUT and Gauss-Seidel act "
