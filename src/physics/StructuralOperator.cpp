@@ -163,10 +163,12 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
     solver_->relaxTolerance(0.0);
     nextLooser_ = 0.0;
   }
-  const std::vector<long long> keptState = solver_->keptState();
-  if (!keptState.empty() && keptState[0] == 0) {  // the factored matrix is the current one
+  // A new factorisation (here or inside the solve) is of the current matrix: its entries are
+  // what a checkpoint must rebuild it from while the solver may keep it.
+  if (solver_->factorizations() != recordedFactorizations_ && solver_->mayKeepFactorization()) {
     kept_.factored = sys.lastEntries();
     kept_.coefficients = c;
+    recordedFactorizations_ = solver_->factorizations();
   }
   st.ok = ls.converged;
   st.iterations = ls.iterations;
@@ -375,6 +377,7 @@ void StructuralOperator::restoreKeptFactorization() {
   sys.fillEntries(aM, aK, kept_.factored);  // rows another rank owns are skipped
   solver_->setMatrix(sys.matrix());
   kept_.factored = sys.lastEntries();
+  recordedFactorizations_ = solver_->factorizations();
   sys.fillEntries(aM, aK, kept_.last);
   if (!kept_.solverState.empty() && kept_.solverState[0] != 0) solver_->updateMatrix(sys.matrix());
   solver_->restoreKeptState(kept_.solverState);

@@ -116,6 +116,7 @@ class StructuralOperator : public SecondOrderOperator {
   // through changes of status; a checkpoint's, to rebuild at the first correction.
   KeptFactorization kept_;
   bool restoreKept_ = false;
+  int recordedFactorizations_ = -1;  // the solver's factorisations when kept_.factored was taken
   void restoreKeptFactorization();
 };
 

@@ -77,10 +77,6 @@ class Amesos2Solver : public LinearSolver {
     ++factorizations_;
   }
 
-  // x = A^-1 b by the factorisation; then, while the residual is above the tolerance, up to
-  // kRefinements steps of iterative refinement (x += A^-1 (b - A x)): a solve whose error
-  // is only the factorisation's round-off amplified by the matrix's conditioning (stiff
-  // contact and friction springs) is brought within the tolerance; a singular one is not.
   // Keeps the factorisation: solve() decides whether it still pays (see solveByUpdate()).
   void updateMatrix(RCP<const CrsMatrix> A) override {
     if (A_.is_null() || A->getGlobalNumRows() != A_->getGlobalNumRows() || budget() == 0) {
@@ -102,6 +98,11 @@ class Amesos2Solver : public LinearSolver {
     counted_ = s[2] != 0;
   }
 
+  // x = A^-1 b by the factorisation (by GMRES on the kept one while it pays, see
+  // solveByUpdate()); then, while the residual is above the tolerance, up to
+  // kRefinements steps of iterative refinement (x += A^-1 (b - A x)): a solve whose error
+  // is only the factorisation's round-off amplified by the matrix's conditioning (stiff
+  // contact and friction springs) is brought within the tolerance; a singular one is not.
   LinearSolveStatus solve(const MultiVector& b, MultiVector& x) override {
     if (stale_ && spent_ < budget()) {
       LinearSolveStatus st = solveByUpdate(b, x);
@@ -247,7 +248,7 @@ class Amesos2Solver : public LinearSolver {
 
   std::string package_;
   double tol_;
-  int budget_;          // preconditioned solves per kept factorisation; -1: autoBudget()
+  int budget_;          // extra solves a matrix may cost on a kept factorisation; -1: by size, budget()
   bool stale_ = false;  // A_ is not the factored matrix
   int spent_ = 0;       // extra preconditioned solves spent on the current matrix
   bool counted_ = false;  // the current matrix was solved on the kept factorisation

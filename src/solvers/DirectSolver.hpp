@@ -1,5 +1,5 @@
 // Amesos2 sparse direct solver (KLU2 by default): symbolic once per structure, numeric per
-// setMatrix().
+// setMatrix(); after updateMatrix() the numeric factorisation may be kept (GMRES on it).
 #pragma once
 #include "solvers/LinearSolver.hpp"
 
