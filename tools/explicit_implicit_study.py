@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Explicit against implicit, error against cost (issue 17's study; part of `make study`).
 
-Two scenes with a closed form over the whole history, each run by both schemes on a series of
-meshes, the time step tied to the mesh (Courant number about 1, where both schemes are most
-accurate for a bar's wave):
+Four scenes with a closed form, each run by both schemes on a series of meshes. For the bars
+the time step is tied to the mesh (Courant number about 1, where both schemes are most accurate
+for a bar's wave) and the error is over the whole history:
   - SDNV100 (BENCHMARKS section 1): input/sdnv100_explicit.xml (central differences, lumped
     mass, forward-increment Lagrange contact) and input/sdnv100.xml's analysis 'lagrange'
     (Newmark beta = 0.28, gamma = 0.55 as the deck, consistent mass with the massless contact
@@ -17,9 +17,19 @@ accurate for a bar's wave):
     --dim 3`), dt = C h / c
     (c the oedometric speed, 5,875 m/s; C = 1 implicit, 0.95 explicit, below its critical step
     h / c); error: DZ(N1), bar 1's contact face.
+  - SDNL111 C's scene: the same with C's Rayleigh damping (1e-7 K + 1e-3 M) in both schemes,
+    the implicit run input/sdnl111c.xml's first analysis (alpha = -0.1) at the default contact
+    mass; the exact solution is the undamped one, as in C's regression case.
+  - Hertz's impact, axisymmetric (input/hertz.xml: average acceleration, dt 0.1 to 0.4 us;
+    central differences on the lumped TRI6 mass with forward-increment Lagrange contact, 0.1 us
+    steps cut into sub-steps), TRI6 of 0.2 to 0.025 mm near the first point of contact
+    (meshes/hertz_axisymmetric.geo); error: the largest of the peak force's, the contact
+    duration's and the largest approach's differences from Hertz (tools/hertz.py). Hertz's
+    half-space theory is itself about 3.7 % from the finite sphere (README, section "Contact"),
+    so each run is also compared with the finest one, the discretisation's share.
 Cost: the whole process's wall time (start-up, mesh, assembly included), median of --repeat
 runs. Prints one table per scene and, per scene and scheme, the cheapest run within 1 % and
-0.1 % of the peak, and writes OUT/study.csv.
+0.1 % of the peak (for Hertz also within 1 % of the finest run), and writes OUT/study.csv.
     explicit_implicit_study.py [--build build] [--out results/explicit_implicit] [--repeat 2]
 """
 import argparse
@@ -29,10 +39,13 @@ import os
 import re
 import statistics
 import subprocess
+import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+import hertz  # noqa: E402
 
 
 def sub1(pattern, repl, text):
@@ -110,20 +123,13 @@ def sdnv100(choc, out, repeat):
     return rows
 
 
-def sdnl111d(choc, out, repeat):
+def bars(choc, out, repeat, scene, explicit, implicit):
+    """SDNL111's two 3D bars (lateral motion blocked) by `explicit` and `implicit` (input texts,
+    Lagrange contact), the implicit one also with alpha = 0 (trapezoidal), on n HEX8 along each
+    bar; error: DZ(N1), bar 1's contact face, against d'Alembert."""
     E, nu, rho = 2e11, 0.3, 7800.0
     C = math.sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) / rho)  # lateral motion blocked
     rows = []
-
-    def lagrange(name):  # the input with Lagrange contact instead of its penalty
-        return sub1(r'<Parameter name="Method" type="string" value="Penalty"/>\s*'
-                    r'<Parameter name="Penalty Stiffness" type="double" value="[^"]*"/>',
-                    '<Parameter name="Method" type="string" value="Lagrange"/>',
-                    open(os.path.join(ROOT, "input", name)).read())
-    explicit = lagrange("sdnl111d_explicit.xml")
-    implicit = lagrange("sdnl111d.xml")
-    # Lagrange contact at the default contact mass (the surfaces' mass redistributed).
-    implicit = sub1(r'<Parameter name="Contact Mass" type="string" value="standard"/>', "", implicit)
     trapezoidal = set_param(implicit, "Alpha", "0")
     for scheme, text0 in (("explicit", explicit), ("implicit", implicit), ("implicit, trapezoidal", trapezoidal)):
         for n in (50, 100, 200, 400, 800) + ((1600,) if scheme == "explicit" else ()):
@@ -134,28 +140,127 @@ def sdnl111d(choc, out, repeat):
                                check=True, stdout=subprocess.DEVNULL)
             h = 1.0 / n
             # Central differences' critical step is h / c here (the element bound, exact on a
-            # regular bar): 0.95 of it, which the stability check accepts without sub-steps.
+            # regular bar): 0.95 of it, which the stability check accepts without sub-steps
+            # (with C's stiffness-proportional damping the fine meshes' steps are cut).
             dt = (0.95 if scheme == "explicit" else 1.0) * h / C
-            rows.append(measure(choc, out, "SDNL111 D", scheme, n, text0, mesh, dt, h, C, ("N1:DZ",), repeat))
+            rows.append(measure(choc, out, scene, scheme, n, text0, mesh, dt, h, C, ("N1:DZ",), repeat))
     return rows
 
 
+def lagrange(name):
+    """input/NAME with Lagrange contact instead of its penalty (whose stiffness was chosen for
+    50 elements)."""
+    return sub1(r'<Parameter name="Method" type="string" value="Penalty"/>\s*'
+                r'<Parameter name="Penalty Stiffness" type="double" value="[^"]*"/>',
+                '<Parameter name="Method" type="string" value="Lagrange"/>',
+                open(os.path.join(ROOT, "input", name)).read())
+
+
+def default_contact_mass(text):
+    """Lagrange contact at the default contact mass (the surfaces' mass redistributed)."""
+    return sub1(r'<Parameter name="Contact Mass" type="string" value="standard"/>', "", text)
+
+
+def sdnl111d(choc, out, repeat):
+    return bars(choc, out, repeat, "SDNL111 D", lagrange("sdnl111d_explicit.xml"),
+                default_contact_mass(lagrange("sdnl111d.xml")))
+
+
+def sdnl111c(choc, out, repeat):
+    """C: D's scene with C's Rayleigh damping (1e-7 K + 1e-3 M) in both schemes; the implicit
+    run is input/sdnl111c.xml's first analysis (modified average acceleration, alpha = -0.1)."""
+    implicit = default_contact_mass(only_analysis(open(os.path.join(ROOT, "input", "sdnl111c.xml")).read(),
+                                                  "c1_modified"))
+    damping = re.search(r'\n\s*<ParameterList name="Rayleigh Damping">.*?</ParameterList>', implicit, re.S).group(0)
+    explicit = sub1(r'(<Parameter name="End Time" type="double" value="[^"]*"/>)', lambda m: m.group(1) + damping,
+                    lagrange("sdnl111d_explicit.xml"))
+    return bars(choc, out, repeat, "SDNL111 C", explicit, implicit)
+
+
+HERTZ_QUANTITIES = ("peak force", "contact duration", "largest approach")
+
+
+def hertz_run(choc, out, scheme, size, dt, text, repeat):
+    """input/hertz.xml's sphere (axisymmetric TRI6, Lagrange contact) meshed with elements of
+    `size` near the first point of contact, steps of dt; error: the largest of the peak force's,
+    the contact duration's and the largest approach's differences from Hertz."""
+    mesh = os.path.join(out, f"hertz_h{size * 1e3:g}mm.msh")
+    if not os.path.exists(mesh):
+        subprocess.run(["gmsh", "-2", "-order", "2", "-format", "msh41", "-setnumber", "h", repr(size),
+                        os.path.join(ROOT, "meshes", "hertz_axisymmetric.geo"), "-o", mesh],
+                       check=True, stdout=subprocess.DEVNULL)
+    text = sub1(r'(<Parameter name="File" type="string" value=")[^"]*"', rf'\g<1>{mesh}"', text)
+    text = set_param(set_param(text, "Time Step", repr(dt)), "Exodus Interval", "0")
+    tag = f"hertz_{scheme.replace(', ', '_')}_h{size * 1e3:g}mm_dt{dt * 1e9:g}ns"
+    xml = os.path.join(out, tag + ".xml")
+    open(xml, "w").write(text)
+    _, wall, steps, substep = run(choc, xml, os.path.join(out, tag), repeat)
+    m = hertz.measure(os.path.join(out, tag, "axisymmetric.history.csv"), hertz.hertz())
+    diffs = {q: 100 * (m[q][0] / m[q][1] - 1) for q in HERTZ_QUANTITIES}
+    worst = max(diffs.values(), key=abs)
+    print(f"  Hertz {scheme} h = {size * 1e3:g} mm, dt = {dt:g} s: {worst:+.3g} % in {wall:.2f} s", flush=True)
+    return {"scene": "Hertz", "scheme": scheme, "along": f"{size * 1e3:g} mm", "dt": substep or dt, "courant": "",
+            "steps": steps, "error": abs(worst), "error_other": " / ".join(f"{diffs[q]:+.2f}" for q in HERTZ_QUANTITIES),
+            "wall": wall, "values": {q: m[q][0] for q in HERTZ_QUANTITIES}}
+
+
+def hertz_scene(choc, out, repeat):
+    """Hertz's impact (axisymmetric): central differences on the lumped TRI6 mass (forward-
+    increment Lagrange contact, the 0.1 us step cut into sub-steps below the critical step)
+    against the input's average acceleration (massless contact arc) at steps of 0.1 to 0.4 us,
+    on meshes of 0.2 to 0.025 mm near the first point of contact (the input's: 0.05 mm)."""
+    implicit = open(os.path.join(ROOT, "input", "hertz.xml")).read()
+    explicit = sub1(r'value="average acceleration"/>',
+                    'value="central differences"/>\n      <Parameter name="Stability Check" type="string" value="substep"/>',
+                    implicit)
+    explicit = sub1(r'(<Parameter name="Material" type="string" value="steel"/>)',
+                    r'\g<1>\n        <Parameter name="Mass" type="string" value="lumped"/>', explicit)
+    rows = [hertz_run(choc, out, "explicit", size, 1e-7, explicit, repeat) for size in (2e-4, 1e-4, 5e-5, 2.5e-5)]
+    rows += [hertz_run(choc, out, "implicit", size, dt, implicit, repeat)
+             for size, dt in ((2e-4, 1e-7), (1e-4, 1e-7), (5e-5, 4e-7), (5e-5, 2e-7), (5e-5, 1e-7))]
+    # The discretisation's share: each run against the finest one (explicit, 0.025 mm), whose
+    # own distance from Hertz is the finite sphere's (README, section "Contact").
+    finest = rows[3]["values"]
+    for r in rows:
+        r["from_finest"] = 100 * max(abs(r["values"][q] / finest[q] - 1) for q in HERTZ_QUANTITIES)
+    return rows
+
+
+def cheapest(rows, key, target):
+    ok = [r for r in rows if r[key] <= target]
+    best = min(ok, key=lambda r: r["wall"]) if ok else None
+    return f"<= {target:g} %: " + (f"{best['along']} (dt {best['dt']:.3g} s), {best[key]:.3g} %, {best['wall']:.2f} s"
+                                   if best else "not reached")
+
+
 def report(rows):
-    for scene, what in (("SDNV100", "DZ(N5)"), ("SDNL111 D", "DZ(N1)")):
+    for scene, what in (("SDNV100", "DZ(N5)"), ("SDNL111 D", "DZ(N1)"), ("SDNL111 C", "DZ(N1)"),
+                        ("Hertz", "the peak force, contact duration and largest approach (the largest)")):
         mine = [r for r in rows if r["scene"] == scene]
-        print(f"\n{scene}: max error of {what} over the whole history, % of its peak, against the run's wall time")
-        print("| scheme | HEX8 along | dt [s] | Courant | steps | max error | wall [s] |")
-        print("|---|---|---|---|---|---|---|")
+        hertz_scene = scene == "Hertz"
+        print(f"\n{scene}: max error of {what}" + (" against Hertz" if hertz_scene else " over the whole history")
+              + ", % of " + ("Hertz's values" if hertz_scene else "its peak") + ", against the run's wall time")
+        if hertz_scene:
+            print("| scheme | TRI6 near O | dt [s] | steps | force / duration / approach [%] | max error | "
+                  "from the finest run | wall [s] |")
+            print("|---|---|---|---|---|---|---|---|")
+        else:
+            print("| scheme | HEX8 along | dt [s] | Courant | steps | max error | wall [s] |")
+            print("|---|---|---|---|---|---|---|")
         for r in mine:
-            print(f"| {r['scheme']} | {r['along']} | {r['dt']:.3g} | {r['courant']:.3f} | {r['steps']} | "
-                  f"{r['error']:.3g} % | {r['wall']:.2f} |")
+            if hertz_scene:
+                print(f"| {r['scheme']} | {r['along']} | {r['dt']:.3g} | {r['steps']} | {r['error_other']} | "
+                      f"{r['error']:.3g} % | {r['from_finest']:.3g} % | {r['wall']:.2f} |")
+            else:
+                print(f"| {r['scheme']} | {r['along']} | {r['dt']:.3g} | {r['courant']:.3f} | {r['steps']} | "
+                      f"{r['error']:.3g} % | {r['wall']:.2f} |")
         for scheme in ("explicit", "implicit", "implicit, trapezoidal"):
-            cells = []
-            for target in (1.0, 0.1):
-                ok = [r for r in mine if r["scheme"] == scheme and r["error"] <= target]
-                best = min(ok, key=lambda r: r["wall"]) if ok else None
-                cells.append(f"<= {target:g} %: " + (f"{best['along']} along, {best['error']:.3g} %, {best['wall']:.2f} s"
-                                                     if best else "not reached"))
+            theirs = [r for r in mine if r["scheme"] == scheme]
+            if not theirs:
+                continue
+            cells = [cheapest(theirs, "error", target) for target in (1.0, 0.1)]
+            if hertz_scene:  # Hertz's own floor (the finite sphere) hides the discretisation's error
+                cells.append("within " + cheapest(theirs, "from_finest", 1.0) + " of the finest run")
             print(f"cheapest {scheme}: " + "; ".join(cells))
 
 
@@ -168,9 +273,11 @@ def main():
     choc = os.path.abspath(os.path.join(a.build, "choc"))
     out = os.path.abspath(a.out)
     os.makedirs(out, exist_ok=True)
-    rows = sdnv100(choc, out, a.repeat) + sdnl111d(choc, out, a.repeat)
+    rows = sdnv100(choc, out, a.repeat) + sdnl111d(choc, out, a.repeat) + sdnl111c(choc, out, a.repeat) + \
+        hertz_scene(choc, out, a.repeat)
+    fields = ["scene", "scheme", "along", "dt", "courant", "steps", "error", "error_other", "from_finest", "wall"]
     with open(os.path.join(out, "study.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
         w.writeheader()
         w.writerows(rows)
     report(rows)
