@@ -85,16 +85,22 @@ def run(choc, xml, outdir, repeat):
         float(sub.group(2)) if sub else None
 
 
+def run_on(choc, out, tag, text, mesh, dt, repeat):
+    """Runs `text` (an input) on `mesh` with step dt and no Exodus output as OUT/TAG.xml into
+    OUT/TAG; returns run()'s errors, wall time, steps and sub-step."""
+    text = sub1(r'(<Parameter name="File" type="string" value=")[^"]*"', rf'\g<1>{mesh}"', text)
+    text = set_param(set_param(text, "Time Step", repr(dt)), "Exodus Interval", "0")
+    xml = os.path.join(out, tag + ".xml")
+    open(xml, "w").write(text)
+    return run(choc, xml, os.path.join(out, tag), repeat)
+
+
 def measure(choc, out, scene, scheme, n, text, mesh, dt, h, c, quantities, repeat):
     """Runs `text` (an input) on `mesh` with step dt (no Exodus output) and returns its row:
     the max errors of `quantities` (the first is the row's error), the sub-step actually taken
     and the Courant number c dt / h."""
-    text = sub1(r'(<Parameter name="File" type="string" value=")[^"]*"', rf'\g<1>{mesh}"', text)
-    text = set_param(set_param(text, "Time Step", repr(dt)), "Exodus Interval", "0")
     tag = f"{scene.replace(' ', '').lower()}_{scheme.replace(', ', '_')}_{n}"
-    xml = os.path.join(out, tag + ".xml")
-    open(xml, "w").write(text)
-    err, wall, steps, substep = run(choc, xml, os.path.join(out, tag), repeat)
+    err, wall, steps, substep = run_on(choc, out, tag, text, mesh, dt, repeat)
     dt = substep or dt
     print(f"  {scene} {scheme} n = {n}: {err[quantities[0]]:.3g} % in {wall:.2f} s", flush=True)
     return {"scene": scene, "scheme": scheme, "along": n, "dt": dt, "courant": dt * c / h, "steps": steps,
@@ -189,12 +195,8 @@ def hertz_run(choc, out, scheme, size, dt, text, repeat):
         subprocess.run(["gmsh", "-2", "-order", "2", "-format", "msh41", "-setnumber", "h", repr(size),
                         os.path.join(ROOT, "meshes", "hertz_axisymmetric.geo"), "-o", mesh],
                        check=True, stdout=subprocess.DEVNULL)
-    text = sub1(r'(<Parameter name="File" type="string" value=")[^"]*"', rf'\g<1>{mesh}"', text)
-    text = set_param(set_param(text, "Time Step", repr(dt)), "Exodus Interval", "0")
     tag = f"hertz_{scheme.replace(', ', '_')}_h{size * 1e3:g}mm_dt{dt * 1e9:g}ns"
-    xml = os.path.join(out, tag + ".xml")
-    open(xml, "w").write(text)
-    _, wall, steps, substep = run(choc, xml, os.path.join(out, tag), repeat)
+    _, wall, steps, substep = run_on(choc, out, tag, text, mesh, dt, repeat)
     m = hertz.measure(os.path.join(out, tag, "axisymmetric.history.csv"), hertz.hertz())
     diffs = {q: 100 * (m[q][0] / m[q][1] - 1) for q in HERTZ_QUANTITIES}
     worst = max(diffs.values(), key=abs)

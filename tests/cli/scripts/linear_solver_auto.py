@@ -13,11 +13,10 @@ import re
 import subprocess
 import sys
 
-choc, src, work = sys.argv[1:4]
-os.makedirs(work, exist_ok=True)
-mesh = os.path.join(work, "bars_3_100.exo")
-subprocess.run([os.path.join(src, "tools", "make-scale-mesh.sh"), choc, "3", "100", mesh], check=True,
-               stdout=subprocess.DEVNULL)
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from scale_bars import bars_3_100  # noqa: E402
+
+choc, src, work, mesh = bars_3_100()
 base = open(os.path.join(src, "input", "scale-3d.xml")).read().replace('"../meshes/scale_3d.exo"', f'"{mesh}"')
 base = base.replace('<Parameter name="Exodus Interval" type="int" value="20"/>',
                     '<Parameter name="Exodus Interval" type="int" value="0"/>')
