@@ -31,87 +31,119 @@ std::unique_ptr<SymmetricProduct> SymmetricProduct::build(const CrsMatrix& K) {
     return nullptr;
   const auto A = K.getLocalMatrixHost();
   const size_t n = rowMap->getNodeNumElements();
+  std::unique_ptr<SymmetricProduct> p(new SymmetricProduct());
   // Column index -> owned row index, or -1 for another rank's unknown.
-  std::vector<LO> owned(colMap->getNodeNumElements(), -1);
-  for (size_t c = 0; c < owned.size(); ++c) owned[c] = rowMap->getLocalElement(colMap->getGlobalElement(LO(c)));
+  p->owned_.assign(colMap->getNodeNumElements(), -1);
+  for (size_t c = 0; c < p->owned_.size(); ++c)
+    p->owned_[c] = rowMap->getLocalElement(colMap->getGlobalElement(LO(c)));
 
   // Tpetra's column map lists the owned columns in the row map's order: with each row's entries
   // sorted by column, a row's owned columns are then ascending in owned index and need no sort.
-  bool ordered = K.getCrsGraph()->isSorted();
-  for (size_t c = 0, next = 0; c < owned.size() && ordered; ++c) {
-    if (owned[c] < 0) continue;
-    ordered = size_t(owned[c]) >= next;
-    next = size_t(owned[c]) + 1;
+  p->ordered_ = K.getCrsGraph()->isSorted();
+  for (size_t c = 0, next = 0; c < p->owned_.size() && p->ordered_; ++c) {
+    if (p->owned_[c] < 0) continue;
+    p->ordered_ = size_t(p->owned_[c]) >= next;
+    next = size_t(p->owned_[c]) + 1;
   }
 
-  std::unique_ptr<SymmetricProduct> p(new SymmetricProduct());
   p->diag_.assign(n, 0.0);
   p->upperRows_.assign(n + 1, 0);
   p->ghostRows_.assign(n + 1, 0);
-  std::vector<double> rowScale(n, 0.0);
-  size_t lower = 0;
   for (size_t i = 0; i < n; ++i) {
     for (auto k = A.graph.row_map(i); k < A.graph.row_map(i + 1); ++k) {
-      const LO c = A.graph.entries(k), j = owned[c];
-      rowScale[i] = std::max(rowScale[i], std::abs(A.values(k)));
+      const LO j = p->owned_[A.graph.entries(k)];
       if (j < 0) ++p->ghostRows_[i + 1];
       else if (size_t(j) > i) ++p->upperRows_[i + 1];
-      else if (size_t(j) < i) ++lower;
     }
   }
   for (size_t i = 0; i < n; ++i) {
     p->upperRows_[i + 1] += p->upperRows_[i];
     p->ghostRows_[i + 1] += p->ghostRows_[i];
   }
-  bool symmetric = lower == p->upperRows_[n];
   p->upperCols_.resize(p->upperRows_[n]);
   p->upperVals_.resize(p->upperRows_[n]);
   p->ghostCols_.resize(p->ghostRows_[n]);
   p->ghostVals_.resize(p->ghostRows_[n]);
-  std::vector<std::pair<LO, double>> row;
-  for (size_t i = 0; i < n && symmetric; ++i) {
-    row.clear();
-    size_t g = p->ghostRows_[i];
-    for (auto k = A.graph.row_map(i); k < A.graph.row_map(i + 1); ++k) {
-      const LO c = A.graph.entries(k), j = owned[c];
-      if (j < 0) {
-        p->ghostCols_[g] = c;
-        p->ghostVals_[g++] = A.values(k);
-      } else if (size_t(j) == i) {
-        p->diag_[i] += A.values(k);
-      } else if (size_t(j) > i) {
-        row.emplace_back(j, A.values(k));
-      }
-    }
-    if (!ordered) std::sort(row.begin(), row.end());  // ascending columns, for the check below
-    size_t u = p->upperRows_[i];
-    for (const auto& e : row) {
-      if (u > p->upperRows_[i] && p->upperCols_[u - 1] == e.first) symmetric = false;  // duplicate
-      p->upperCols_[u] = e.first;
-      p->upperVals_[u++] = e.second;
-    }
-  }
-  // Each lower entry a_ij (j < i) must be the stored a_ji within round-off of row i's scale. Row
-  // i's lower entries come in ascending j, and the rows meeting a given j in ascending i, so
-  // each upper row j is matched in order by a cursor: no search.
-  std::vector<size_t> next(p->upperRows_.begin(), p->upperRows_.end() - 1);
-  for (size_t i = 0; i < n && symmetric; ++i) {
-    row.clear();
-    for (auto k = A.graph.row_map(i); k < A.graph.row_map(i + 1); ++k) {
-      const LO j = owned[A.graph.entries(k)];
-      if (j >= 0 && size_t(j) < i) row.emplace_back(j, A.values(k));
-    }
-    if (!ordered) std::sort(row.begin(), row.end());
-    for (size_t e = 0; e < row.size() && symmetric; ++e) {
-      const size_t j = size_t(row[e].first), at = next[j]++;
-      symmetric = at < p->upperRows_[j + 1] && p->upperCols_[at] == LO(i) &&
-                  std::abs(p->upperVals_[at] - row[e].second) <= 1e-12 * rowScale[i];
-    }
-  }
+  p->entries_ = A.graph.entries.extent(0);
+  const bool symmetric = p->fill(K, true);
   if (!everywhere(comm, symmetric)) return nullptr;
   p->importer_ = K.getGraph()->getImporter();
   if (!p->importer_.is_null()) p->column_ = rcp(new Vector(colMap));
   return p;
+}
+
+bool SymmetricProduct::refill(const CrsMatrix& K) {
+  const auto A = K.getLocalMatrixHost();
+  const bool same = K.isFillComplete() && A.graph.entries.extent(0) == entries_ &&
+                    A.numRows() == LO(diag_.size()) && size_t(A.numCols()) == owned_.size() &&
+                    K.getGraph()->getImporter().get() == importer_.get();
+  return everywhere(*K.getComm(), same && fill(K, false));
+}
+
+// Row i's entries in order: the other ranks' columns to the ghost CSR, the diagonal, the upper
+// entries (ascending column), and each lower entry a_ij (j < i) checked against the stored a_ji
+// within round-off of row i's largest entry. Row j < i is stored before row i is reached; row
+// i's lower entries come in ascending j and the rows meeting a given j in ascending i, so each
+// upper row j is matched in order by a cursor: no search; at the end every cursor must have
+// reached its row's end (an upper entry without a lower partner). `structure`: write the column
+// indices (build); else check them (refill: a graph that changed is not K's).
+bool SymmetricProduct::fill(const CrsMatrix& K, bool structure) {
+  const auto A = K.getLocalMatrixHost();
+  const size_t n = diag_.size();
+  std::vector<size_t> next(upperRows_.begin(), upperRows_.end() - 1);
+  size_t u = 0, g = 0;
+  double scale = 0.0;
+  // One stored entry; false when it does not fit the structure.
+  auto putUpper = [&](size_t i, LO j, double a) {
+    if (u == upperRows_[i + 1] || (u > upperRows_[i] && upperCols_[u - 1] >= j)) return false;  // duplicate
+    if (structure) upperCols_[u] = j;
+    else if (upperCols_[u] != j) return false;
+    upperVals_[u++] = a;
+    return true;
+  };
+  auto checkLower = [&](size_t i, size_t j, double a) {
+    const size_t at = next[j]++;
+    return at < upperRows_[j + 1] && upperCols_[at] == LO(i) && std::abs(upperVals_[at] - a) <= 1e-12 * scale;
+  };
+  std::vector<std::pair<LO, double>> upper, lower;  // a row's entries to sort (!ordered_)
+  for (size_t i = 0; i < n; ++i) {
+    const auto begin = A.graph.row_map(i), end = A.graph.row_map(i + 1);
+    scale = 0.0;
+    for (auto k = begin; k < end; ++k) scale = std::max(scale, std::abs(A.values(k)));
+    double d = 0.0;
+    u = upperRows_[i];
+    upper.clear();
+    lower.clear();
+    for (auto k = begin; k < end; ++k) {
+      const LO c = A.graph.entries(k), j = owned_[c];
+      const double a = A.values(k);
+      if (j < 0) {
+        if (g == ghostRows_[i + 1]) return false;
+        if (structure) ghostCols_[g] = c;
+        else if (ghostCols_[g] != c) return false;
+        ghostVals_[g++] = a;
+      } else if (size_t(j) == i) {
+        d += a;
+      } else if (!ordered_) {
+        (size_t(j) > i ? upper : lower).emplace_back(j, a);
+      } else if (size_t(j) > i ? !putUpper(i, j, a) : !checkLower(i, size_t(j), a)) {
+        return false;
+      }
+    }
+    diag_[i] = d;
+    if (!ordered_) {
+      std::sort(upper.begin(), upper.end());
+      std::sort(lower.begin(), lower.end());
+      for (const auto& e : upper)
+        if (!putUpper(i, e.first, e.second)) return false;
+      for (const auto& e : lower)
+        if (!checkLower(i, size_t(e.first), e.second)) return false;
+    }
+    if (g != ghostRows_[i + 1] || u != upperRows_[i + 1]) return false;
+  }
+  for (size_t j = 0; j < n; ++j)  // every upper entry met its transposed partner
+    if (next[j] != upperRows_[j + 1]) return false;
+  return true;
 }
 
 void SymmetricProduct::apply(const Vector& x, Vector& out) const {

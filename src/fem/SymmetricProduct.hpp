@@ -29,6 +29,11 @@ class SymmetricProduct {
   static constexpr long long kWorthwhileRows = 20000;
 
   static std::unique_ptr<SymmetricProduct> build(const CrsMatrix& K);
+  // K's values again, K having the graph of the matrix built from (its values changed: a new
+  // effective matrix, a change of contact status): one pass over K, no allocation. Collective;
+  // false on every rank when K is not symmetric within round-off or its graph is not the one
+  // built from (the product is then not K's: build again or use K's own).
+  bool refill(const CrsMatrix& K);
 
   // out = K x (x and out on K's row map, which must be its domain and range map).
   void apply(const Vector& x, Vector& out) const;
@@ -37,6 +42,10 @@ class SymmetricProduct {
 
  private:
   SymmetricProduct() = default;
+  bool fill(const CrsMatrix& K, bool structure);
+  std::vector<LO> owned_;  // column map index -> owned row index, -1 for another rank's unknown
+  bool ordered_ = false;   // each row's owned columns come in ascending owned index
+  size_t entries_ = 0;     // K's local entries when built
   std::vector<double> diag_;
   std::vector<size_t> upperRows_;  // CSR of the upper triangle (column: owned row index)
   std::vector<LO> upperCols_;

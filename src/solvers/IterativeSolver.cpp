@@ -11,6 +11,7 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include "core/Errors.hpp"
+#include "solvers/SymmetricOperator.hpp"
 
 namespace choc {
 
@@ -64,7 +65,7 @@ class BelosSolver : public LinearSolver {
     // The Belos problem and solver are built once per matrix and reused by every solve()
     // (only the right-hand side and the initial guess change between solves).
     problem_ = rcp(new Belos::LinearProblem<double, MultiVector, Operator>());
-    problem_->setOperator(A_);
+    problem_->setOperator(krylovOperator(A_));
     if (!prec_.is_null()) problem_->setRightPrec(prec_);
     if (solver_.is_null()) {
       params_ = rcp(new Teuchos::ParameterList);
@@ -113,12 +114,26 @@ class BelosSolver : public LinearSolver {
 
   std::string description() const override { return "Belos " + method_ + " + " + precType_; }
 
+  // The operator the Krylov iterations multiply by: for the symmetric methods (CG, MINRES) on a
+  // large symmetric A, A's products from half its entries (SymmetricOperator), refilled when a
+  // new A keeps the graph; else A. The true residual check in solve() stays A's CRS product.
+  RCP<const Operator> krylovOperator(const RCP<const CrsMatrix>& A) {
+    if (method_ != "CG" && method_ != "MINRES") return A;
+    if (symmetric_.is_null() || !symmetric_->refill(A)) {
+      symmetric_ = Teuchos::null;  // the old copy's memory first
+      symmetric_ = SymmetricOperator::build(A);
+    }
+    if (symmetric_.is_null()) return A;
+    return symmetric_;
+  }
+
  private:
   std::string method_, precType_;
   double tol_, activeTol_ = 0.0;
   int maxIters_, overlap_;
   RCP<Teuchos::ParameterList> params_;
   RCP<const CrsMatrix> A_;
+  RCP<SymmetricOperator> symmetric_;
   RCP<Preconditioner> prec_;
   RCP<Belos::LinearProblem<double, MultiVector, Operator>> problem_;
   RCP<Belos::SolverManager<double, MultiVector, Operator>> solver_;
