@@ -269,6 +269,7 @@ void ImplicitTransient::setupExplicit(const Model& model) {
     throwInput(inputFile_, path("Scheme"), "central differences",
                "needs a diagonal mass with every entry positive",
                "set 'Mass' = 'lumped' in every block of Model/Blocks and 'Contact Mass' = 'standard'");
+  b_->massDiagonal = m;
   b_->inverseMass = rcp(new Vector(m->getMap()));
   b_->inverseMass->reciprocal(*m);
   const double k = b_->contact ? b_->contact->method().stiffness() : 0.0;
@@ -332,6 +333,7 @@ void ImplicitTransient::buildSolver() {
 std::unique_ptr<StepLoop> ImplicitTransient::stepLoop(StructuralOperator& op) const {
   if (s_.explicitScheme) {
     op.storeStiffnessSymmetrically();  // one product with K per sub-step is the run's cost
+    op.useDiagonalMass(b_->massDiagonal);
     return std::make_unique<ExplicitDriver>(op, b_->inverseMass, s_.time, b_->substeps);
   }
   return std::make_unique<TransientDriver>(op, s_.scheme, s_.time);

@@ -69,6 +69,7 @@ class ImplicitTransient : public Analysis {
     // Explicit scheme: 1 / M_ii, the bound of the highest frequency, the critical step and the
     // sub-steps per step.
     RCP<Vector> inverseMass;
+    RCP<const Vector> massDiagonal;  // the lumped mass's diagonal (explicit runs)
     FrequencyBound bound;  // the bounds of the highest frequency
     double criticalStep = 0;
     int substeps = 1;

@@ -66,7 +66,7 @@ int StructuralOperator::unknowns() const {
 
 double StructuralOperator::kineticEnergy(const Vector& v) const {
   if (vProducts_.holds(v, kMv)) return 0.5 * v.dot(vProducts_.product(kMv));
-  M_->apply(v, *energyTmp_);
+  applyMassTo(v, *energyTmp_);
   return 0.5 * v.dot(*energyTmp_);
 }
 
@@ -97,9 +97,16 @@ void StructuralOperator::applyStiffness(const Vector& x, Vector& out) const {
   else K_->apply(x, out);
 }
 
+void StructuralOperator::useDiagonalMass(RCP<const Vector> m) { massDiagonal_ = std::move(m); }
+
+void StructuralOperator::applyMassTo(const Vector& x, Vector& out) const {
+  if (massDiagonal_.is_null()) M_->apply(x, out);
+  else out.elementWiseMultiply(1.0, *massDiagonal_, x, 0.0);
+}
+
 void StructuralOperator::applyMass(const Vector& a, Vector& out) {
   TimerScope ts(timer_, "Transient: assembly");
-  M_->apply(a, out);
+  applyMassTo(a, out);
 }
 
 void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t, Vector& out) {
@@ -116,9 +123,11 @@ void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t,
     applyStiffness(v, Kv);
     out.update(aK_, Kv, 1.0);
   }
-  if (aM_ != 0.0) {
+  if (aM_ != 0.0 && !keepProducts_ && !massDiagonal_.is_null()) {
+    out.elementWiseMultiply(aM_, *massDiagonal_, v, 1.0);  // out += aM m .* v in one pass
+  } else if (aM_ != 0.0) {
     Vector& Mv = keepProducts_ ? vProducts_.write(kMv) : *tmp_;
-    M_->apply(v, Mv);
+    applyMassTo(v, Mv);
     out.update(aM_, Mv, 1.0);
   }
   if (loads_) loads_->subtractFrom(t, out);

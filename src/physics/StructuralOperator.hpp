@@ -63,6 +63,9 @@ class StructuralOperator : public SecondOrderOperator {
   // when K is symmetric: for explicit runs, whose cost is those products. Implicit runs keep the
   // CRS product: their linear solve dominates, and the copy costs 0.4 kB per unknown.
   void storeStiffnessSymmetrically();
+  // M is the diagonal m (a lumped mass: explicit runs): its products element by element, and
+  // applyForces' damping term aM m .* v added in the same pass.
+  void useDiagonalMass(RCP<const Vector> m);
   bool hasExplicitContact() const override { return contact_ && forwardIncrement_; }
   void addExplicitContact(const Vector& uStar, const Vector& inverseMass, double h2, Vector& a) override;
   std::string constraintState() const override { return contact_ ? contact_->activeSummary() : ""; }
@@ -96,6 +99,8 @@ class StructuralOperator : public SecondOrderOperator {
   // K's products from half its entries (storeStiffnessSymmetrically), else K's own.
   std::unique_ptr<SymmetricProduct> symmetricK_;
   void applyStiffness(const Vector& x, Vector& out) const;
+  RCP<const Vector> massDiagonal_;  // useDiagonalMass(); null: M's own product
+  void applyMassTo(const Vector& x, Vector& out) const;
   double aK_, aM_;
   std::shared_ptr<const Loads> loads_;
   ContactManager* contact_;

@@ -15,7 +15,7 @@ ExplicitDriver::ExplicitDriver(SecondOrderOperator& op, RCP<const Vector> invers
     : op_(op), inverseMass_(std::move(inverseMass)), s_(std::move(settings)),
       substeps_(substeps < 1 ? 1 : substeps) {
   auto map = op_.map();
-  for (RCP<Vector>* v : {&u_, &vHalf_, &a_, &v_, &r_, &fc_, &uStar_}) *v = rcp(new Vector(map));
+  for (RCP<Vector>* v : {&u_, &vHalf_, &a_, &v_, &r_, &uStar_}) *v = rcp(new Vector(map));
 }
 
 void ExplicitDriver::notify(const StepInfo& info) {
@@ -28,9 +28,7 @@ void ExplicitDriver::acceleration(const Vector& u, const Vector& vStar, double t
   op_.beginStep(u, t, dt);
   op_.updateConstraints(u);  // penalty status at u (the only constraints an explicit step takes)
   op_.applyForces(u, vStar, t, *r_);
-  fc_->putScalar(0.0);
-  op_.addConstraintForces(u, vStar, *fc_);
-  r_->update(1.0, *fc_, 1.0);
+  op_.addConstraintForces(u, vStar, *r_);  // adds into r: no vector of its own to clear and add
   a.elementWiseMultiply(-1.0, *inverseMass_, *r_, 0.0);
   if (op_.hasExplicitContact()) {
     uStar_->update(1.0, u, h, vStar, 0.0);

@@ -45,7 +45,7 @@ class ExplicitDriver : public StepLoop {
   double t_ = 0.0;
   long long nominal_ = 0;
   TransientSummary sum_;
-  RCP<Vector> u_, vHalf_, a_, v_, r_, fc_, uStar_;
+  RCP<Vector> u_, vHalf_, a_, v_, r_, uStar_;
 };
 
 }  // namespace choc
