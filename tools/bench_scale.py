@@ -97,6 +97,23 @@ def compare(tmp, reference, other, title):
     print(cmp.stdout.rstrip())
 
 
+def median_runs(choc, xml, repeat, tmp, prefix):
+    """Runs xml on np = 1 and np = 2 in turn `repeat` times (the host's load then weighs on both
+    runs of a pair); returns each np's median run (by analysis time) and the pairs' speed-ups."""
+    runs = {1: [], 2: []}
+    for _ in range(repeat):
+        for np_ in (1, 2):
+            runs[np_].append(run(choc, xml, np_, os.path.join(tmp, f"{prefix}{np_}")))
+    rows = [sorted(runs[np_], key=lambda r: r["analysis"])[len(runs[np_]) // 2] for np_ in (1, 2)]
+    return rows, sorted(r1["analysis"] / r2["analysis"] for r1, r2 in zip(runs[1], runs[2]))
+
+
+def print_pairs(pairs, what):
+    if len(pairs) > 1:
+        print(f"{what}: np = 2 speed-up, median over {len(pairs)} back-to-back pairs of runs: "
+              f"{pairs[len(pairs) // 2]:.2f} (pairs: {', '.join('%.2f' % p for p in pairs)})")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(TOP, "build"))
@@ -110,7 +127,6 @@ def main():
     xml = os.path.join(TOP, "input", "scale-3d.xml")
     tmp = tempfile.mkdtemp(prefix="choc-bench-")
     print(f"machine: {os.cpu_count()} cores, {open('/proc/cpuinfo').read().split('model name')[1].split(':')[1].splitlines()[0].strip()}")
-    rows = []
     src = xml
     title = "input/scale-3d.xml"
     if a.end_time or a.solver == "auto":
@@ -127,18 +143,9 @@ def main():
             assert 'value="CG"' not in auto and "Additive Schwarz\"" not in auto
             open(src, "w").write(auto)
             title = "input/scale-3d.xml with the linear solver 'auto'"
-    # np = 1 and np = 2 alternate, so that the host's load weighs on both sides of the speed-up.
-    runs = {1: [], 2: []}
-    for _ in range(a.repeat):
-        for np_ in (1, 2):
-            runs[np_].append(run(choc, src, np_, os.path.join(tmp, f"np{np_}")))
-    for np_ in (1, 2):
-        rows.append(sorted(runs[np_], key=lambda r: r["analysis"])[len(runs[np_]) // 2])
-    pairs = sorted(r1["analysis"] / r2["analysis"] for r1, r2 in zip(runs[1], runs[2]))
+    rows, pairs = median_runs(choc, src, a.repeat, tmp, "np")
     table(rows, title + (f" (median run of {a.repeat} per np)" if a.repeat > 1 else ""))
-    if a.repeat > 1:
-        print(f"np = 2 speed-up, median over the {a.repeat} back-to-back pairs of runs: {pairs[len(pairs) // 2]:.2f} "
-              f"(pairs: {', '.join('%.2f' % p for p in pairs)})")
+    print_pairs(pairs, "input/scale-3d.xml")
     print("linear solver:", re.search(r"linear solver (.*)", rows[0]["log"]).group(1))
     compare(tmp, "np1", "np2", "np = 2 vs np = 1 histories")
     if a.solver == "auto":
@@ -155,9 +162,11 @@ def main():
             txt = re.sub(r'(name="End Time" type="double" value=")[^"]*', r"\g<1>2e-5", txt)
             x = os.path.join(tmp, f"m{across}_{along}.xml")
             open(x, "w").write(txt)
-            for np_ in (1, 2):
-                srows.append(run(choc, x, np_, os.path.join(tmp, f"s{across}_{np_}")))
-        table(srows + rows, "sizes (20 steps, contact from step 10; the last two rows: input/scale-3d.xml)")
+            r, p = median_runs(choc, x, a.repeat, tmp, f"s{across}_")
+            srows += r
+            print_pairs(p, f"{r[0]['unknowns']:,} unknowns")
+        table(srows + rows, "sizes (20 steps, contact from step 10; the last two rows: input/scale-3d.xml)"
+              + (f" (median run of {a.repeat} per np)" if a.repeat > 1 else ""))
     print(f"\nlogs and results in {tmp}")
 
 
