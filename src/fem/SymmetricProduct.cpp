@@ -45,6 +45,12 @@ std::unique_ptr<SymmetricProduct> SymmetricProduct::build(const CrsMatrix& K) {
     p->ordered_ = size_t(p->owned_[c]) >= next;
     next = size_t(p->owned_[c]) + 1;
   }
+  // The usual layout besides: column c < n is owned row c, the other ranks' columns come after
+  // them. A sorted row is then [lower | diagonal | upper | other ranks'], and fill() copies
+  // the upper and ghost parts in blocks.
+  p->identity_ = p->ordered_;
+  for (size_t c = 0; c < p->owned_.size() && p->identity_; ++c)
+    p->identity_ = c < n ? p->owned_[c] == LO(c) : p->owned_[c] < 0;
 
   p->diag_.assign(n, 0.0);
   p->upperRows_.assign(n + 1, 0);
@@ -91,6 +97,7 @@ bool SymmetricProduct::fill(const CrsMatrix& K, bool structure) {
   const auto A = K.getLocalMatrixHost();
   const size_t n = diag_.size();
   std::vector<size_t> next(upperRows_.begin(), upperRows_.end() - 1);
+  if (identity_) return fillRows(A, structure, next);
   size_t u = 0, g = 0;
   double scale = 0.0;
   // One stored entry; false when it does not fit the structure.
@@ -140,6 +147,52 @@ bool SymmetricProduct::fill(const CrsMatrix& K, bool structure) {
         if (!checkLower(i, size_t(e.first), e.second)) return false;
     }
     if (g != ghostRows_[i + 1] || u != upperRows_[i + 1]) return false;
+  }
+  for (size_t j = 0; j < n; ++j)  // every upper entry met its transposed partner
+    if (next[j] != upperRows_[j + 1]) return false;
+  return true;
+}
+
+// fill() for the usual layout (identity_): each sorted row is [lower | diagonal | upper | other
+// ranks'] in local columns, so the lower entries are checked in one loop and the upper and
+// ghost parts are copied (their columns written, or compared on a refill) as blocks: a refill
+// of the 300k scene's effective matrix took 100 ms entry by entry.
+template <class LocalMatrix>
+bool SymmetricProduct::fillRows(const LocalMatrix& A, bool structure, std::vector<size_t>& next) {
+  const size_t n = diag_.size();
+  const auto& cols = A.graph.entries;
+  const auto& vals = A.values;
+  size_t g = 0;
+  for (size_t i = 0; i < n; ++i) {
+    size_t k = A.graph.row_map(i);
+    const size_t end = A.graph.row_map(i + 1);
+    double scale = 0.0;
+    for (size_t e = k; e < end; ++e) scale = std::max(scale, std::abs(vals(e)));
+    for (; k < end && size_t(cols(k)) < i; ++k) {  // lower: the stored a_ji
+      const size_t j = size_t(cols(k)), at = next[j]++;
+      if (!(at < upperRows_[j + 1] && upperCols_[at] == LO(i) && std::abs(upperVals_[at] - vals(k)) <= 1e-12 * scale))
+        return false;
+    }
+    double d = 0.0;
+    for (; k < end && size_t(cols(k)) == i; ++k) d += vals(k);
+    diag_[i] = d;
+    const size_t u = upperRows_[i], nu = upperRows_[i + 1] - u, ng = ghostRows_[i + 1] - g;
+    if (end - k != nu + ng) return false;
+    for (size_t e = 0; e < nu; ++e) {
+      const LO c = cols(k + e);
+      if (structure) upperCols_[u + e] = c;
+      else if (upperCols_[u + e] != c) return false;
+      upperVals_[u + e] = vals(k + e);
+    }
+    if (nu > 0 && (size_t(cols(k)) <= i || size_t(cols(k + nu - 1)) >= n)) return false;
+    k += nu;
+    for (size_t e = 0; e < ng; ++e, ++g) {
+      const LO c = cols(k + e);
+      if (structure) ghostCols_[g] = c;
+      else if (ghostCols_[g] != c) return false;
+      ghostVals_[g] = vals(k + e);
+    }
+    if (ng > 0 && size_t(cols(k)) < n) return false;
   }
   for (size_t j = 0; j < n; ++j)  // every upper entry met its transposed partner
     if (next[j] != upperRows_[j + 1]) return false;

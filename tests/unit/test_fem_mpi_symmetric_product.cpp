@@ -4,6 +4,7 @@
 // the CRS product on every rank, and refill() takes new values on the same graph.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include <Teuchos_DefaultComm.hpp>
@@ -75,6 +76,40 @@ TEST(MpiSymmetricProduct, AnEntryWithoutItsTransposeKeepsTheCrsProduct) {
     if (i == n - 1) cols.push_back(n - 10), vals.push_back(0.5);  // (60, 51) without (51, 60)
   });
   EXPECT_FALSE(SymmetricProduct::build(*A));
+}
+
+// The band matrix with a column map of its own, listing the columns in descending order: each
+// row's owned columns then come in descending owned index (not the usual layout), so the
+// product is built by the general path, which sorts each row; and again on another graph.
+TEST(MpiSymmetricProduct, AColumnMapInAnotherOrderGivesTheCrsProduct) {
+  const GO n = 61;
+  const int w = 4;
+  auto B = bandMatrix(n, w, noEdit);
+  const auto rowMap = B->getRowMap();
+  std::vector<GO> colGids;
+  for (size_t c = 0; c < B->getColMap()->getNodeNumElements(); ++c) colGids.push_back(B->getColMap()->getGlobalElement(LO(c)));
+  std::sort(colGids.rbegin(), colGids.rend());
+  auto colMap = rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                            Teuchos::ArrayView<const GO>(colGids), 0, rowMap->getComm()));
+  auto A = rcp(new CrsMatrix(rowMap, colMap, size_t(2 * w + 2)));
+  for (size_t l = 0; l < rowMap->getNodeNumElements(); ++l) {
+    const GO g = rowMap->getGlobalElement(LO(l));
+    const size_t cnt = B->getNumEntriesInGlobalRow(g);
+    CrsMatrix::nonconst_global_inds_host_view_type cols("cols", cnt);
+    CrsMatrix::nonconst_values_host_view_type vals("vals", cnt);
+    size_t got = 0;
+    B->getGlobalRowCopy(g, cols, vals, got);
+    A->insertGlobalValues(g, got, vals.data(), cols.data());
+  }
+  A->fillComplete(rowMap, rowMap);
+  auto S = SymmetricProduct::build(*A);
+  ASSERT_TRUE(S);
+  EXPECT_EQ(rowsOutsideRoundoff(*A, *S), 0);
+  A->resumeFill();
+  A->scale(2.0);
+  A->fillComplete(rowMap, rowMap);
+  EXPECT_TRUE(S->refill(*A));
+  EXPECT_EQ(rowsOutsideRoundoff(*A, *S), 0);
 }
 
 // A new effective matrix on the same graph, as the contact system makes one (resumeFill, new
