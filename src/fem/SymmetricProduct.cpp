@@ -73,6 +73,7 @@ std::unique_ptr<SymmetricProduct> SymmetricProduct::build(const CrsMatrix& K) {
   p->entries_ = A.graph.entries.extent(0);
   const bool symmetric = p->fill(K, true);
   if (!everywhere(comm, symmetric)) return nullptr;
+  p->colMap_ = colMap;
   p->importer_ = K.getGraph()->getImporter();
   if (!p->importer_.is_null()) p->column_ = rcp(new Vector(colMap));
   return p;
@@ -80,7 +81,10 @@ std::unique_ptr<SymmetricProduct> SymmetricProduct::build(const CrsMatrix& K) {
 
 bool SymmetricProduct::refill(const CrsMatrix& K) {
   const auto A = K.getLocalMatrixHost();
-  const bool same = K.isFillComplete() && A.graph.entries.extent(0) == entries_ &&
+  // The local column indices must name the same unknowns as when built (isSameAs is collective,
+  // as refill() is; the same map object answers at once).
+  const bool sameColumns = K.isFillComplete() && K.getColMap()->isSameAs(*colMap_);
+  const bool same = sameColumns && A.graph.entries.extent(0) == entries_ &&
                     A.numRows() == LO(diag_.size()) && size_t(A.numCols()) == owned_.size() &&
                     K.getGraph()->getImporter().get() == importer_.get();
   return everywhere(*K.getComm(), same && fill(K, false));

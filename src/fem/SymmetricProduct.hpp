@@ -56,6 +56,7 @@ class SymmetricProduct {
   std::vector<size_t> ghostRows_;  // CSR of the entries in other ranks' columns (column map index)
   std::vector<LO> ghostCols_;
   std::vector<double> ghostVals_;
+  RCP<const Map> colMap_;                       // K's column map when built
   RCP<const Tpetra::Import<LO, GO>> importer_;  // K's; null on one rank
   mutable RCP<Vector> column_;                  // x on K's column map (ghost values)
 };

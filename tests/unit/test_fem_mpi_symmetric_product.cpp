@@ -105,6 +105,7 @@ TEST(MpiSymmetricProduct, AColumnMapInAnotherOrderGivesTheCrsProduct) {
   auto S = SymmetricProduct::build(*A);
   ASSERT_TRUE(S);
   EXPECT_EQ(rowsOutsideRoundoff(*A, *S), 0);
+  EXPECT_FALSE(SymmetricProduct::build(*B)->refill(*A)) << "the same entries under other column indices";
   A->resumeFill();
   A->scale(2.0);
   A->fillComplete(rowMap, rowMap);
