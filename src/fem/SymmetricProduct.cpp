@@ -37,18 +37,10 @@ std::unique_ptr<SymmetricProduct> SymmetricProduct::build(const CrsMatrix& K) {
   for (size_t c = 0; c < p->owned_.size(); ++c)
     p->owned_[c] = rowMap->getLocalElement(colMap->getGlobalElement(LO(c)));
 
-  // Tpetra's column map lists the owned columns in the row map's order: with each row's entries
-  // sorted by column, a row's owned columns are then ascending in owned index and need no sort.
-  p->ordered_ = K.getCrsGraph()->isSorted();
-  for (size_t c = 0, next = 0; c < p->owned_.size() && p->ordered_; ++c) {
-    if (p->owned_[c] < 0) continue;
-    p->ordered_ = size_t(p->owned_[c]) >= next;
-    next = size_t(p->owned_[c]) + 1;
-  }
-  // The usual layout besides: column c < n is owned row c, the other ranks' columns come after
-  // them. A sorted row is then [lower | diagonal | upper | other ranks'], and fill() copies
-  // the upper and ghost parts in blocks.
-  p->identity_ = p->ordered_;
+  // Tpetra's usual layout: column c < n is owned row c and the other ranks' columns come after
+  // them. With each row sorted, a row is then [lower | diagonal | upper | other ranks'], and
+  // fill() copies its upper and ghost parts in blocks; any other layout sorts each row.
+  p->identity_ = K.getCrsGraph()->isSorted();
   for (size_t c = 0; c < p->owned_.size() && p->identity_; ++c)
     p->identity_ = c < n ? p->owned_[c] == LO(c) : p->owned_[c] < 0;
 
@@ -90,6 +82,13 @@ bool SymmetricProduct::refill(const CrsMatrix& K) {
   return everywhere(*K.getComm(), same && fill(K, false));
 }
 
+// a_ij (j < i) against the stored a_ji: the next entry of upper row j must be column i, its
+// value within round-off of row i's largest entry (`scale`).
+bool SymmetricProduct::matchesTranspose(size_t i, size_t j, double a, double scale, std::vector<size_t>& next) const {
+  const size_t at = next[j]++;
+  return at < upperRows_[j + 1] && upperCols_[at] == LO(i) && std::abs(upperVals_[at] - a) <= 1e-12 * scale;
+}
+
 // Row i's entries in order: the other ranks' columns to the ghost CSR, the diagonal, the upper
 // entries (ascending column), and each lower entry a_ij (j < i) checked against the stored a_ji
 // within round-off of row i's largest entry. Row j < i is stored before row i is reached; row
@@ -102,27 +101,12 @@ bool SymmetricProduct::fill(const CrsMatrix& K, bool structure) {
   const size_t n = diag_.size();
   std::vector<size_t> next(upperRows_.begin(), upperRows_.end() - 1);
   if (identity_) return fillRows(A, structure, next);
-  size_t u = 0, g = 0;
-  double scale = 0.0;
-  // One stored entry; false when it does not fit the structure.
-  auto putUpper = [&](size_t i, LO j, double a) {
-    if (u == upperRows_[i + 1] || (u > upperRows_[i] && upperCols_[u - 1] >= j)) return false;  // duplicate
-    if (structure) upperCols_[u] = j;
-    else if (upperCols_[u] != j) return false;
-    upperVals_[u++] = a;
-    return true;
-  };
-  auto checkLower = [&](size_t i, size_t j, double a) {
-    const size_t at = next[j]++;
-    return at < upperRows_[j + 1] && upperCols_[at] == LO(i) && std::abs(upperVals_[at] - a) <= 1e-12 * scale;
-  };
-  std::vector<std::pair<LO, double>> upper, lower;  // a row's entries to sort (!ordered_)
+  size_t g = 0;
+  std::vector<std::pair<LO, double>> upper, lower;  // a row's owned entries, to sort
   for (size_t i = 0; i < n; ++i) {
     const auto begin = A.graph.row_map(i), end = A.graph.row_map(i + 1);
-    scale = 0.0;
+    double scale = 0.0, d = 0.0;
     for (auto k = begin; k < end; ++k) scale = std::max(scale, std::abs(A.values(k)));
-    double d = 0.0;
-    u = upperRows_[i];
     upper.clear();
     lower.clear();
     for (auto k = begin; k < end; ++k) {
@@ -135,21 +119,22 @@ bool SymmetricProduct::fill(const CrsMatrix& K, bool structure) {
         ghostVals_[g++] = a;
       } else if (size_t(j) == i) {
         d += a;
-      } else if (!ordered_) {
+      } else {
         (size_t(j) > i ? upper : lower).emplace_back(j, a);
-      } else if (size_t(j) > i ? !putUpper(i, j, a) : !checkLower(i, size_t(j), a)) {
-        return false;
       }
     }
     diag_[i] = d;
-    if (!ordered_) {
-      std::sort(upper.begin(), upper.end());
-      std::sort(lower.begin(), lower.end());
-      for (const auto& e : upper)
-        if (!putUpper(i, e.first, e.second)) return false;
-      for (const auto& e : lower)
-        if (!checkLower(i, size_t(e.first), e.second)) return false;
+    std::sort(upper.begin(), upper.end());
+    std::sort(lower.begin(), lower.end());
+    size_t u = upperRows_[i];
+    for (const auto& e : upper) {
+      if (u == upperRows_[i + 1] || (u > upperRows_[i] && upperCols_[u - 1] >= e.first)) return false;  // duplicate
+      if (structure) upperCols_[u] = e.first;
+      else if (upperCols_[u] != e.first) return false;
+      upperVals_[u++] = e.second;
     }
+    for (const auto& e : lower)
+      if (!matchesTranspose(i, size_t(e.first), e.second, scale, next)) return false;
     if (g != ghostRows_[i + 1] || u != upperRows_[i + 1]) return false;
   }
   for (size_t j = 0; j < n; ++j)  // every upper entry met its transposed partner
@@ -172,11 +157,8 @@ bool SymmetricProduct::fillRows(const LocalMatrix& A, bool structure, std::vecto
     const size_t end = A.graph.row_map(i + 1);
     double scale = 0.0;
     for (size_t e = k; e < end; ++e) scale = std::max(scale, std::abs(vals(e)));
-    for (; k < end && size_t(cols(k)) < i; ++k) {  // lower: the stored a_ji
-      const size_t j = size_t(cols(k)), at = next[j]++;
-      if (!(at < upperRows_[j + 1] && upperCols_[at] == LO(i) && std::abs(upperVals_[at] - vals(k)) <= 1e-12 * scale))
-        return false;
-    }
+    for (; k < end && size_t(cols(k)) < i; ++k)  // lower: the stored a_ji
+      if (!matchesTranspose(i, size_t(cols(k)), vals(k), scale, next)) return false;
     double d = 0.0;
     for (; k < end && size_t(cols(k)) == i; ++k) d += vals(k);
     diag_[i] = d;

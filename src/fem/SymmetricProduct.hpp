@@ -43,11 +43,11 @@ class SymmetricProduct {
  private:
   SymmetricProduct() = default;
   bool fill(const CrsMatrix& K, bool structure);
+  bool matchesTranspose(size_t i, size_t j, double a, double scale, std::vector<size_t>& next) const;
   template <class LocalMatrix>
   bool fillRows(const LocalMatrix& A, bool structure, std::vector<size_t>& next);
   std::vector<LO> owned_;  // column map index -> owned row index, -1 for another rank's unknown
-  bool ordered_ = false;   // each row's owned columns come in ascending owned index
-  bool identity_ = false;  // ordered_, column c < rows is row c, the other ranks' columns after
+  bool identity_ = false;  // sorted rows, column c < rows is row c, the other ranks' columns after
   size_t entries_ = 0;     // K's local entries when built
   std::vector<double> diag_;
   std::vector<size_t> upperRows_;  // CSR of the upper triangle (column: owned row index)

@@ -14,6 +14,7 @@
 
 #include "solvers/LinearSolver.hpp"
 #include "solvers/PreconditionedGmres.hpp"
+#include "relative_difference.hpp"
 
 namespace choc {
 namespace {
@@ -64,15 +65,6 @@ void reference(const RCP<CrsMatrix>& A, MultiVector& b, MultiVector& x) {
   auto fresh = makeLinearSolver(directWithBudget(0));
   fresh->setMatrix(A);
   ASSERT_TRUE(fresh->solve(b, x).converged);
-}
-
-double relativeDifference(const MultiVector& x, const MultiVector& y) {
-  MultiVector d(x, Teuchos::Copy);
-  d.update(-1.0, y, 1.0);
-  std::vector<double> nd(1), ny(1);
-  d.norm2(Teuchos::ArrayView<double>(nd));
-  y.norm2(Teuchos::ArrayView<double>(ny));
-  return nd[0] / ny[0];
 }
 
 TEST(MpiKeptFactorization, RowChangesAreSolvedWithinRankPlusOneIterations) {

@@ -14,6 +14,7 @@
 #include "input/Validation.hpp"
 #include "solvers/LinearSolver.hpp"
 #include "solvers/SymmetricOperator.hpp"
+#include "relative_difference.hpp"
 #include "symmetric_band_helpers.hpp"
 
 namespace choc {
@@ -50,11 +51,7 @@ double solveError(LinearSolver& solver, const CrsMatrix& A, LinearSolveStatus& s
     xe.replaceLocalValue(LO(l), 0, band::probe(A.getRowMap()->getGlobalElement(LO(l))));
   A.apply(xe, b);
   st = solver.solve(b, x);
-  x.update(-1.0, xe, 1.0);
-  std::vector<double> e(1), n(1);
-  x.norm2(Teuchos::ArrayView<double>(e));
-  xe.norm2(Teuchos::ArrayView<double>(n));
-  return e[0] / n[0];
+  return relativeDifference(x, xe);
 }
 
 TEST(MpiSymmetricOperator, CgSolvesThroughItAndAfterARefill) {
