@@ -5,6 +5,7 @@
 #include "analysis/ModalTransient.hpp"
 #include "checks/HistoryCheck.hpp"
 #include "core/Errors.hpp"
+#include "input/OutputName.hpp"
 #include "input/Validation.hpp"
 #include "observers/TransientOutputs.hpp"
 
@@ -54,6 +55,7 @@ void validateAnalyses(Teuchos::ParameterList& analyses, const std::string& input
     throwInput(inputFile, "Analyses", "", "no analysis to run", "add at least one sublist with a Type");
   for (auto it = analyses.begin(); it != analyses.end(); ++it) {
     const std::string name = analyses.name(it);
+    checkOutputName(inputFile, "Analyses", name);  // it names the analysis's files
     Teuchos::ParameterList& a = analyses.sublist(name);
     const AnalysisType& t = typeOf(a, name, inputFile);
     const InputLocation where{inputFile, "Analyses/" + name};

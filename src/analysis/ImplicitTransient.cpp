@@ -10,6 +10,7 @@
 #include "analysis/ImplicitStepView.hpp"
 #include "contact/ContactReport.hpp"
 #include "core/Errors.hpp"
+#include "timeint/TimeGrid.hpp"
 #include "core/Format.hpp"
 #include "core/Log.hpp"
 #include "fem/Components.hpp"
@@ -110,6 +111,8 @@ ImplicitTransient::ImplicitTransient(const std::string& name, const Teuchos::Par
   s_.contact = readContactSettings(params_, inputFile_, "Analyses/" + name_);
   s_.time.newton.maxActiveSetIterations = s_.contact.maxActiveSetIterations;
   s_.output = readTransientOutput(params_);
+  checkStepCount(nominalSteps(0.0, s_.time.endTime, s_.time.timeStep), 1, s_.output.limits, inputFile_,
+                 "Analyses/" + name_, s_.time.timeStep);
   if (s_.explicitScheme && s_.contact.method == "Continuous")
     throwInput(inputFile_, path("Contact/Method"), s_.contact.method,
                "has pressure unknowns, which the explicit scheme (central differences) cannot solve for",
@@ -201,6 +204,11 @@ void ImplicitTransient::setup(SetupContext& ctx) {
     interactionColumns.insert(interactionColumns.end(), lc.begin(), lc.end());
   }
   b_->columns = historyColumns(probeColumns, interactionColumns);
+  const int dims = static_cast<int>(spatialComponents(model.mesh().dimension).size());
+  const int contactFields = b_->contact ? static_cast<int>(ContactReport(*b_->contact, 0).nodalFieldNames().size()) : 0;
+  checkOutputSize({nominalSteps(0.0, s_.time.endTime, s_.time.timeStep), int(b_->columns.size()),
+                   s_.output.exodusInterval, model.mesh().numNodes(), 3 * dims + contactFields},
+                  s_.output.limits, inputFile_, "Analyses/" + name_);
   b_->checks = makeChecks(params_, model, name_);
   for (const auto& c : b_->checks) c->verify(b_->columns, s_.time.endTime);
   b_->init = buildInitialFields(params_, model, "Analyses/" + name_);
@@ -297,7 +305,10 @@ void ImplicitTransient::setupExplicit(const Model& model) {
                    " rad/s with the mesh, penalty contact and links" +
                    (switching ? "; penalty contact and links chatter above half of it" : "") + ")",
                "use a time step at most " + shortNumber(limit) + " s, or 'Stability Check' = 'substep'");
-  b_->substeps = int(std::ceil(dt / (0.9 * limit)));
+  const double substeps = std::ceil(dt / (0.9 * limit));
+  checkStepCount(nominalSteps(0.0, s_.time.endTime, dt), substeps, s_.output.limits, inputFile_,
+                 "Analyses/" + name_, dt);
+  b_->substeps = static_cast<int>(substeps);  // at most 'Maximum Steps' <= 1e15 / steps
 }
 
 void ImplicitTransient::buildSolver() {
@@ -409,7 +420,8 @@ void ImplicitTransient::describe(Model& model, const StructuralOperator& op) con
     const double before = one.dot(y);
     b_->M->apply(one, y);
     log() << format("  contact mass: redistributed: %lld contact-surface nodes massless (%lld DOFs); "
-                    "1^T M 1 (free DOFs, kg per direction) %.12g -> %.12g\n",
+                    "1^T M 1 over the free DOFs (the mass once per free direction: 3 x the mass in "
+                    "3D with every direction free) %.12g -> %.12g kg\n",
                     b_->masslessNodes, op.masslessDofs(), before, one.dot(y));
   }
   if (!b_->massFallback.empty())

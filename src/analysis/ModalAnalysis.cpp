@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <iomanip>
 
 #include <Tpetra_CrsMatrix.hpp>
@@ -10,7 +9,10 @@
 
 #include "fem/Components.hpp"
 #include "fem/FieldGather.hpp"
+#include "core/CollectiveFailure.hpp"
 #include "core/Errors.hpp"
+#include "core/Files.hpp"
+#include "output/HistoryCsv.hpp"
 #include "input/ParameterSpec.hpp"
 #include "output/ExodusResults.hpp"
 #include "core/Format.hpp"
@@ -139,22 +141,32 @@ void ModalAnalysis::checkResiduals(const EigenResult& res) const {
                                 name_.c_str(), worst + 1, res.residuals[worst], s_.residualTolerance));
 }
 
-// <name>.modes.csv and <name>.exo (rank 0 writes; every rank takes part in the gathers).
+// <name>.modes.csv and <name>.exo (rank 0 writes; every rank takes part in the gathers and
+// learns of a failure to write).
 void ModalAnalysis::writeResults(const RunContext& ctx, const EigenResult& res) const {
   const Model& model = ctx.model;
-  const std::string base = ctx.outputDir + "/" + name_;
   std::vector<std::vector<double>> shapes;
   for (int k = 0; k < s_.numModes; ++k) shapes.push_back(gatherAll(*res.vectors, k, model.dofs()));
-  if (!isRootRank()) return;
-  const std::string csv = base + ".modes.csv";
-  FILE* f = std::fopen((csv + ".part").c_str(), "w");
-  if (!f) throw std::runtime_error("cannot write " + csv);
-  std::fprintf(f, "mode,frequency_hz,generalized_mass,residual\n");
+  std::string failure;
+  if (isRootRank()) {
+    try {
+      writeFiles(ctx.outputDir + "/" + name_, model, res, shapes);
+    } catch (const OutputError& e) {
+      failure = e.what();
+    }
+  }
+  failure = collectiveFailure(*model.comm(), failure);
+  if (!failure.empty()) throw OutputError("modal analysis '" + name_ + "': " + failure);
+}
+
+void ModalAnalysis::writeFiles(const std::string& base, const Model& model, const EigenResult& res,
+                               const std::vector<std::vector<double>>& shapes) const {
+  std::string text = "mode,frequency_hz,generalized_mass,residual\n";
   for (int k = 0; k < s_.numModes; ++k)
-    std::fprintf(f, "%d,%.17g,%.17g,%.17g\n", k + 1, frequencyOf(res.eigenvalues[k]),
-                 res.generalizedMass[k], res.residuals[k]);
-  std::fclose(f);
-  std::filesystem::rename(csv + ".part", csv);
+    text += format("%d,%.17g,%.17g,%.17g\n", k + 1, frequencyOf(res.eigenvalues[k]),
+                   res.generalizedMass[k], res.residuals[k]);
+  const std::string csv = base + ".modes.csv";
+  writeWholeFile(csv, text, true, incompletePath(csv));
   if (!s_.writeExodus) return;
   const std::vector<int> comps = spatialComponents(model.mesh().dimension);
   std::vector<std::string> names;

@@ -27,6 +27,8 @@ class ModalAnalysis : public Analysis {
   void logModes(const EigenResult& res) const;
   void checkResiduals(const EigenResult& res) const;
   void writeResults(const RunContext& ctx, const EigenResult& res) const;
+  void writeFiles(const std::string& base, const Model& model, const EigenResult& res,
+                  const std::vector<std::vector<double>>& shapes) const;
   Settings s_;
 };
 

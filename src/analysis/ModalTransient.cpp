@@ -6,6 +6,7 @@
 
 #include "core/DidYouMean.hpp"
 #include "core/Errors.hpp"
+#include "fem/Components.hpp"
 #include "core/Format.hpp"
 #include "core/Log.hpp"
 #include "fem/FieldGather.hpp"
@@ -98,6 +99,7 @@ void ModalTransient::readTimeGrid() {
   if (!(s_.endTime > s_.startTime))
     throwInput(inputFile_, path("End Time"), format("%.6g", s_.endTime), "must exceed the Start Time");
   const double ratio = (s_.endTime - s_.startTime) / s_.dt;
+  checkStepCount(ratio, 1, s_.output.limits, inputFile_, "Analyses/" + name_, s_.dt);
   s_.steps = std::llround(ratio);
   if (s_.steps < 1 || std::abs(ratio - s_.steps) > 1e-6 * std::max(1.0, ratio))
     throwInput(inputFile_, path("Time Step"), format("%.6g", s_.dt),
@@ -124,6 +126,10 @@ void ModalTransient::setup(SetupContext& ctx) {
   std::vector<std::string> probeColumns;
   for (const auto& p : b_->probes) probeColumns.push_back(p.column);
   b_->columns = historyColumns(probeColumns, shockLinkColumns(b_->links));
+  const int fields = 3 * static_cast<int>(spatialComponents(ctx.model.mesh().dimension).size());
+  checkOutputSize({double(s_.steps), int(b_->columns.size()), s_.output.exodusInterval,
+                   ctx.model.mesh().numNodes(), fields},
+                  s_.output.limits, inputFile_, "Analyses/" + name_);
   b_->checks = makeChecks(params_, ctx.model, name_);
   for (const auto& c : b_->checks) c->verify(b_->columns, s_.endTime);
   b_->init = buildInitialFields(params_, ctx.model, "Analyses/" + name_);
@@ -301,7 +307,9 @@ int ModalTransient::stepsPerStep(const Generalized& g, const ModalLinks& links) 
   // doubled the energy at 0.9 of it, ~1% at 0.5): sub-step at half of it then.
   bool penalty = false;
   for (const auto& l : links.links()) penalty = penalty || !l.law.rigid;
-  const int substeps = static_cast<int>(std::ceil(s_.dt / ((penalty ? 0.5 : 0.9) * dtCrit)));
+  const double count = std::ceil(s_.dt / ((penalty ? 0.5 : 0.9) * dtCrit));
+  checkStepCount(double(s_.steps), count, s_.output.limits, inputFile_, "Analyses/" + name_, s_.dt);
+  const auto substeps = static_cast<int>(count);  // at most 'Maximum Steps'
   log() << "  " << what << ": " << substeps << " sub-steps per step\n";
   return substeps;
 }

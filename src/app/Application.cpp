@@ -9,6 +9,7 @@
 #include "app/Commands.hpp"
 #include "app/MeshCommand.hpp"
 #include "core/Errors.hpp"
+#include "core/Memory.hpp"
 #include "output/Interrupt.hpp"
 #include "core/Log.hpp"
 
@@ -19,7 +20,7 @@ namespace {
 const char* kUsage =
     "usage: choc <command> [arguments]\n"
     "  run INPUT.xml [-o DIR]   run every analysis of the input (results in DIR, default\n"
-    "                           results/<input name>/)\n"
+    "                           results/<input name>/; choc run --help for its options)\n"
     "  run INPUT.xml --restart F.checkpoint\n"
     "                           continue a transient from its checkpoint (the same input,\n"
     "                           'End Time' may be raised; any number of ranks)\n"
@@ -27,8 +28,9 @@ const char* kUsage =
     "  parameters               print every valid parameter with its documentation\n"
     "  mesh [options] -o F.exo  generate a bar-impact mesh (choc mesh --help)\n"
     "  --help                   this text\n"
-    "exit codes: 0 success, 1 input error, 2 numerical failure or a result that cannot be\n"
-    "            written (disk full, file-size limit), 3 a declared check failed,\n"
+    "exit codes: 0 success, 1 input error, 2 numerical failure, out of memory or a result\n"
+    "            that cannot be written (disk full, file-size limit), 3 a declared check\n"
+    "            failed (or energy created beyond 'Energy Balance Tolerance'),\n"
     "            4 internal error, 130 interrupted by SIGINT, 143 interrupted by SIGTERM\n"
     "            (a failed or interrupted run stops at a step boundary and leaves its partial\n"
     "            results as <name>.incomplete.<ext>, listed in the log, and a transient\n"
@@ -55,10 +57,11 @@ void reportError(const std::string& kind, const std::string& message) {
 
 int runApplication(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
+  installInterruptHandlers();  // a signal while MPI starts is a clean stop too
   // Kokkos would answer --help itself: it sees the program name only.
   int scopeArgc = 1;
   Tpetra::ScopeGuard scope(&scopeArgc, &argv);
-  installInterruptHandlers();  // after MPI_Init, which may install handlers of its own
+  installInterruptHandlers();  // again after MPI_Init, which may install handlers of its own
   if (args.empty()) {
     if (isRootRank()) std::cerr << kUsage;
     return kExitInputError;
@@ -84,10 +87,18 @@ int runApplication(int argc, char** argv) {
   } catch (const OutputError& e) {
     reportError("output failure", e.what());
     return kExitNumericalFailure;
+  } catch (const OutOfMemory& e) {
+    reportError("out of memory", e.what());
+    return kExitNumericalFailure;
   } catch (const NumericalError& e) {
     reportError("numerical failure", e.what());
     return kExitNumericalFailure;
   } catch (const std::exception& e) {
+    const std::string oom = outOfMemoryMessage(e);
+    if (!oom.empty()) {
+      reportError("out of memory", oom);
+      return kExitNumericalFailure;
+    }
     std::string m = e.what();
     m = m.substr(0, m.find('\n'));
     reportError("internal error", m);

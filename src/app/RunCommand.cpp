@@ -15,10 +15,14 @@
 #include "analysis/AnalysisRegistry.hpp"
 #include "app/Commands.hpp"
 #include "app/InputDeck.hpp"
+#include "core/CollectiveFailure.hpp"
 #include "core/Errors.hpp"
+#include "core/Files.hpp"
 #include "core/Resources.hpp"
+#include "observers/TransientOutputs.hpp"
 #include "output/Checks.hpp"
 #include "output/Interrupt.hpp"
+#include "output/OutputDirectory.hpp"
 #include "core/Format.hpp"
 #include "core/Log.hpp"
 #include "restart/CheckpointFile.hpp"
@@ -30,19 +34,41 @@ namespace {
 
 struct RunArgs {
   std::string input, outputDir, restart;
+  bool help = false;
 };
+
+const char* kRunUsage =
+    "usage: choc run INPUT.xml [-o DIR] [--restart FILE.checkpoint]\n"
+    "  runs every analysis of INPUT.xml\n"
+    "  -o, --output DIR          results in DIR (default results/<input name>/); one run at a\n"
+    "                            time per directory (a second is refused while one runs)\n"
+    "  --restart FILE.checkpoint continue the transient that wrote FILE (same input and mesh;\n"
+    "                            'End Time' may be raised; any number of ranks)\n"
+    "  -h, --help                this text\n"
+    "exit codes: 0 success, 1 input error, 2 numerical failure or a result that cannot be\n"
+    "            written, 3 a declared check failed, 4 internal error, 130/143 interrupted by\n"
+    "            SIGINT/SIGTERM (a checkpoint is written; see 'choc --help')\n";
+
+const char* kCheckUsage =
+    "usage: choc check INPUT.xml\n"
+    "  validates the input, sets every analysis up (every node set, side set, probe, basis,\n"
+    "  pair and solver choice resolved) and prints the resolved parameter list with defaults\n";
 
 RunArgs parseRunArgs(const std::vector<std::string>& args, const std::string& cmd) {
   RunArgs r;
+  const std::string valid = cmd == "run" ? "valid: -o DIR, --restart FILE, --help" : "valid: --help";
   for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "-o" || args[i] == "--output") {
+    if (args[i] == "-h" || args[i] == "--help") {
+      r.help = true;
+    } else if ((args[i] == "-o" || args[i] == "--output") && cmd == "run") {
       if (i + 1 >= args.size()) throw InputError("choc " + cmd + ": option -o needs a directory");
       r.outputDir = args[++i];
+      if (r.outputDir.empty()) throw InputError("choc run: option -o: the directory name is empty");
     } else if (args[i] == "--restart" && cmd == "run") {
       if (i + 1 >= args.size()) throw InputError("choc run: option --restart needs a checkpoint file");
       r.restart = args[++i];
     } else if (!args[i].empty() && args[i][0] == '-') {
-      throw InputError("choc " + cmd + ": unknown option '" + args[i] + "'; valid: -o DIR");
+      throw InputError("choc " + cmd + ": unknown option '" + args[i] + "'; " + valid);
     } else if (r.input.empty()) {
       r.input = args[i];
     } else {
@@ -50,7 +76,8 @@ RunArgs parseRunArgs(const std::vector<std::string>& args, const std::string& cm
                        args[i] + "'");
     }
   }
-  if (r.input.empty()) throw InputError("choc " + cmd + ": missing INPUT.xml (usage: choc " + cmd + " INPUT.xml)");
+  if (r.input.empty() && !r.help)
+    throw InputError("choc " + cmd + ": missing INPUT.xml (usage: choc " + cmd + " INPUT.xml)");
   return r;
 }
 
@@ -115,15 +142,97 @@ std::shared_ptr<const StateArchive> loadRestart(const std::string& file, const T
   return archive;
 }
 
+// Before anything is written: a restart's earlier results must be there to continue (a
+// refused restart writes nothing), then the results of an earlier run under the names this
+// run writes are removed, or they would pass for this run's if it failed before writing them
+// (not those of the analysis a restart continues, nor the checkpoint it names). A file that
+// cannot be removed is an input error naming it.
+void prepareOutputs(const OutputDirectory& out, const std::vector<std::unique_ptr<Analysis>>& analyses,
+                    const Teuchos::ParameterList& input, const StateArchive* restart,
+                    const std::string& restartFile, const Comm& comm) {
+  std::string failure;
+  if (isRootRank()) {
+    try {
+      const std::string continued = restart ? restart->text("identity/analysis") : "";
+      if (restart) {
+        const auto& an = input.sublist("Analyses").sublist(continued);
+        checkResumableOutputs(out.file(continued), *restart, an.get<int>("Exodus Interval") > 0);
+      }
+      for (const std::string& f : resultFileNames("checks.csv")) removeFile(out.file(f));
+      for (const auto& an : analyses) {
+        if (an->name() == continued) continue;
+        for (const std::string& f : analysisOutputFiles(an->name()))
+          if (restartFile.empty() || !sameFile(out.file(f), restartFile)) removeFile(out.file(f));
+      }
+    } catch (const std::exception& e) {  // InputError or OutputError: before the run, input
+      failure = e.what();
+    }
+  }
+  failure = collectiveFailure(comm, failure);
+  if (!failure.empty()) throw InputError(failure);
+}
+
+// Says which results of this run are partial (the writers renamed them *.incomplete.*).
+void logPartialResults(const std::string& dir, double runStart) {
+  if (!isRootRank()) return;
+  std::vector<std::string> partial;
+  for (const DirectoryEntry& e : listDirectory(dir))
+    if (e.name.find(".incomplete") != std::string::npos && e.modified >= runStart - 2.0)
+      partial.push_back(dir + "/" + e.name);
+  std::sort(partial.begin(), partial.end());
+  log() << "\nrun stopped; incomplete results of this run:";
+  for (const auto& p : partial) log() << " " << p;
+  log() << (partial.empty() ? " none\n" : "\n") << std::flush;
+}
+
+void runAnalyses(RunContext& ctx, const std::vector<std::unique_ptr<Analysis>>& analyses,
+                 const Teuchos::ParameterList& input) {
+  const double runStart = wallClockSeconds();
+  try {
+    for (auto& an : analyses) {
+      throwIfInterruptedBefore("analysis '" + an->name() + "'");
+      const std::string type = input.sublist("Analyses").sublist(an->name()).get<std::string>("Type");
+      log() << "\nanalysis '" << an->name() << "' (" << type << ")\n";
+      const auto t0 = std::chrono::steady_clock::now();
+      an->run(ctx);
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      log() << "  done in " << s << " s\n";
+    }
+  } catch (...) {
+    logPartialResults(ctx.outputDir, runStart);
+    throw;
+  }
+}
+
+void writeChecks(const RunContext& ctx, const OutputDirectory& out) {
+  if (ctx.checks.empty()) return;
+  const std::string path = out.file("checks.csv");
+  std::string failure;
+  if (isRootRank()) {
+    try {
+      writeChecksCsv(path, ctx.checks);
+    } catch (const OutputError& e) {
+      failure = e.what();
+    }
+  }
+  failure = collectiveFailure(*ctx.model.comm(), failure);
+  if (!failure.empty()) throw OutputError(failure);
+  log() << "\nchecks (" << path << "):\n" << formatCheckTable(ctx.checks);
+}
+
 }  // namespace
 
 int runRunCommand(const std::vector<std::string>& args) {
   const auto start = std::chrono::steady_clock::now();
   RunArgs a = parseRunArgs(args, "run");
+  if (a.help) {
+    log() << kRunUsage;
+    return kExitOk;
+  }
   auto input = readAndValidateInput(a.input);
-  if (a.outputDir.empty())
-    a.outputDir = "results/" + std::filesystem::path(a.input).stem().string();
+  if (a.outputDir.empty()) a.outputDir = "results/" + std::filesystem::path(a.input).stem().string();
   auto comm = Tpetra::getDefaultComm();
+  const OutputDirectory out(a.outputDir, *comm);  // held until the run ends
   log() << "choc run " << a.input << ": " << input->get<std::string>("Title") << "\n";
   Model model(*input, a.input, comm);
   log() << "model: " << model.mesh().numNodes() << " nodes, " << model.mesh().numElements()
@@ -133,68 +242,14 @@ int runRunCommand(const std::vector<std::string>& args) {
   if (!a.restart.empty()) restart = loadRestart(a.restart, *input, a.input, model);
   auto analyses = createAnalyses(input->sublist("Analyses"), a.input);
   setupAnalyses(analyses, model);
-  if (isRootRank()) {
-    std::error_code ec;
-    std::filesystem::create_directories(a.outputDir, ec);
-    if (ec) throw InputError("choc run: cannot create output directory '" + a.outputDir + "': " + ec.message());
-  }
-  comm->barrier();
-  RunContext ctx{model, a.outputDir, {}, {}, input.get(), restart};
-  const std::string checksPath = a.outputDir + "/checks.csv";
-  std::filesystem::remove(checksPath);
-  // Results of an earlier run under the names this run writes would pass for this run's if
-  // it fails before writing them: remove them first.
-  // (Not those of the analysis a restart continues.)
-  if (isRootRank())
-    for (auto& an : analyses)
-      for (const char* ext : {".exo", ".incomplete.exo", ".exo.part", ".history.csv",
-                              ".history.incomplete.csv", ".history.csv.part", ".modes.csv",
-                              ".modes.incomplete.csv", ".modes.csv.part", ".checkpoint"}) {
-        if (restart && restart->text("identity/analysis") == an->name()) break;
-        std::error_code ignored;
-        std::filesystem::remove(a.outputDir + "/" + an->name() + ext, ignored);
-      }
-  const auto runStart = std::filesystem::file_time_type::clock::now();
-  try {
-    for (auto& an : analyses) {
-      throwIfInterruptedBefore("analysis '" + an->name() + "'");
-      const std::string type = input->sublist("Analyses").sublist(an->name()).get<std::string>("Type");
-      log() << "\nanalysis '" << an->name() << "' (" << type << ")\n";
-      const auto t0 = std::chrono::steady_clock::now();
-      an->run(ctx);
-      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      log() << "  done in " << s << " s\n";
-    }
-  } catch (...) {
-    // Say which results of this run are partial (the writers renamed them *.incomplete.*).
-    if (isRootRank()) {
-      std::vector<std::string> partial;
-      std::error_code ec;
-      for (const auto& e : std::filesystem::directory_iterator(a.outputDir, ec)) {
-        const std::string n = e.path().filename().string();
-        std::error_code ec2;
-        if (n.find(".incomplete") != std::string::npos && e.last_write_time(ec2) >= runStart - std::chrono::seconds(2))
-          partial.push_back(e.path().string());
-      }
-      std::sort(partial.begin(), partial.end());
-      log() << "\nrun stopped; incomplete results of this run:";
-      for (const auto& p : partial) log() << " " << p;
-      log() << (partial.empty() ? " none\n" : "\n") << std::flush;
-    }
-    throw;
-  }
-  if (!ctx.checks.empty()) {
-    if (isRootRank()) {
-      ChecksCsv csv(checksPath);
-      csv.appendResults(ctx.checks);
-      csv.finish();
-    }
-    log() << "\nchecks (" << checksPath << "):\n" << formatCheckTable(ctx.checks);
-  }
+  throwIfInterruptedBefore("the first analysis (during the set-up)");
+  prepareOutputs(out, analyses, *input, restart.get(), a.restart, *comm);
+  RunContext ctx{model, out.path(), {}, {}, input.get(), restart};
+  runAnalyses(ctx, analyses, *input);
+  writeChecks(ctx, out);
   logResources(*comm, model.dofs().numGlobal());
-  const double total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  log() << "\nresults in " << a.outputDir << "/ (" << total << " s)\n";
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  log() << "\nresults in " << out.path() << "/ (" << total << " s)\n";
   if (ctx.failedChecks()) {
     log() << "some checks are NOOK\n";
     return kExitCheckFailed;
@@ -204,6 +259,10 @@ int runRunCommand(const std::vector<std::string>& args) {
 
 int runCheckCommand(const std::vector<std::string>& args) {
   RunArgs a = parseRunArgs(args, "check");
+  if (a.help) {
+    log() << kCheckUsage;
+    return kExitOk;
+  }
   auto input = readAndValidateInput(a.input);
   auto comm = Tpetra::getDefaultComm();
   Model model(*input, a.input, comm);

@@ -28,7 +28,11 @@ void declareContactParameters(Teuchos::ParameterList& p) {
                 "k_t [N/m] per slave node of the pairs with friction: the stick spring (a sticking "
                 "node's elastic slip is F_t / k_t); 0: the largest diagonal entry of the "
                 "stiffness matrix", Range::nonNegative());
-  ParameterList& pr = declareNamedSublists(ct, "Pairs", "contact pairs, by name");
+  ParameterList& pr = declareNamedSublists(
+      ct, "Pairs",
+      "contact pairs, by name (the name starts the pair's result columns: 1 to 32 letters, "
+      "digits, '_', '-', '.')",
+      NamedAs::OutputName);
   declareString(pr, "Master Side Set", "",
                 "faces of solids (QUAD4, QUAD8, TRI3, TRI6) or edges of planar elements (LINE2, "
                 "LINE3), outward normal; or give an 'Obstacle' instead");

@@ -1,4 +1,4 @@
-// Error kinds and the exit codes they map to (BRIEF §3).
+// Error kinds and the exit codes they map to (the README's exit-code table).
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -29,6 +29,13 @@ class NumericalError : public std::runtime_error {
 // A results or checkpoint file that cannot be written (disk full, file-size limit): exit 2,
 // like a numerical failure (the run cannot produce its result), one line naming the file.
 class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Out of memory (exit 2): an allocation of choc's, of Trilinos' (Kokkos) or of a factorisation
+// failed. The message says how much was asked when it is known.
+class OutOfMemory : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

@@ -1,5 +1,7 @@
 #include "core/Resources.hpp"
 
+#include <ctime>
+
 #include <sys/resource.h>
 
 #include <fstream>
@@ -35,6 +37,12 @@ void logPhase(const Teuchos::Comm<int>& comm, const std::string& phase, double s
   std::string per;
   for (double b : all) per += format(" %.1f", b / 1048576.0);
   log() << format("  %s: %.3f s; peak memory per rank [MiB]:%s\n", phase.c_str(), seconds, per.c_str());
+}
+
+double wallClockSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_REALTIME, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 }  // namespace choc

@@ -10,6 +10,7 @@ namespace choc {
 
 double peakResidentBytes();  // VmHWM of /proc/self/status (0 if unknown)
 double cpuSeconds();         // user + system
+double wallClockSeconds();   // seconds since the epoch (file times compare with it)
 
 // Logs "  <phase>: <seconds> s; peak memory per rank [MiB]: a b ..." (collective).
 void logPhase(const Teuchos::Comm<int>& comm, const std::string& phase, double seconds);

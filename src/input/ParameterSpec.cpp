@@ -12,6 +12,7 @@ namespace choc {
 namespace {
 const char* kTemplate = "*";
 const char* kOpenMarker = "*open*";
+const char* kOutputNamesMarker = "*output names*";
 
 
 void attach(ParameterList& pl, const std::string& name, const Teuchos::ParameterEntry& value,
@@ -127,8 +128,9 @@ ParameterList& declareSublist(ParameterList& pl, const std::string& name, const 
 }
 
 ParameterList& declareNamedSublists(ParameterList& pl, const std::string& name,
-                                    const std::string& doc) {
+                                    const std::string& doc, NamedAs names) {
   ParameterList& s = pl.sublist(name, false, doc);
+  if (names == NamedAs::OutputName) s.set(kOutputNamesMarker, true);
   return s.sublist(kTemplate, false, "template for each user-named sublist");
 }
 
@@ -142,5 +144,6 @@ const ParameterList& namedSublistTemplate(const ParameterList& valid) {
   return valid.sublist(kTemplate);
 }
 bool isOpenSublist(const ParameterList& valid) { return valid.isParameter(kOpenMarker); }
+bool namesAreOutputNames(const ParameterList& valid) { return valid.isParameter(kOutputNamesMarker); }
 
 }  // namespace choc

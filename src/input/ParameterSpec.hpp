@@ -71,9 +71,11 @@ void declareRequiredChoice(ParameterList& pl, const std::string& name,
 // A sublist with fixed keys (validated recursively). Returns it for declaring its keys.
 ParameterList& declareSublist(ParameterList& pl, const std::string& name, const std::string& doc);
 // A sublist whose children are user-named sublists, each validated against the returned
-// template (e.g. Materials/<any name>).
+// template (e.g. Materials/<any name>). With NamedAs::OutputName the names become file names
+// or result columns and must follow the rule of input/OutputName.hpp.
+enum class NamedAs { Anything, OutputName };
 ParameterList& declareNamedSublists(ParameterList& pl, const std::string& name,
-                                    const std::string& doc);
+                                    const std::string& doc, NamedAs names = NamedAs::Anything);
 // A sublist whose children are user-named sublists validated by their owner later (e.g.
 // Analyses/<name>, whose keys depend on its Type).
 void declareOpenSublist(ParameterList& pl, const std::string& name, const std::string& doc);
@@ -81,5 +83,6 @@ void declareOpenSublist(ParameterList& pl, const std::string& name, const std::s
 bool isNamedSublists(const ParameterList& valid);
 const ParameterList& namedSublistTemplate(const ParameterList& valid);
 bool isOpenSublist(const ParameterList& valid);
+bool namesAreOutputNames(const ParameterList& valid);
 
 }  // namespace choc

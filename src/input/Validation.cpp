@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/Errors.hpp"
+#include "input/OutputName.hpp"
 #include "input/ParameterSpec.hpp"
 
 namespace choc {
@@ -121,6 +122,7 @@ void validate(ParameterList& user, const ParameterList& valid, const InputLocati
         throwInput(where.file, where.parameter(name), entryToString(ue),
                    "is a parameter where a sublist is expected",
                    "each entry of '" + where.path + "' is a <ParameterList name=...>");
+      if (named && namesAreOutputNames(valid)) checkOutputName(where.file, where.path, name);
       if (named) validate(user.sublist(name), namedSublistTemplate(valid), where.child(name));
       continue;
     }
@@ -167,7 +169,7 @@ void printValidParameters(std::ostream& out, const ParameterList& valid,
   for (auto it = valid.begin(); it != valid.end(); ++it) {
     const std::string& name = valid.name(it);
     const Teuchos::ParameterEntry& e = valid.entry(it);
-    if (name == "*open*") continue;
+    if (name == "*open*" || name == "*output names*") continue;
     if (e.isList()) {
       const ParameterList& sub = valid.sublist(name);
       if (name == "*") {

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -33,8 +34,10 @@ std::string upper(std::string s) {
   return s;
 }
 
-// Whole-string number checks: Teuchos reads "7800kg" as 7800 and "abc" as 0 without a word.
+// Whole-string number checks: Teuchos reads "7800kg" as 7800 and "abc" as 0 without a word;
+// strtod would read "0x10" as 16 (a hexadecimal float), which no input means.
 bool isDouble(const std::string& v) {
+  if (v.find_first_of("xX") != std::string::npos) return false;
   const char* b = v.c_str();
   char* end = nullptr;
   std::strtod(b, &end);
@@ -95,6 +98,48 @@ void checkEntries(const Teuchos::XMLObject& list, const std::string& path,
     }
   }
 }
+// Limits on what an input may hold, checked before any XML parser sees it: the parsers and the
+// validation recurse into nested lists, and an input of 10,000 nested lists overflowed the
+// stack. Real inputs are a few kB deep by a few levels.
+constexpr std::size_t kMaxInputBytes = 16u << 20;
+constexpr int kMaxNesting = 64;
+constexpr long kMaxElements = 200000;
+
+// Walks the tags (skipping comments, CDATA, processing instructions and declarations) and
+// refuses an input nested deeper or holding more elements than the limits.
+void checkInputShape(const std::string& text, const std::string& path) {
+  int depth = 0;
+  long elements = 0;
+  std::size_t i = 0;
+  const auto skipTo = [&](const char* end) {
+    const std::size_t at = text.find(end, i);
+    i = at == std::string::npos ? text.size() : at + std::strlen(end);
+  };
+  while ((i = text.find('<', i)) != std::string::npos) {
+    if (text.compare(i, 4, "<!--") == 0) { skipTo("-->"); continue; }
+    if (text.compare(i, 9, "<![CDATA[") == 0) { skipTo("]]>"); continue; }
+    if (text.compare(i, 2, "<?") == 0) { skipTo("?>"); continue; }
+    if (text.compare(i, 2, "<!") == 0) { skipTo(">"); continue; }
+    const bool closing = text.compare(i, 2, "</") == 0;
+    char quote = 0;
+    std::size_t j = i + 1;
+    for (; j < text.size() && (quote || text[j] != '>'); ++j)
+      if (text[j] == '"' || text[j] == '\'') quote = quote == text[j] ? 0 : quote ? quote : text[j];
+    const bool selfClosing = j < text.size() && text[j - 1] == '/';
+    i = j;
+    if (closing) {
+      --depth;
+      continue;
+    }
+    if (++elements > kMaxElements)
+      throwInput(path, "", "", "holds more than " + std::to_string(kMaxElements) + " XML elements",
+                 "an input describes a model in at most a few thousand; check the file");
+    if (!selfClosing && ++depth > kMaxNesting)
+      throwInput(path, "", "", "nests lists more than " + std::to_string(kMaxNesting) + " levels deep",
+                 "an input is a few levels deep (Analyses/<name>/Contact/Pairs/<pair>); check the file");
+  }
+}
+
 }  // namespace
 
 Teuchos::RCP<Teuchos::ParameterList> readXmlParameters(const std::string& path) {
@@ -103,9 +148,21 @@ Teuchos::RCP<Teuchos::ParameterList> readXmlParameters(const std::string& path) 
   if (!fs::exists(path, ec))
     throwInput(path, "", "", "input file not found", "check the path");
   if (fs::is_directory(path, ec)) throwInput(path, "", "", "is a directory, not an input file");
-  std::ifstream probe(path);
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  if (!ec && bytes > kMaxInputBytes)
+    throwInput(path, "", "", "is " + std::to_string(bytes >> 20) + " MiB, more than the " +
+                                 std::to_string(kMaxInputBytes >> 20) + " MiB an input may take",
+               "an input holds parameters, not data: give meshes in 'Mesh/File'");
+  if (!fs::is_regular_file(path, ec)) throwInput(path, "", "", "is not a regular file");
+  std::ifstream probe(path, std::ios::binary);
   if (!probe) throwInput(path, "", "", "cannot be read (permissions?)");
-  std::string content((std::istreambuf_iterator<char>(probe)), std::istreambuf_iterator<char>());
+  std::string content(kMaxInputBytes + 1, '\0');  // a file that grows while read stops here
+  probe.read(content.data(), static_cast<std::streamsize>(content.size()));
+  content.resize(static_cast<std::size_t>(probe.gcount()));
+  if (content.compare(0, 3, "\xEF\xBB\xBF") == 0) content.erase(0, 3);  // a UTF-8 byte order mark
+  if (content.size() > kMaxInputBytes)
+    throwInput(path, "", "", "is more than the " + std::to_string(kMaxInputBytes >> 20) + " MiB an input may take");
+  checkInputShape(content, path);
   if (content.find_first_not_of(" \t\r\n") == std::string::npos)
     throwInput(path, "", "", "input file is empty",
                "it must hold a <ParameterList> (see input/sdnl111a.xml)");

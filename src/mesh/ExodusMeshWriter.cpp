@@ -1,9 +1,11 @@
 // Exodus II mesh writer.
 #include "mesh/ExodusMeshWriter.hpp"
 
+#include "core/Errors.hpp"
+
 #include <exodusII.h>
 
-#include <filesystem>
+#include <unistd.h>
 #include <set>
 #include <stdexcept>
 #include <vector>
@@ -26,7 +28,7 @@ class MeshFileWriter {
     int cpuWordSize = 8, ioWordSize = 8;
     id_ = ex_create(path_.c_str(), EX_CLOBBER | (netcdf4_ ? EX_NETCDF4 : EX_LARGE_MODEL),
                     &cpuWordSize, &ioWordSize);
-    if (id_ < 0) throw std::runtime_error(exodusFailure("creating the Exodus file", path_));
+    if (id_ < 0) throw OutputError(exodusFailure("creating the Exodus file", path_));
     try {
       check(ex_set_max_name_length(id_, kExodusMaxNameLength), "setting the name length");
       check(ex_put_init(id_, mesh_.title.substr(0, MAX_LINE_LENGTH).c_str(), dimension(), mesh_.numNodes(),
@@ -40,8 +42,7 @@ class MeshFileWriter {
       writeSideSets();
     } catch (...) {
       ex_close(id_);
-      std::error_code ignored;
-      std::filesystem::remove(path_, ignored);  // no half-written mesh left behind
+      ::unlink(path_.c_str());  // no half-written mesh left behind
       throw;
     }
     return id_;
@@ -49,7 +50,7 @@ class MeshFileWriter {
 
  private:
   void check(int rc, const std::string& what) const {
-    if (rc < 0) throw std::runtime_error(exodusFailure(what, path_));
+    if (rc < 0) throw OutputError(exodusFailure(what, path_));
   }
 
   void validateNames() const {
@@ -198,7 +199,7 @@ int createExodusMeshFile(const Mesh& mesh, const std::string& path, bool netcdf4
 
 void writeExodusMesh(const Mesh& mesh, const std::string& path, bool netcdf4) {
   const int id = createExodusMeshFile(mesh, path, netcdf4);
-  if (ex_close(id) < 0) throw std::runtime_error(exodusFailure("closing the Exodus file", path));
+  if (ex_close(id) < 0) throw OutputError(exodusFailure("closing the Exodus file", path));
 }
 
 }  // namespace choc

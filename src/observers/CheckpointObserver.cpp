@@ -11,7 +11,7 @@
 #include "observers/HistoryObserver.hpp"
 #include "output/Interrupt.hpp"
 #include "restart/CheckpointFile.hpp"
-#include "solvers/CollectiveFailure.hpp"
+#include "core/CollectiveFailure.hpp"
 
 namespace choc {
 

@@ -4,7 +4,7 @@
 
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
-#include "solvers/CollectiveFailure.hpp"
+#include "core/CollectiveFailure.hpp"
 #include "fem/Components.hpp"
 #include "fem/FieldGather.hpp"
 

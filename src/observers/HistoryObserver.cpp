@@ -5,7 +5,7 @@
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
 #include "core/Log.hpp"
-#include "solvers/CollectiveFailure.hpp"
+#include "core/CollectiveFailure.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 

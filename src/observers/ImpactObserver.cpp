@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
 #include "core/Log.hpp"
 #include "input/ParameterSpec.hpp"
+#include "core/Files.hpp"
 #include "output/HistoryCsv.hpp"
 
 namespace choc {
@@ -224,25 +224,19 @@ std::map<std::string, double> ImpactObserver::statistics() const {
 
 void ImpactObserver::write(bool complete) const {
   if (!isRootRank() || names_.empty()) return;
-  const std::string target = complete ? csvPath_ : incompletePath(csvPath_);
-  const std::string part = csvPath_ + ".part";
-  std::FILE* f = std::fopen(part.c_str(), "w");
-  if (!f) throw OutputError("impacts " + part + ": cannot be written");
-  std::fputs("link,impact,start_time,end_time,peak_time,peak_force,duration,impulse,impact_velocity,wear_work,open\n", f);
+  std::string text =
+      "link,impact,start_time,end_time,peak_time,peak_force,duration,impulse,impact_velocity,wear_work,open\n";
   for (size_t i = 0; i < tracks_.size() && i < names_.size(); ++i)
     for (size_t j = 0; j < tracks_[i].impacts.size(); ++j) {
       const Impact& x = tracks_[i].impacts[j];
-      std::string line = csvField(names_[i]) + "," + std::to_string(j + 1);
+      text += csvField(names_[i]) + "," + std::to_string(j + 1);
       for (double v : {x.start, x.end, x.peakTime, x.peakForce, x.end - x.start, x.impulse, x.velocity, x.wear})
-        line += "," + csvNumber(v);
-      line += x.open ? ",1\n" : ",0\n";
-      std::fputs(line.c_str(), f);
+        text += "," + csvNumber(v);
+      text += x.open ? ",1\n" : ",0\n";
     }
-  const bool failed = std::fflush(f) != 0 || std::ferror(f) != 0;
-  std::fclose(f);
-  if (failed) throw OutputError("impacts " + part + ": write failed (disk full or file-size limit?)");
-  std::error_code ec;
-  std::filesystem::rename(part, target, ec);
+  writeWholeFile(csvPath_, text, complete, incompletePath(csvPath_));
+  // A complete file replaces what an interrupted earlier part of the run left.
+  if (complete) removeFile(incompletePath(csvPath_));
 }
 
 void ImpactObserver::end(bool ok) {

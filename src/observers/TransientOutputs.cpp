@@ -5,6 +5,9 @@
 #include "observers/ExodusObserver.hpp"
 #include "observers/ImpactObserver.hpp"
 #include "observers/ProgressObserver.hpp"
+#include "observers/RunLimits.hpp"
+#include "output/ExodusResults.hpp"
+#include "output/HistoryCsv.hpp"
 
 namespace choc {
 
@@ -20,6 +23,7 @@ void declareTransientOutput(Teuchos::ParameterList& p) {
                 Range::nonNegative());
   declareEnergyBalance(p);
   declareImpactStatistics(p);
+  declareRunLimits(p);
   Teuchos::ParameterList& c = declareSublist(
       p, "Checkpoint",
       "checkpoints <analysis>.checkpoint (the state to continue the run with 'choc run INPUT "
@@ -65,7 +69,14 @@ TransientOutputSettings readTransientOutput(const Teuchos::ParameterList& p) {
   s.progressInterval = p.get<double>("Progress Interval");
   s.checkpoint.intervalSteps = p.sublist("Checkpoint").get<int>("Interval Steps");
   s.checkpoint.intervalSeconds = p.sublist("Checkpoint").get<double>("Interval Seconds");
+  s.limits = readRunLimits(p);
   return s;
+}
+
+void checkResumableOutputs(const std::string& base, const StateArchive& checkpoint, bool exodus) {
+  HistoryCsv::checkResumable(base + ".history.csv", checkpoint.getInt("history/bytes"));
+  if (exodus)
+    ExodusResultsWriter::checkResumable(base + ".exo", static_cast<int>(checkpoint.getInt("exodus/steps")));
 }
 
 HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSettings& s,

@@ -12,6 +12,7 @@
 
 #include "observers/CheckpointObserver.hpp"
 #include "observers/HistoryObserver.hpp"
+#include "observers/RunLimits.hpp"
 #include "physics/Model.hpp"
 
 namespace choc {
@@ -29,6 +30,7 @@ struct TransientOutputSettings {
   int exodusInterval = 10;      // 0: no Exodus file
   double progressInterval = 10; // seconds of wall time; 0: no progress lines
   CheckpointSettings checkpoint;
+  RunLimits limits;
 };
 TransientOutputSettings readTransientOutput(const Teuchos::ParameterList& analysis);
 
@@ -41,6 +43,11 @@ struct OutputPlan {
   CheckpointPlan checkpoint;         // path, identity and the analysis's state (settings: from s)
   const StateArchive* resume = nullptr;  // continue a checkpointed run's files
 };
+
+// Throws the InputError a restart would meet when the history or the Exodus file of the
+// checkpointed analysis (base "<dir>/<analysis>") is missing or shorter than the checkpoint
+// needs, before anything is changed: a refused restart writes nothing.
+void checkResumableOutputs(const std::string& base, const StateArchive& checkpoint, bool exodus);
 
 // Adds history, Exodus, progress and checkpoint/interrupt observers, in that order; returns the
 // history.

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/Errors.hpp"
+#include "core/Files.hpp"
 #include "output/HistoryCsv.hpp"
 
 namespace choc {
@@ -137,7 +138,7 @@ double valueAtTime(const std::vector<double>& times, const std::vector<double>& 
   return values[i - 1] + w * (values[i] - values[i - 1]);
 }
 
-const char* ChecksCsv::header() {
+const char* checksCsvHeader() {
   return "analysis,quantity,time,computed,reference,reference_kind,criterion,tolerance,error,"
          "status,note";
 }
@@ -150,58 +151,10 @@ std::string checkCsvRow(const CheckResult& r) {
          shortestNumber(r.error) + "," + (r.ok ? "OK" : "NOOK") + "," + csvField(s.note);
 }
 
-ChecksCsv::ChecksCsv(const std::string& path) : path_(path) {
-  std::remove(path_.c_str());
-  std::remove(incompletePath(path_).c_str());
-  const std::string part = path_ + ".part";
-  file_ = std::fopen(part.c_str(), "w");
-  if (!file_)
-    throwInput(part, "output directory", "", std::string("cannot be opened for writing (") +
-               std::strerror(errno) + ")", "check that the output directory exists and is writable");
-  std::fprintf(file_, "%s\n", header());
-  std::fflush(file_);
-}
-
-ChecksCsv::~ChecksCsv() {
-  if (!file_) return;
-  try {
-    abandon();
-  } catch (...) {
-    // A destructor never throws; the .part file stays behind.
-  }
-}
-
-void ChecksCsv::appendResults(const std::vector<CheckResult>& results) {
-  if (!file_) throw std::logic_error(path_ + ": checks appended after finish/abandon");
-  for (const auto& r : results) {
-    std::fprintf(file_, "%s\n", checkCsvRow(r).c_str());
-    ++rows_;
-  }
-  std::fflush(file_);
-}
-
-void ChecksCsv::closeAndRename(bool complete) {
-  std::FILE* f = file_;
-  file_ = nullptr;
-  const bool failed = std::fflush(f) != 0 || std::ferror(f) != 0;
-  const bool closeFailed = std::fclose(f) != 0;
-  const std::string target = complete && !failed && !closeFailed ? path_ : incompletePath(path_);
-  const std::string part = path_ + ".part";
-  if (std::rename(part.c_str(), target.c_str()) != 0)
-    throw std::runtime_error(path_ + ": cannot rename " + part + " to " + target + " (" +
-                             std::strerror(errno) + ")");
-  if (failed || closeFailed)
-    throw std::runtime_error(path_ + ": write failed (disk full?); kept as " + target);
-}
-
-void ChecksCsv::finish() {
-  if (!file_) throw std::logic_error(path_ + ": finish after finish/abandon");
-  closeAndRename(true);
-}
-
-void ChecksCsv::abandon() {
-  if (!file_) return;
-  closeAndRename(false);
+void writeChecksCsv(const std::string& path, const std::vector<CheckResult>& results) {
+  std::string text = std::string(checksCsvHeader()) + "\n";
+  for (const auto& r : results) text += checkCsvRow(r) + "\n";
+  writeWholeFile(path, text, true, incompletePath(path));
 }
 
 std::string formatCheckTable(const std::vector<CheckResult>& results) {

@@ -48,29 +48,11 @@ bool allPassed(const std::vector<CheckResult>& results);
 // (std::invalid_argument); t outside [t_0, t_n] throws std::out_of_range.
 double valueAtTime(const std::vector<double>& times, const std::vector<double>& values, double t);
 
-// checks.csv, one row per check, across all the analyses of one run. Writes "<path>.part";
-// finish() renames it to <path>; abandon() (and the destructor, if not finished) to the
-// ".incomplete.csv" name. The constructor removes stale files of an earlier run.
-class ChecksCsv {
- public:
-  static const char* header();  // analysis,...,status,note
-  explicit ChecksCsv(const std::string& path);
-  ~ChecksCsv();
-  ChecksCsv(const ChecksCsv&) = delete;
-  ChecksCsv& operator=(const ChecksCsv&) = delete;
-
-  void appendResults(const std::vector<CheckResult>& results);  // written and flushed
-  void finish();
-  void abandon();
-  const std::string& path() const { return path_; }
-  std::size_t rows() const { return rows_; }
-
- private:
-  void closeAndRename(bool complete);
-  std::string path_;
-  std::FILE* file_ = nullptr;
-  std::size_t rows_ = 0;
-};
+// checks.csv, one row per check, across all the analyses of one run: written whole to
+// "<path>.part" and renamed to <path>. Throws OutputError naming the file when it cannot be
+// written (no file then bears the final name).
+const char* checksCsvHeader();  // analysis,...,status,note
+void writeChecksCsv(const std::string& path, const std::vector<CheckResult>& results);
 
 // One row of checks.csv (no newline). Numbers in the shortest form that reads back exactly.
 std::string checkCsvRow(const CheckResult& r);

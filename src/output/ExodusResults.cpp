@@ -4,12 +4,14 @@
 #include <exodusII.h>
 
 #include <cmath>
-#include <filesystem>
+#include <unistd.h>
+
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/Errors.hpp"
+#include "core/Files.hpp"
 #include "mesh/ExodusMeshWriter.hpp"
 
 namespace choc {
@@ -38,11 +40,9 @@ std::string str(double v) {
   return s.str();
 }
 
-void renameFile(const std::string& from, const std::string& to) {
-  std::error_code ec;
-  std::filesystem::rename(from, to, ec);
-  if (ec)
-    throw std::runtime_error("cannot rename " + from + " to " + to + ": " + ec.message());
+[[noreturn]] void refuseResume(const std::string& file, const std::string& why) {
+  throw InputError(file + ": cannot continue the results of the checkpointed run: " + why +
+                   "; restart with the results the checkpoint was written with, or run from the start");
 }
 
 }  // namespace
@@ -56,11 +56,9 @@ ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& me
       globalNames_(std::move(globalVariables)) {
   validateNames(nodalNames_, "nodal", path_);
   validateNames(globalNames_, "global", path_);
-  {  // a result of an earlier run must not pass for this run's
-    std::error_code ignored;
-    std::filesystem::remove(path_, ignored);
-    std::filesystem::remove(incompletePath(), ignored);
-  }
+  // a result of an earlier run must not pass for this run's
+  removeFile(path_);
+  removeFile(incompletePath());
   exoid_ = createExodusMeshFile(mesh, partPath());
   try {
     auto define = [&](ex_entity_type type, std::vector<std::string>& names, const char* kind) {
@@ -78,8 +76,7 @@ ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& me
   } catch (...) {
     ex_close(exoid_);
     exoid_ = -1;
-    std::error_code ignored;
-    std::filesystem::remove(partPath(), ignored);  // nothing worth keeping
+    ::unlink(partPath().c_str());  // nothing worth keeping
     throw;
   }
 }
@@ -91,19 +88,12 @@ ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& me
       numNodes_(mesh.numNodes()),
       nodalNames_(std::move(nodalVariables)),
       globalNames_(std::move(globalVariables)) {
-  std::string source;
-  for (const std::string& p : {partPath(), incompletePath(), path_})
-    if (std::filesystem::exists(p)) {
-      source = p;
-      break;
-    }
+  const std::string source = checkResumable(path_, at.steps);
   const auto refuse = [&](const std::string& file, const std::string& why) {
     if (exoid_ >= 0) ex_close(exoid_);
     exoid_ = -1;
-    throw InputError(file + ": cannot continue the results of the checkpointed run: " + why +
-                     "; restart with the results the checkpoint was written with, or run from the start");
+    refuseResume(file, why);
   };
-  if (source.empty()) refuse(partPath(), "no such file (nor " + incompletePath() + " or " + path_ + ")");
   if (source != partPath()) renameFile(source, partPath());
   int cpu = sizeof(double), io = 0;
   float version = 0;
@@ -130,6 +120,27 @@ ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& me
                            std::to_string(at.steps));
   steps_ = at.steps;
   lastTime_ = at.lastTime;
+}
+
+std::string ExodusResultsWriter::checkResumable(const std::string& path, int steps) {
+  const ExodusResultsWriter::Names n{path};
+  std::string source;
+  for (const std::string& p : {n.part(), n.incomplete(), path})
+    if (isRegularFile(p)) {
+      source = p;
+      break;
+    }
+  if (source.empty()) refuseResume(n.part(), "no such file (nor " + n.incomplete() + " or " + path + ")");
+  int cpu = sizeof(double), io = 0;
+  float version = 0;
+  const int id = ex_open(source.c_str(), EX_READ, &cpu, &io, &version);
+  if (id < 0) refuseResume(source, "not a readable Exodus file");
+  const int stored = static_cast<int>(ex_inquire_int(id, EX_INQ_TIME));
+  ex_close(id);
+  if (stored < steps)
+    refuseResume(source, "it holds " + std::to_string(stored) + " time steps, not the checkpoint's " +
+                             std::to_string(steps));
+  return source;
 }
 
 ExodusResultsWriter::~ExodusResultsWriter() {
@@ -189,7 +200,7 @@ void ExodusResultsWriter::writeStep(double time, const std::vector<std::vector<d
 void ExodusResultsWriter::close() {
   const int id = exoid_;
   exoid_ = -1;
-  if (ex_close(id) < 0) throw std::runtime_error(exodusFailure("closing", partPath()));
+  if (ex_close(id) < 0) throw OutputError(exodusFailure("closing", partPath()) + " (disk full or file-size limit?)");
 }
 
 void ExodusResultsWriter::finish() {
@@ -207,10 +218,13 @@ void ExodusResultsWriter::abandon() {
   renameFile(partPath(), incompletePath());
 }
 
-std::string ExodusResultsWriter::incompletePath() const {
-  const std::filesystem::path p(path_);
-  const std::string ext = p.has_extension() ? p.extension().string() : std::string(".exo");
-  return (p.parent_path() / (p.stem().string() + ".incomplete" + ext)).string();
+std::string ExodusResultsWriter::Names::incomplete() const {
+  const std::size_t slash = path.rfind('/'), dot = path.rfind('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return path + ".incomplete.exo";
+  return path.substr(0, dot) + ".incomplete" + path.substr(dot);
 }
+
+std::string ExodusResultsWriter::incompletePath() const { return Names{path_}.incomplete(); }
 
 }  // namespace choc

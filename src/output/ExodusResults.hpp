@@ -15,7 +15,7 @@ class ExodusResultsWriter {
  public:
   // Creates "<path>.part" containing the mesh and the variable definitions (names as
   // given, e.g. DISP_X, DISP_Y, DISP_Z so that ParaView groups them into vectors).
-  // Throws std::runtime_error naming the path on an I/O failure, std::invalid_argument
+  // Throws choc::OutputError naming the path on an I/O failure, std::invalid_argument
   // for empty, duplicate or too long variable names.
   ExodusResultsWriter(const std::string& path, const Mesh& mesh,
                       std::vector<std::string> nodalVariables,
@@ -31,6 +31,10 @@ class ExodusResultsWriter {
   ExodusResultsWriter(const std::string& path, const Mesh& mesh,
                       std::vector<std::string> nodalVariables,
                       std::vector<std::string> globalVariables, const Resume& at);
+  // Throws the InputError the resuming constructor would when no earlier file of <path> holds
+  // `steps` time steps, without changing anything (a refused restart writes nothing); returns
+  // the file it would continue.
+  static std::string checkResumable(const std::string& path, int steps);
   ~ExodusResultsWriter();  // abandon() unless finish() or abandon() was called
   ExodusResultsWriter(const ExodusResultsWriter&) = delete;
   ExodusResultsWriter& operator=(const ExodusResultsWriter&) = delete;
@@ -38,7 +42,7 @@ class ExodusResultsWriter {
   // nodal[v][node] for every nodal variable and node, globals[g] for every global
   // variable. Appends one time step and flushes. Throws choc::NumericalError (naming the
   // variable, the node and the time) for a non-finite value or time, writing nothing;
-  // std::invalid_argument for wrong sizes; std::runtime_error on I/O failure;
+  // std::invalid_argument for wrong sizes; choc::OutputError on I/O failure;
   // std::logic_error after finish()/abandon().
   void writeStep(double time, const std::vector<std::vector<double>>& nodal,
                  const std::vector<double>& globals);
@@ -52,6 +56,11 @@ class ExodusResultsWriter {
   std::string incompletePath() const;
 
  private:
+  struct Names {  // the file's names, before any writer exists
+    std::string path;
+    std::string part() const { return path + ".part"; }
+    std::string incomplete() const;
+  };
   void close();
   void check(int rc, const std::string& what) const;
 

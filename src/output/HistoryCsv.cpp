@@ -8,17 +8,21 @@
 #include <set>
 #include <sstream>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/Errors.hpp"
+#include "core/Files.hpp"
 
 namespace choc {
 namespace {
 
-constexpr std::size_t kFlushEvery = 1000;
-
-void removeIfPresent(const std::string& path) { std::remove(path.c_str()); }
+constexpr std::size_t kFlushEvery = 1000;        // rows: a history can be followed as it grows
+constexpr std::size_t kBufferBytes = 1 << 16;     // or when this much is waiting
 
 }  // namespace
 
@@ -85,14 +89,13 @@ HistoryCsv::HistoryCsv(const std::string& path, const std::vector<std::string>& 
       throw std::invalid_argument("history " + path + ": column '" + c +
                                   "' is repeated (or is 'time', which is always the first)");
   }
-  removeIfPresent(path_);
-  removeIfPresent(incompletePath(path_));
-  file_ = std::fopen(partPath().c_str(), "w");
-  if (!file_)
-    throwInput(partPath(), "output directory", "", std::string("cannot be opened for writing (") +
-               std::strerror(errno) + ")", "check that the output directory exists and is writable");
-  if (std::fputs(header().c_str(), file_) == EOF)
-    throw OutputError("history " + partPath() + ": write failed (" + std::strerror(errno) + ")");
+  removeFile(path_);
+  removeFile(incompletePath(path_));
+  fd_ = ::open(partPath().c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0)
+    throw OutputError("history " + partPath() + ": cannot be created (" + systemError(errno) + ")");
+  buffer_ = header();
+  writeBuffer();
 }
 
 std::string HistoryCsv::header() const {
@@ -101,52 +104,82 @@ std::string HistoryCsv::header() const {
   return h + "\n";
 }
 
+void HistoryCsv::checkResumable(const std::string& path, long long bytes) {
+  HistoryCsv probe;
+  probe.path_ = path;
+  const std::string source = probe.resumeSource();
+  if (source.empty())
+    refuseResume(probe.partPath(), "no such file (nor " + incompletePath(path) + " or " + path + ")");
+  struct stat st {};
+  if (::stat(source.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || st.st_size < bytes)
+    refuseResume(source, "it has " + std::to_string(::stat(source.c_str(), &st) == 0 ? st.st_size : 0) +
+                             " bytes, the checkpoint needs " + std::to_string(bytes));
+}
+
+std::string HistoryCsv::resumeSource() const {
+  for (const std::string& p : {partPath(), incompletePath(path_), path_})
+    if (isRegularFile(p)) return p;
+  return "";
+}
+
+void HistoryCsv::refuseResume(const std::string& file, const std::string& why) {
+  throw InputError(file + ": cannot continue the history of the checkpointed run: " + why +
+                   "; restart with the results the checkpoint was written with, or run from the start");
+}
+
 HistoryCsv::HistoryCsv(const std::string& path, const std::vector<std::string>& columns,
                        const Resume& at, std::string& prefix)
     : path_(path), columns_(columns) {
-  std::string source;
-  for (const std::string& p : {partPath(), incompletePath(path_), path_})
-    if (std::ifstream(p).good()) {
-      source = p;
-      break;
-    }
-  const auto refuse = [&](const std::string& file, const std::string& why) {
-    throw InputError(file + ": cannot continue the history of the checkpointed run: " + why +
-                     "; restart with the results the checkpoint was written with, or run from the start");
-  };
-  if (source.empty()) refuse(partPath(), "no such file (nor " + incompletePath(path_) + " or " + path_ + ")");
+  checkResumable(path, at.bytes);
+  const std::string source = resumeSource();
   {
     std::ifstream in(source, std::ios::binary);
     prefix.assign(static_cast<std::size_t>(std::max(0LL, at.bytes)), '\0');
     in.read(prefix.data(), at.bytes);
     if (in.gcount() != at.bytes)
-      refuse(source, "it has " + std::to_string(in.gcount()) + " bytes, the checkpoint needs " +
-                         std::to_string(at.bytes));
+      refuseResume(source, "it has " + std::to_string(in.gcount()) + " bytes, the checkpoint needs " +
+                               std::to_string(at.bytes));
   }
   std::size_t lines = 0;
   for (char c : prefix) lines += c == '\n';
   if (prefix.compare(0, header().size(), header()) != 0 || lines != at.rows + 1 ||
       (!prefix.empty() && prefix.back() != '\n'))
-    refuse(source, "its first " + std::to_string(at.rows) + " rows are not the checkpoint's");
+    refuseResume(source, "its first " + std::to_string(at.rows) + " rows are not the checkpoint's");
   if (source != partPath() && std::rename(source.c_str(), partPath().c_str()) != 0)
-    refuse(source, std::string("cannot rename it to ") + partPath() + " (" + std::strerror(errno) + ")");
+    refuseResume(source, "cannot rename it to " + partPath() + " (" + systemError(errno) + ")");
   if (::truncate(partPath().c_str(), at.bytes) != 0)
-    refuse(partPath(), std::string("cannot truncate it (") + std::strerror(errno) + ")");
-  file_ = std::fopen(partPath().c_str(), "a");
-  if (!file_) refuse(partPath(), std::string("cannot open it for writing (") + std::strerror(errno) + ")");
+    refuseResume(partPath(), "cannot truncate it (" + systemError(errno) + ")");
+  fd_ = ::open(partPath().c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  if (fd_ < 0) refuseResume(partPath(), "cannot open it for writing (" + systemError(errno) + ")");
+  written_ = at.bytes;
   rows_ = at.rows;
 }
 
-long long HistoryCsv::flush() {
-  if (!file_) throw std::logic_error("history " + path_ + ": flush after finish/abandon");
-  if (std::fflush(file_) != 0 || std::ferror(file_))
-    throw OutputError("history " + partPath() + ": write failed (" + std::strerror(errno) +
+// The buffer holds whole rows only: it is written with one call, and when the disk takes part
+// of it the file is cut back to its last whole row, so a history never ends inside a row.
+void HistoryCsv::writeBuffer() {
+  if (buffer_.empty()) return;
+  const int err = writeFully(fd_, buffer_.data(), buffer_.size());
+  if (err != 0) {
+    const int cut = ::ftruncate(fd_, static_cast<off_t>(written_));
+    (void)cut;  // the error to report is the write's
+    buffer_.clear();
+    failed_ = true;
+    throw OutputError("history " + partPath() + ": write failed (" + systemError(err) +
                       "; disk full or file-size limit?)");
-  return static_cast<long long>(std::ftell(file_));
+  }
+  written_ += static_cast<long long>(buffer_.size());
+  buffer_.clear();
+}
+
+long long HistoryCsv::flush() {
+  if (fd_ < 0) throw std::logic_error("history " + path_ + ": flush after finish/abandon");
+  writeBuffer();
+  return written_;
 }
 
 HistoryCsv::~HistoryCsv() {
-  if (!file_) return;
+  if (fd_ < 0) return;
   try {
     abandon();
   } catch (...) {
@@ -155,7 +188,7 @@ HistoryCsv::~HistoryCsv() {
 }
 
 void HistoryCsv::appendRow(double time, const std::vector<double>& values) {
-  if (!file_) throw std::logic_error("history " + path_ + ": row appended after finish/abandon");
+  if (fd_ < 0) throw std::logic_error("history " + path_ + ": row appended after finish/abandon");
   if (values.size() != columns_.size())
     throw std::invalid_argument("history " + path_ + ": row at time " + csvNumber(time) + " has " +
                                 std::to_string(values.size()) + " values for " +
@@ -167,38 +200,42 @@ void HistoryCsv::appendRow(double time, const std::vector<double>& values) {
     if (!std::isfinite(values[j]))
       throw NumericalError("history " + path_ + ": column '" + columns_[j] + "' is " +
                            csvNumber(values[j]) + " at time " + csvNumber(time));
-  std::string line = csvNumber(time);
-  for (double v : values) line += "," + csvNumber(v);
-  line += "\n";
-  const bool failed = std::fputs(line.c_str(), file_) == EOF ||
-                      (++rows_ % kFlushEvery == 0 && std::fflush(file_) != 0);
-  if (failed)
-    throw OutputError("history " + partPath() + ": write failed (" + std::strerror(errno) +
-                      "; disk full or file-size limit?)");
+  buffer_ += csvNumber(time);
+  for (double v : values) {
+    buffer_ += ',';
+    buffer_ += csvNumber(v);
+  }
+  buffer_ += '\n';
+  if (++rows_ % kFlushEvery == 0 || buffer_.size() >= kBufferBytes) writeBuffer();
 }
 
 void HistoryCsv::closeAndRename(bool complete) {
-  std::FILE* f = file_;
-  file_ = nullptr;
-  const bool writeFailed = std::fflush(f) != 0 || std::ferror(f) != 0;
-  const bool closeFailed = std::fclose(f) != 0;
-  const bool ok = complete && !writeFailed && !closeFailed;
+  std::string failure;
+  if (!failed_) {
+    try {
+      writeBuffer();
+    } catch (const OutputError& e) {
+      failure = e.what();
+    }
+  }
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0 && failure.empty())
+    failure = "history " + partPath() + ": closing failed (" + systemError(errno) + ")";
+  const bool ok = complete && failure.empty() && !failed_;
   // A file with the final name is always complete: a failed write is renamed incomplete.
   const std::string target = ok ? path_ : incompletePath(path_);
-  if (std::rename(partPath().c_str(), target.c_str()) != 0)
-    throw std::runtime_error("history " + path_ + ": cannot rename " + partPath() + " to " +
-                             target + " (" + std::strerror(errno) + ")");
-  if (writeFailed || closeFailed)
-    throw OutputError("history " + path_ + ": write failed (disk full or file-size limit?); kept as " + target);
+  renameFile(partPath(), target);
+  if (!failure.empty()) throw OutputError(failure + "; kept as " + target);
 }
 
 void HistoryCsv::finish() {
-  if (!file_) throw std::logic_error("history " + path_ + ": finish after finish/abandon");
+  if (fd_ < 0) throw std::logic_error("history " + path_ + ": finish after finish/abandon");
   closeAndRename(true);
 }
 
 void HistoryCsv::abandon() {
-  if (!file_) return;
+  if (fd_ < 0) return;
   closeAndRename(false);
 }
 

@@ -31,12 +31,16 @@ class HistoryCsv {
   };
   HistoryCsv(const std::string& path, const std::vector<std::string>& columns, const Resume& at,
              std::string& prefix);
+  // Throws the InputError the resuming constructor would when <path>'s earlier file is missing
+  // or shorter than `bytes`, without changing anything (a refused restart writes nothing).
+  static void checkResumable(const std::string& path, long long bytes);
   ~HistoryCsv();  // abandon() unless finished
   HistoryCsv(const HistoryCsv&) = delete;
   HistoryCsv& operator=(const HistoryCsv&) = delete;
 
   // values: one per column. Throws choc::NumericalError naming the column and the time if
-  // a value (or the time) is not finite, std::invalid_argument on a size mismatch.
+  // a value (or the time) is not finite, std::invalid_argument on a size mismatch. Rows are
+  // written whole: on a failed write (OutputError) the file is cut back to its last whole row.
   void appendRow(double time, const std::vector<double>& values);
   // Flushes the rows written so far and returns the file's length (for a checkpoint).
   // Throws OutputError naming the file when the data cannot be written.
@@ -47,14 +51,21 @@ class HistoryCsv {
   const std::string& path() const { return path_; }
   std::string partPath() const { return path_ + ".part"; }
   std::size_t rows() const { return rows_; }
-  bool open() const { return file_ != nullptr; }
+  bool open() const { return fd_ >= 0; }
 
  private:
+  HistoryCsv() = default;
   void closeAndRename(bool complete);
+  void writeBuffer();
+  std::string resumeSource() const;
+  [[noreturn]] static void refuseResume(const std::string& file, const std::string& why);
   std::string header() const;
   std::string path_;
   std::vector<std::string> columns_;
-  std::FILE* file_ = nullptr;
+  int fd_ = -1;
+  std::string buffer_;     // whole rows not yet written
+  long long written_ = 0;  // bytes of whole rows in the file
+  bool failed_ = false;
   std::size_t rows_ = 0;
 };
 

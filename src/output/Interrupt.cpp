@@ -10,14 +10,18 @@ namespace choc {
 namespace {
 
 volatile std::sig_atomic_t g_signal = 0;
+volatile std::sig_atomic_t g_count = 0;
 
+// The first signal asks for the clean stop. `timeout` signals the child and then its process
+// group, and mpirun forwards what it receives: a second signal is taken as the same request.
+// A third one stops the process at once (the default action).
 extern "C" void onInterrupt(int sig) {
-  if (g_signal != 0) {  // second signal: give up at once
+  if (++g_count >= 3) {
     std::signal(sig, SIG_DFL);
     std::raise(sig);
     return;
   }
-  g_signal = sig;
+  if (g_signal == 0) g_signal = sig;
 }
 
 }  // namespace
@@ -38,7 +42,10 @@ bool interruptRequested() { return g_signal != 0; }
 
 int interruptSignal() { return g_signal; }
 
-void setInterruptForTesting(int sig) { g_signal = sig; }
+void setInterruptForTesting(int sig) {
+  g_signal = sig;
+  g_count = sig == 0 ? 0 : 1;
+}
 
 const char* signalName(int sig) {
   switch (sig) {

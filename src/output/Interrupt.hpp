@@ -2,8 +2,10 @@
 // set a flag; the time loops test it at a step boundary (throwIfInterrupted) and throw
 // choc::Interrupted, so that the outputs are closed and renamed "*.incomplete.*" on the way
 // out and the process exits with 128 + the signal number (130 for SIGINT, 143 for SIGTERM).
-// A second signal while the first is being handled kills the process at once (the default
-// action): the files then stay as "*.part", never with the name of a complete result.
+// A second signal is the same request (`timeout` and `mpirun` signal twice); a third one kills
+// the process at once (the default action): the files then stay as "*.part", never with the
+// name of a complete result. The handlers are installed before MPI starts, so a signal during
+// the set-up is a clean stop too, reported before the first analysis.
 #pragma once
 #include <mpi.h>
 

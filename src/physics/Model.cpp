@@ -16,6 +16,8 @@
 #include "fem/SolidElement.hpp"
 #include "mesh/Topology.hpp"
 #include "core/Errors.hpp"
+#include "core/Memory.hpp"
+#include "mesh/CoincidentNodes.hpp"
 #include "input/Validation.hpp"
 #include "input/Vector3.hpp"
 #include "input/XmlInput.hpp"
@@ -69,6 +71,7 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
   logPhase(*comm_, "mesh read (" + std::to_string(mesh_.numNodes()) + " nodes, " +
                        std::to_string(mesh_.numElements()) + " elements)",
            secondsSince(readStart));
+  handleCoincidentNodes(input.sublist("Mesh"));
   const Teuchos::ParameterList& model = input.sublist("Model");
   kinematics_ = kinematicsFromName(model.get<std::string>("Kinematics"));
 
@@ -155,6 +158,25 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
   }
 }
 
+// Parts meshed apart whose nodes meet are not connected: say so once, or join them.
+void Model::handleCoincidentNodes(const Teuchos::ParameterList& meshList) {
+  const CoincidentNodes found = findCoincidentNodes(mesh_);
+  if (found.duplicates() == 0) return;
+  const auto [a, b] = found.pairs.front();
+  const Point3& x = mesh_.coords[a];
+  const std::string where = format("%d node(s) lie within %.3g m of a node of other elements they are "
+                                   "not shared with (first: nodes %d and %d at (%.6g, %.6g, %.6g))",
+                                   found.duplicates(), found.tolerance, a + 1, b + 1, x[0], x[1], x[2]);
+  if (meshList.get<bool>("Merge Coincident Nodes")) {
+    mergeCoincidentNodes(mesh_, found);
+    log() << "mesh: " << where << ": merged ('Mesh/Merge Coincident Nodes')\n";
+    return;
+  }
+  log() << "choc: warning: " << inputFile_ << ": mesh '" << meshList.get<std::string>("File") << "': "
+        << where << "; the parts are not connected there: set 'Mesh/Merge Coincident Nodes' = true "
+        << "if they are one body (contact surfaces that touch at the start are fine)\n";
+}
+
 // The element of a block: beams and HEX8 by their own kernels (3D), every other solid by the
 // isoparametric library; a block that does not fit the kinematics is an input error.
 std::shared_ptr<const ElementKernel> Model::blockKernel(const ElementBlock& blk, Kinematics kin,
@@ -234,6 +256,7 @@ void Model::buildDofMap(std::vector<std::uint8_t> mask, const std::string& metho
   try {
     part = partitionNodes(mesh_, mask, p);
   } catch (const std::exception& e) {
+    rethrowIfOutOfMemory(describeFailure(e), "partition of the nodes");
     throw NumericalError(std::string("partition of the nodes: ") + e.what());
   }
   const PartitionQuality q = partitionQuality(mesh_, mask, part);

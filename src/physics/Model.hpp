@@ -53,6 +53,7 @@ class Model {
   long long dof(int node, int comp) const { return dofs_->dof(node, comp); }
 
  private:
+  void handleCoincidentNodes(const Teuchos::ParameterList& meshList);
   std::shared_ptr<const ElementKernel> blockKernel(const ElementBlock& blk, Kinematics kin,
                                                   const Material& m, const Teuchos::ParameterList& bp,
                                                   const std::string& file) const;

@@ -11,6 +11,11 @@ Teuchos::ParameterList topLevelParameters() {
   declareRequiredString(mesh, "File",
                         "mesh file, relative to the input file: Exodus II (see 'choc mesh') or "
                         "gmsh .msh (physical groups: blocks, side sets, node sets)");
+  declareBool(mesh, "Merge Coincident Nodes", false,
+              "join nodes of different elements that lie at the same place (within 1e-6 of the "
+              "shortest element edge) but are not shared: parts meshed apart that should be one "
+              "body. Without it such nodes are reported once on the log and left unconnected "
+              "(right for contact surfaces that touch at the start)");
 
   ParameterList& model = declareSublist(top, "Model", "materials, element blocks, supports");
   declareChoice(model, "Kinematics", "3D", {"3D", "plane strain", "axisymmetric"},

@@ -11,7 +11,10 @@ namespace choc {
 
 void declareShockLinks(Teuchos::ParameterList& p) {
   ParameterList& l = declareNamedSublists(
-      p, "Shock Links", "nonlinear two-node shock links (or node-to-fixed-obstacle), by name");
+      p, "Shock Links",
+      "nonlinear two-node shock links (or node-to-fixed-obstacle), by name (the name starts the "
+      "link's result columns: 1 to 32 letters, digits, '_', '-', '.')",
+      NamedAs::OutputName);
   declareRequiredString(l, "Node 1",
                         "node set of the first node; a set of k nodes makes k links '<name>.1' .. "
                         "'<name>.k', one per node, each with these parameters");

@@ -6,11 +6,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <iterator>
 
 #include "core/Errors.hpp"
+#include "core/Files.hpp"
 
 namespace choc {
 
@@ -79,8 +79,8 @@ void writeCheckpointFile(const std::string& path, const StateArchive& archive) {
     writeFailure(path, "renaming " + tmp, err);
   }
   // The rename itself survives a crash once the directory is on disk.
-  std::string dir = std::filesystem::path(path).parent_path().string();
-  if (dir.empty()) dir = ".";
+  const std::size_t slash = path.rfind('/');
+  const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
   const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
   if (dfd >= 0) {
     ::fsync(dfd);
@@ -89,6 +89,9 @@ void writeCheckpointFile(const std::string& path, const StateArchive& archive) {
 }
 
 StateArchive readCheckpointFile(const std::string& path) {
+  if (fileExists(path) && !isRegularFile(path))
+    throw InputError(path + ": option '--restart': is not a file; name the <analysis>.checkpoint "
+                            "file a stopped run wrote");
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw InputError(path + ": option '--restart': the checkpoint cannot be opened (" +

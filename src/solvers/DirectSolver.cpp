@@ -10,7 +10,8 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include "core/Errors.hpp"
-#include "solvers/CollectiveFailure.hpp"
+#include "core/CollectiveFailure.hpp"
+#include "core/Memory.hpp"
 #include "solvers/PreconditionedGmres.hpp"
 
 namespace choc {
@@ -68,13 +69,26 @@ class Amesos2Solver : public LinearSolver {
         if (A->getComm()->getRank() == 0) serial_.factor(rootSerial_);
       }
     } catch (const std::exception& e) {
-      failure = firstLine(e.what());
+      failure = describeFailure(e);
     }
     failure = collectiveFailure(*A->getComm(), failure);
-    if (!failure.empty())
-      throw NumericalError("direct solver " + package_ + ": factorisation failed (singular or " +
-                           "unconstrained system?): " + failure);
+    if (!failure.empty()) reportFactorizationFailure(*A, failure);
     ++factorizations_;
+  }
+
+  // An allocation failure is out of memory. KLU2 says only that its factorisation failed, for
+  // a singular matrix as for its own allocations: when an allocation of the size of its
+  // factors' first estimate (8 times the matrix's entries) fails now, it is memory.
+  [[noreturn]] void reportFactorizationFailure(const CrsMatrix& A, const std::string& failure) {
+    const std::string what = "direct solver " + package_ + ": factorisation of " +
+                             std::to_string(A.getGlobalNumRows()) + " unknowns";
+    rethrowIfOutOfMemory(failure, what);
+    const double factors = 8.0 * double(A.getGlobalNumEntries()) * (sizeof(double) + sizeof(int));
+    if (!canAllocate(static_cast<std::size_t>(factors)))
+      throw OutOfMemory(what + " failed, and " + byteSize(factors) + " (an estimate of its factors) "
+                        "cannot be allocated now (" + failure + "); run on a machine with more memory, "
+                        "or with an iterative 'Linear Solver/Method'");
+    throw NumericalError(what + " failed (singular or unconstrained system?): " + failure);
   }
 
   // Keeps the factorisation: solve() decides whether it still pays (see solveByUpdate()).
@@ -188,8 +202,9 @@ class Amesos2Solver : public LinearSolver {
       try {
         serial_.solve(b, x);
       } catch (const std::exception& e) {
-        failure = firstLine(e.what());
+        failure = describeFailure(e);
       }
+      rethrowIfOutOfMemory(failure, "direct solver " + package_ + ": solve");
       return failure;
     }
     MultiVector bRoot(rootMap_, b.getNumVectors()), xRoot(rootMap_, b.getNumVectors());
@@ -201,11 +216,13 @@ class Amesos2Solver : public LinearSolver {
         serial_.solve(bs, xs);
         copyLocal(xs, xRoot);
       } catch (const std::exception& e) {
-        failure = firstLine(e.what());
+        failure = describeFailure(e);
       }
     }
     x.doExport(xRoot, *importer_, Tpetra::INSERT);
-    return collectiveFailure(*A_->getComm(), failure);
+    failure = collectiveFailure(*A_->getComm(), failure);
+    rethrowIfOutOfMemory(failure, "direct solver " + package_ + ": solve");
+    return failure;
   }
 
   static void copyLocal(const MultiVector& from, MultiVector& to) {

@@ -12,6 +12,7 @@
 
 #include "fem/MatrixOps.hpp"
 #include "core/Errors.hpp"
+#include "core/Memory.hpp"
 #include "solvers/DirectSolver.hpp"
 
 namespace choc {
@@ -120,6 +121,7 @@ EigenResult solveEigenproblem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
   } catch (const NumericalError&) {
     throw;
   } catch (const std::exception& e) {
+    rethrowIfOutOfMemory(describeFailure(e), "Anasazi Block Krylov-Schur");
     throw NumericalError(std::string("Anasazi Block Krylov-Schur failed: ") +
                          std::string(e.what()).substr(0, 200));
   }

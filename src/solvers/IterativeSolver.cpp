@@ -11,6 +11,7 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include "core/Errors.hpp"
+#include "core/Memory.hpp"
 #include "solvers/SymmetricOperator.hpp"
 
 namespace choc {
@@ -58,6 +59,7 @@ class BelosSolver : public LinearSolver {
         prec_->initialize();
         prec_->compute();
       } catch (const std::exception& e) {
+        rethrowIfOutOfMemory(describeFailure(e), "Ifpack2 " + precType_ + " preconditioner");
         throw NumericalError("Ifpack2 " + precType_ + " preconditioner failed: " +
                              std::string(e.what()).substr(0, 200));
       }
@@ -98,6 +100,7 @@ class BelosSolver : public LinearSolver {
     try {
       ret = solver_->solve();
     } catch (const std::exception& e) {
+      rethrowIfOutOfMemory(describeFailure(e), "Belos " + method_);
       st.message = "Belos " + method_ + " failed: " + std::string(e.what()).substr(0, 200);
       return st;
     }

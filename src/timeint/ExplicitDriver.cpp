@@ -7,6 +7,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "core/Errors.hpp"
+#include "timeint/TimeGrid.hpp"
 
 namespace choc {
 
@@ -64,7 +65,8 @@ TransientSummary ExplicitDriver::run(Vector& u, Vector& v, const Resume* resume)
     info.time = t_;
     notify(info);
   }
-  const long long nominal = std::max(1LL, (long long)std::ceil((s_.endTime - t0) / dt - 1e-9));
+  // Bounded by the analysis's 'Maximum Steps' (checked in its settings): the cast is exact.
+  const auto nominal = static_cast<long long>(nominalSteps(t0, s_.endTime, dt));
   for (long long n = nominal_ + 1; n <= nominal; ++n) {
     const double target = n == nominal ? s_.endTime : t0 + double(n) * dt;
     // Velocity Verlet (central differences with integer-step velocities): any step length.

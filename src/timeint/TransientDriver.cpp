@@ -8,6 +8,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "core/Errors.hpp"
+#include "timeint/TimeGrid.hpp"
 
 namespace choc {
 
@@ -148,7 +149,8 @@ TransientSummary TransientDriver::run(Vector& u, Vector& v, const Resume* resume
   if (!resume) notify(info);
 
   const double span = s_.endTime - t0;
-  const long long nominal = std::max(1LL, (long long)std::ceil(span / dt - 1e-9));
+  // Bounded by the analysis's 'Maximum Steps' (checked in its settings): the cast is exact.
+  const auto nominal = static_cast<long long>(nominalSteps(t0, t0 + span, dt));
   double t = t_;
   for (long long n = nominal_ + 1; n <= nominal; ++n) {
     const double target = n == nominal ? s_.endTime : t0 + double(n) * dt;

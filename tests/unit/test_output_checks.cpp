@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/Errors.hpp"
 #include "output/Checks.hpp"
 #include "output/HistoryCsv.hpp"
 
@@ -114,14 +115,8 @@ TEST(Checks, ChecksCsvHeaderRowsAndNaming) {
   b.analysis = "e";
   b.quantity = "N1:DZ";
   b.note = "known inconsistency: exact value is 0.27% away, see BRIEF";
-  {
-    choc::ChecksCsv csv(path);
-    EXPECT_TRUE(fs::exists(path + ".part"));
-    csv.appendResults({choc::evaluateCheck(a, -1.9496835316262998e-4)});
-    csv.appendResults({choc::evaluateCheck(b, -1.5541990876814815e-4)});
-    EXPECT_EQ(csv.rows(), 2u);
-    csv.finish();
-  }
+  choc::writeChecksCsv(path, {choc::evaluateCheck(a, -1.9496835316262998e-4),
+                              choc::evaluateCheck(b, -1.5541990876814815e-4)});
   EXPECT_FALSE(fs::exists(path + ".part"));
   std::ifstream in(path);
   std::vector<std::string> lines;
@@ -148,9 +143,12 @@ TEST(Checks, ChecksCsvHeaderRowsAndNaming) {
   EXPECT_EQ(r2[9], "NOOK");
   EXPECT_EQ(r2[10], b.note);
 
-  { choc::ChecksCsv unfinished(path); }  // truncates, then abandoned
+  // A file that cannot be written leaves no file under the final name: its .part name is a
+  // directory here.
+  fs::remove(path);
+  fs::create_directories(path + ".part");
+  EXPECT_THROW(choc::writeChecksCsv(path, {}), choc::OutputError);
   EXPECT_FALSE(fs::exists(path));
-  EXPECT_TRUE(fs::exists(d / "checks.incomplete.csv"));
 }
 
 TEST(Checks, FormatCheckTable) {

@@ -1,5 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
+#include <csignal>
+#include <iterator>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -126,7 +131,42 @@ TEST(HistoryCsv, BadColumnNamesAndUnwritableDirectory) {
   EXPECT_THROW(choc::HistoryCsv(p, {""}), std::invalid_argument);
   EXPECT_THROW(choc::HistoryCsv(p, {"a,b"}), std::invalid_argument);
   EXPECT_THROW(choc::HistoryCsv((d / "missing" / "r.history.csv").string(), {"A:DX"}),
-               choc::InputError);
+               choc::OutputError);
+}
+
+// A write the disk takes only part of (here a file-size limit: write() stores what fits, then
+// fails) leaves the file cut back to its last whole row: every row of the .incomplete file
+// parses, and the failure is an OutputError naming the file.
+TEST(HistoryCsv, AShortWriteLeavesOnlyWholeRows) {
+  const fs::path d = freshDir("history_short_write");
+  const std::string p = (d / "r.history.csv").string();
+  std::signal(SIGXFSZ, SIG_IGN);
+  rlimit old{};
+  getrlimit(RLIMIT_FSIZE, &old);
+  rlimit small = old;
+  small.rlim_cur = 100000;  // bytes: not a multiple of any row's length
+  setrlimit(RLIMIT_FSIZE, &small);
+  std::string message;
+  {
+    choc::HistoryCsv h(p, {"A:DX", "energy:total"});
+    try {
+      for (int i = 0; i < 100000; ++i) h.appendRow(1e-6 * i + 1e-13, {0.1 * i + 1e-7, 1.0 / (i + 3)});
+    } catch (const choc::OutputError& e) {
+      message = e.what();
+    }
+  }
+  setrlimit(RLIMIT_FSIZE, &old);
+  EXPECT_NE(message.find("r.history.csv.part"), std::string::npos) << message;
+  const std::string incomplete = (d / "r.history.incomplete.csv").string();
+  ASSERT_TRUE(fs::exists(incomplete));
+  EXPECT_FALSE(fs::exists(p));
+  EXPECT_LE(fs::file_size(incomplete), 100000u);
+  std::ifstream in(incomplete, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(text.empty());
+  EXPECT_EQ(text.back(), '\n');
+  const auto t = choc::parseHistoryCsv(text, incomplete);  // throws on a partial row
+  EXPECT_GE(t.rows.size(), 1000u);  // the rows written before the failing one reached the disk
 }
 
 TEST(HistoryCsv, FlushedAtLeastEvery1000Rows) {

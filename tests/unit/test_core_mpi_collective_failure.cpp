@@ -5,7 +5,7 @@
 
 #include <Teuchos_DefaultComm.hpp>
 
-#include "solvers/CollectiveFailure.hpp"
+#include "core/CollectiveFailure.hpp"
 
 namespace choc {
 namespace {

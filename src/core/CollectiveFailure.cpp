@@ -1,4 +1,4 @@
-#include "solvers/CollectiveFailure.hpp"
+#include "core/CollectiveFailure.hpp"
 
 #include <vector>
 
