@@ -1,5 +1,6 @@
 #include "core/Memory.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <new>
@@ -62,11 +63,17 @@ namespace {
 std::string held() { return "; the process held " + byteSize(peakResidentBytes()) + " at its peak"; }
 
 // Kokkos reports a failed allocation as a runtime_error: "Kokkos failed to allocate memory for
-// label ... Allocation of size N failed ...".
+// label ... Allocation of size 77.59 M failed ..." (a human-readable size: B, K, M, G).
 std::size_t kokkosSize(const std::string& what) {
-  const std::size_t at = what.find("of size ");
+  const std::size_t at = what.find("Allocation of size ");
   if (at == std::string::npos) return 0;
-  return static_cast<std::size_t>(std::strtoull(what.c_str() + at + 8, nullptr, 10));
+  char* end = nullptr;
+  double n = std::strtod(what.c_str() + at + 19, &end);
+  while (end && *end == ' ') ++end;
+  const std::string units = "KMGT";
+  const std::size_t u = end ? units.find(*end) : std::string::npos;
+  if (u != std::string::npos) n *= std::pow(1024.0, double(u + 1));
+  return static_cast<std::size_t>(n);
 }
 
 }  // namespace

@@ -198,4 +198,102 @@ void printValidParameters(std::ostream& out, const ParameterList& valid,
   }
 }
 
+namespace {
+
+// One markdown table row: the cells of a key or of a sublist.
+struct MarkdownRow {
+  std::string key, type, def, valid, doc;
+};
+
+// Text safe in a markdown table cell or paragraph: one line; '|' does not end the cell, '<'
+// opens no HTML tag, '*' no emphasis.
+std::string markdownText(const std::string& text) {
+  std::string s;
+  for (char c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+    if (c == '|' || c == '<' || c == '*' || c == '\\' || c == '`') s += '\\';
+    s += c;
+  }
+  return s;
+}
+
+std::string childPath(const std::string& path, const std::string& name) {
+  return path.empty() ? name : path + "/" + name;
+}
+
+bool isMarker(const std::string& name) {
+  return name == "*open*" || name == "*output names*";
+}
+
+std::string defaultText(const Teuchos::ParameterEntry& e, const SpecValidator* spec) {
+  if (spec && spec->required()) return "required";
+  if (e.isType<std::string>()) return "'" + entryToString(e) + "'";
+  return entryToString(e);
+}
+
+MarkdownRow keyRow(const std::string& name, const Teuchos::ParameterEntry& e) {
+  const SpecValidator* spec = specOf(e);
+  return {name, spec ? spec->typeName() : userTypeName(e), defaultText(e, spec),
+          spec ? spec->describe() : "", e.docString()};
+}
+
+MarkdownRow sublistRow(const std::string& path, const std::string& name,
+                       const Teuchos::ParameterEntry& e, const ParameterList& sub) {
+  const std::string p = childPath(path, name);
+  if (isOpenSublist(sub))
+    return {name, "sublists", "",
+            "one sublist per entry, named by the user; its keys depend on its 'Type': see the "
+            "sections '" + name + "/<name> (Type = ...)'",
+            e.docString()};
+  if (isNamedSublists(sub)) {
+    std::string valid = "one sublist per entry, named by the user: see the section '" + p +
+                        "/<any name>'";
+    if (namesAreOutputNames(sub)) valid += "; names: " + outputNameRule();
+    return {name, "sublists", "", valid, e.docString()};
+  }
+  return {name, "sublist", "", "see the section '" + p + "'", e.docString()};
+}
+
+void printMarkdownTable(std::ostream& out, const std::vector<MarkdownRow>& rows) {
+  out << "| key | type | default | valid values | documentation |\n"
+      << "|---|---|---|---|---|\n";
+  for (const MarkdownRow& r : rows)
+    out << "| " << markdownText(r.key) << " | " << r.type << " | " << markdownText(r.def)
+        << " | " << markdownText(r.valid) << " | " << markdownText(r.doc) << " |\n";
+}
+
+std::vector<MarkdownRow> markdownRows(const ParameterList& valid, const std::string& path) {
+  std::vector<MarkdownRow> rows;
+  for (auto it = valid.begin(); it != valid.end(); ++it) {
+    const std::string& name = valid.name(it);
+    const Teuchos::ParameterEntry& e = valid.entry(it);
+    if (isMarker(name)) continue;
+    rows.push_back(e.isList() ? sublistRow(path, name, e, valid.sublist(name)) : keyRow(name, e));
+  }
+  return rows;
+}
+
+}  // namespace
+
+void printValidParametersMarkdown(std::ostream& out, const ParameterList& valid,
+                                  const std::string& path, const std::string& doc) {
+  out << "\n### " << (path.empty() ? std::string("(top level)") : "`" + path + "`") << "\n\n";
+  if (!doc.empty()) out << markdownText(doc) << "\n\n";
+  const std::vector<MarkdownRow> rows = markdownRows(valid, path);
+  if (rows.empty()) out << "No keys.\n";
+  else printMarkdownTable(out, rows);
+  for (auto it = valid.begin(); it != valid.end(); ++it) {
+    const std::string& name = valid.name(it);
+    if (isMarker(name) || !valid.entry(it).isList()) continue;
+    const ParameterList& sub = valid.sublist(name);
+    const std::string& subDoc = valid.entry(it).docString();
+    if (isOpenSublist(sub)) continue;
+    if (isNamedSublists(sub))
+      printValidParametersMarkdown(out, namedSublistTemplate(sub),
+                                   childPath(path, name) + "/<any name>", subDoc);
+    else
+      printValidParametersMarkdown(out, sub, childPath(path, name), subDoc);
+  }
+}
+
 }  // namespace choc

@@ -31,6 +31,13 @@ void validate(Teuchos::ParameterList& user, const Teuchos::ParameterList& valid,
 void printValidParameters(std::ostream& out, const Teuchos::ParameterList& valid,
                           const std::string& indent = "");
 
+// Prints `valid` as markdown, depth first: a section "### `path`" (path "" is the top level)
+// holding `doc` and a table of its keys (key, type, default or "required", valid values,
+// documentation), then one section per sublist; a named sublist's section is its template
+// ("path/<any name>"). Open sublists get a row only: their owner prints their sections.
+void printValidParametersMarkdown(std::ostream& out, const Teuchos::ParameterList& valid,
+                                  const std::string& path, const std::string& doc);
+
 // Value of a parameter as text for messages.
 std::string entryToString(const Teuchos::ParameterEntry& entry);
 

@@ -38,6 +38,14 @@ void installInterruptHandlers() {
   std::signal(SIGXFSZ, SIG_IGN);
 }
 
+void unblockInterruptSignals() {
+  sigset_t both;
+  sigemptyset(&both);
+  sigaddset(&both, SIGINT);
+  sigaddset(&both, SIGTERM);
+  sigprocmask(SIG_UNBLOCK, &both, nullptr);
+}
+
 bool interruptRequested() { return g_signal != 0; }
 
 int interruptSignal() { return g_signal; }

@@ -29,6 +29,7 @@ class Interrupted : public std::runtime_error {
 };
 
 void installInterruptHandlers();
+void unblockInterruptSignals();   // SIGINT and SIGTERM, blocked by the launcher
 bool interruptRequested();        // on this process
 int interruptSignal();            // the signal received, 0 if none
 const char* signalName(int sig);  // "SIGINT", "SIGTERM", ...

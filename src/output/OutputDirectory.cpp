@@ -42,12 +42,20 @@ bool makeDirectories(const std::string& path) {
   return created;
 }
 
+// The holder writes its pid just after taking the lock: a run refused in between waits for it
+// (up to 0.2 s).
 std::string readHolder(int fd) {
-  char buf[64] = {};
-  const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
-  std::string s = n > 0 ? std::string(buf, static_cast<std::size_t>(n)) : std::string();
-  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-  return s.empty() ? "unknown" : s;
+  for (int attempt = 0; attempt < 20; ++attempt) {
+    char buf[64] = {};
+    const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
+    std::string s = n > 0 ? std::string(buf, static_cast<std::size_t>(n)) : std::string();
+    if (!s.empty() && s.back() == '\n') {
+      s.pop_back();
+      return s;
+    }
+    ::usleep(10000);
+  }
+  return "unknown";
 }
 
 }  // namespace

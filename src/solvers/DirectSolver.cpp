@@ -86,8 +86,8 @@ class Amesos2Solver : public LinearSolver {
     const double factors = 8.0 * double(A.getGlobalNumEntries()) * (sizeof(double) + sizeof(int));
     if (!canAllocate(static_cast<std::size_t>(factors)))
       throw OutOfMemory(what + " failed, and " + byteSize(factors) + " (an estimate of its factors) "
-                        "cannot be allocated now (" + failure + "); run on a machine with more memory, "
-                        "or with an iterative 'Linear Solver/Method'");
+                        "cannot be allocated now; run on a machine with more memory, or with an "
+                        "iterative 'Linear Solver/Method'");
     throw NumericalError(what + " failed (singular or unconstrained system?): " + failure);
   }
 
