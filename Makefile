@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-kept bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction clean
+.PHONY: all deps configure build run test study bench bench-kept bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction docs clean
 
 all: build
 
@@ -95,6 +95,13 @@ study-bar: build
 # Wall time of every SDNL111 input, start-up included (prints figures; not a test).
 bench-inputs: build
 	tools/bench.sh $(BUILD) 5
+
+# The generated documentation: the parameters' reference (when its script exists) and the
+# verification pages' results (docs/verification/generated/) from the last `make test`'s
+# regression results; it does not rerun the suite (tools/docs/verification_pages.py --run does).
+docs: build
+	[ ! -x tools/docs/parameters_reference.sh ] || tools/docs/parameters_reference.sh $(BUILD) docs/reference/parameters.md
+	$(PYTHON) tools/docs/verification_pages.py --build $(BUILD) --out docs/verification/generated
 
 clean:
 	rm -rf $(BUILD) results

@@ -34,7 +34,8 @@ def main():
         committed.splitlines(keepends=True), proc.stdout.splitlines(keepends=True),
         fromfile=f"{reference} (committed)", tofile="choc parameters --format markdown"))
     print(f"\n{reference} is out of date: the declarations changed. Regenerate it from the "
-          f"repository root with\n  {regenerate}\nand commit it.")
+          f"repository root with\n  {regenerate}\n(`make docs` does it from build/) and "
+          "commit it.")
     return 1
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Runs the ```sh blocks of documentation pages, as a reader would from the repository root.
 
-usage: run_doc_blocks.py CHOC PAGE.md... [--root DIR] [--keep | --discard]
+usage: run_doc_blocks.py CHOC PAGE.md... [--root DIR] [--timeout S] [--keep | --discard]
 
 Each page's ```sh blocks run in order, in one fresh `bash -euo pipefail` per page, from the
 repository root, with `build/choc` replaced by CHOC. Every `/tmp` path of the commands is
@@ -18,6 +18,7 @@ import os
 import re
 import shlex
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -83,7 +84,21 @@ def split_output(text, count):
     return outputs, current, failed
 
 
-def run_page(page, choc, root, keep, discard):
+def run_bash(script, root, env, timeout):
+    """(exit code or None on a timeout, output) of the script in its own process group."""
+    proc = subprocess.Popen(["bash", "-euo", "pipefail", "-c", script], cwd=root, env=env,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            errors="replace", start_new_session=True)
+    try:
+        text, _ = proc.communicate(timeout=timeout)
+        return proc.returncode, text
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)  # bash and every command it started
+        text, _ = proc.communicate()
+        return None, text
+
+
+def run_page(page, choc, root, keep, discard, timeout):
     blocks = sh_blocks(page)
     name = os.path.relpath(page, root)
     if not blocks:
@@ -97,13 +112,15 @@ def run_page(page, choc, root, keep, discard):
     env = dict(os.environ, HOME=home, TMPDIR=private_tmp)
     script = script_for(blocks, choc, private_tmp)
     started = time.monotonic()
-    proc = subprocess.run(["bash", "-euo", "pipefail", "-c", script], cwd=root, env=env,
-                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                          errors="replace")
+    code, text = run_bash(script, root, env, timeout)
     seconds = time.monotonic() - started
-    outputs, last, failed = split_output(proc.stdout, len(blocks))
-    ok = proc.returncode == 0
-    report(name, blocks, outputs, ok, last, failed, proc.returncode, seconds)
+    outputs, last, failed = split_output(text, len(blocks))
+    ok = code == 0
+    if code is None:
+        why = f"did not finish within {timeout:g} s (killed)"
+    else:
+        why = f"exited {code}" + (f" at the command: {failed}" if failed else "")
+    report(name, blocks, outputs, ok, last, why, seconds)
     if (ok and not keep) or discard:
         shutil.rmtree(private, ignore_errors=True)
     else:
@@ -111,7 +128,7 @@ def run_page(page, choc, root, keep, discard):
     return ok
 
 
-def report(name, blocks, outputs, ok, last, failed, code, seconds):
+def report(name, blocks, outputs, ok, last, why, seconds):
     for index, (line, lines) in enumerate(blocks):
         if not ok and last is not None and index > last:
             break
@@ -123,9 +140,7 @@ def report(name, blocks, outputs, ok, last, failed, code, seconds):
     index = last if last is not None else 0
     line, lines = blocks[index]
     first = lines[0] if lines else ""
-    print(f"FAILED: {name}: the ```sh block at line {line} ('{first}') exited {code}"
-          + (f" at the command: {failed}" if failed else "")
-          + "; its output:")
+    print(f"FAILED: {name}: the ```sh block at line {line} ('{first}') {why}; its output:")
     sys.stdout.write(outputs[index] or "(no output)\n")
 
 
@@ -138,13 +153,15 @@ def main():
                         help="the repository root, where the commands run (default: this "
                              "script's ../..)")
     parser.add_argument("--keep", action="store_true", help="keep each page's private /tmp")
+    parser.add_argument("--timeout", type=float, default=240,
+                        help="seconds a page's commands may take (default 240)")
     parser.add_argument("--discard", action="store_true",
                         help="remove each page's private /tmp even after a failure")
     args = parser.parse_args()
     choc = os.path.abspath(args.choc)
     if not os.access(choc, os.X_OK):
         raise SystemExit(f"run_doc_blocks.py: '{choc}' is not an executable")
-    results = [run_page(os.path.abspath(p), choc, args.root, args.keep, args.discard) for p in args.pages]
+    results = [run_page(os.path.abspath(p), choc, args.root, args.keep, args.discard, args.timeout) for p in args.pages]
     return 0 if all(results) else 1
 
 
