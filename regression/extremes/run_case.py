@@ -4,11 +4,13 @@
 usage: run_case.py CHOC INPUT OUT [options]
   --mesh FILE=ARGS     generate FILE in OUT with 'choc mesh ARGS' (repeatable); the input names
                        the mesh by its bare file name and is run from a copy in OUT
-  --expect ok|numerical|input
+  --expect ok|numerical|input|energy
       ok:        exit 0; every history and Exodus file finite; energy bounded (below)
       numerical: exit 2 with one line on stderr matching --stderr; no file with a complete
                  result's name beside a *.incomplete.* one, and every incomplete history finite
       input:     exit 1 with one line on stderr matching --stderr
+      energy:    exit 3 with the energy-balance check NOOK in checks.csv (the run created
+                 energy and says so), every history and Exodus file finite
   --energy-tol X       max over the history of energy:total <= E0 (1 + X)
   --leapfrog           add the leapfrog energy bound r^2 / (1 - r^2), r = h / dt_crit, with h the
                        (sub-)step and dt_crit the critical step printed in the log (explicit modal)
@@ -61,7 +63,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("choc"), ap.add_argument("input"), ap.add_argument("out")
     ap.add_argument("--mesh", action="append", default=[])
-    ap.add_argument("--expect", choices=["ok", "numerical", "input"], default="ok")
+    ap.add_argument("--expect", choices=["ok", "numerical", "input", "energy"], default="ok")
     ap.add_argument("--energy-tol", type=float, default=None)
     ap.add_argument("--leapfrog", action="store_true")
     ap.add_argument("--stderr", default=None)
@@ -115,6 +117,20 @@ def main():
         print("extremes: OK")
         return
 
+    if a.expect == "energy":
+        # The run completes and says it created energy: exit 3, the energy check NOOK in
+        # checks.csv, finite results.
+        if p.returncode != 3:
+            fail(f"exit {p.returncode}, 3 expected (energy created: a failed energy check)")
+        rows = open(os.path.join(res, "checks.csv")).read().splitlines()
+        if not any("energy:balance / reference energy, largest" in r and ",NOOK," in r for r in rows):
+            fail("checks.csv has no failed energy-balance row")
+        for exo in sorted(glob.glob(os.path.join(res, "*.exo"))):
+            check_exodus(exo)
+        for h in sorted(glob.glob(os.path.join(res, "*.history.csv"))):
+            read_history(h)
+        print("extremes: OK")
+        return
     if p.returncode != 0:
         fail(f"exit {p.returncode}, 0 expected")
     hist = sorted(glob.glob(os.path.join(res, "*.history.csv")))

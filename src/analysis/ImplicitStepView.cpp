@@ -25,6 +25,12 @@ void ImplicitStepView::stepAccepted(const StepInfo& info, const Vector& u, const
   outputs_.step(*this);
 }
 
+void ImplicitStepView::substepTaken(double time, const Vector& u, const Vector& v) {
+  TimerScope ts(timer_, "Transient: output");
+  if (contact_) contact_->update(u, v, time);
+  outputs_.substep(*this, time);
+}
+
 void ImplicitStepView::differenceMassless(const Vector& u, const Vector& v, const Vector& a) {
   if (op_.masslessDofs() == 0) return;
   if (!vOut_) {

@@ -29,6 +29,7 @@ class ImplicitStepView : public TransientView, public StepObserver {
                    ObserverSet& outputs, Teuchos::StackedTimer* timer);
 
   void stepAccepted(const StepInfo& info, const Vector& u, const Vector& v, const Vector& a) override;
+  void substepTaken(double time, const Vector& u, const Vector& v) override;
 
   StepPoint point() const override;
   std::vector<double> probeValues() const override;

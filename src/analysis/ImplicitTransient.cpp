@@ -390,6 +390,7 @@ void ImplicitTransient::run(RunContext& ctx) {
   recordFigures(sum, op, *timer, wallStart);
   logFigures(sum, ctx.model, *timer);
   evaluateChecks(b_->checks, history.history(), ctx.checks);
+  if (history.balance().failed()) ctx.checks.push_back(history.balance().checkResult(name_));
 }
 
 void ImplicitTransient::describe(Model& model, const StructuralOperator& op) const {

@@ -190,6 +190,7 @@ void ModalTransient::run(RunContext& ctx) {
   const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model, params_);
   integrate(integrator, state, view, outputs, substeps, first);
   evaluateChecks(b_->checks, history.history(), ctx.checks);
+  if (history.balance().failed()) ctx.checks.push_back(history.balance().checkResult(name_));
 }
 
 namespace {
@@ -322,8 +323,10 @@ void ModalTransient::integrate(ModalIntegrator& integrator, ModalState& state, M
       view.at(0, 0.0, false);
       outputs.step(view);
     }
+    // Impact statistics take every sub-step's state, not only the step ends.
+    const auto onSubstep = [&](double t) { outputs.substep(view, t); };
     for (long long n = first; n <= s_.steps; ++n) {
-      integrator.advance(state, s_.dt, substeps);
+      integrator.advance(state, s_.dt, substeps, onSubstep);
       state.t = s_.startTime + n * s_.dt;
       view.at(n, s_.dt, n == s_.steps);
       outputs.step(view);

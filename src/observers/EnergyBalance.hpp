@@ -17,6 +17,9 @@
 //   growth  (default): balance > +tol E_ref (energy created: the dangerous direction);
 //   drift:             |balance| > tol E_ref (also reports the numerical dissipation);
 //   off:               never.
+// With 'Energy Balance Check' = 'fail' (the default) leaving the band is also a failed check:
+// a row "energy:balance / E_ref" in checks.csv and exit 3, so that a run that created energy
+// cannot end with exit 0 unnoticed; 'warn' keeps only the warning.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -27,6 +30,8 @@
 
 #include "input/ParameterSpec.hpp"
 #include "core/Errors.hpp"
+#include "core/Format.hpp"
+#include "output/Checks.hpp"
 #include "core/Log.hpp"
 
 namespace choc {
@@ -48,14 +53,30 @@ inline void declareEnergyBalance(Teuchos::ParameterList& p) {
                 "drift: warn when |balance| exceeds tol E0 (also the numerical dissipation of "
                 "HHT, modified average acceleration or generalized-alpha, which makes the "
                 "balance negative by design); off: no warning");
+  declareChoice(p, "Energy Balance Check", "fail", {"fail", "warn"},
+                "fail: a balance outside the band of 'Energy Balance Warning' and 'Energy "
+                "Balance Tolerance' is also a failed check (a row in checks.csv, exit 3): a run "
+                "that created energy does not end with exit 0; warn: the warning only (for a "
+                "scheme known to measure its energy with an error, e.g. central differences "
+                "at Courant 1)");
+}
+
+struct EnergyBalanceSettings {
+  double tolerance = 0.05;
+  double limit = 10.0;
+  std::string mode = "growth";  // growth, drift, off
+  bool failCheck = true;
+};
+
+inline EnergyBalanceSettings readEnergyBalance(const Teuchos::ParameterList& p) {
+  return {p.get<double>("Energy Balance Tolerance"), p.get<double>("Energy Balance Limit"),
+          p.get<std::string>("Energy Balance Warning"), p.get<std::string>("Energy Balance Check") == "fail"};
 }
 
 class EnergyBalanceMonitor {
  public:
-  EnergyBalanceMonitor(const Teuchos::ParameterList& p, std::string what)
-      : what_(std::move(what)), tol_(p.get<double>("Energy Balance Tolerance")),
-        limit_(p.get<double>("Energy Balance Limit")),
-        mode_(p.get<std::string>("Energy Balance Warning")) {}
+  EnergyBalanceMonitor(const EnergyBalanceSettings& s, std::string what)
+      : what_(std::move(what)), tol_(s.tolerance), limit_(s.limit), mode_(s.mode), fail_(s.failCheck) {}
 
   // Called once per recorded state, in time order; the first call fixes E_total(t0).
   // Returns energy:balance.
@@ -74,6 +95,7 @@ class EnergyBalanceMonitor {
                                          : false;
     if (over && !st_.warned) {
       st_.warned = true;
+      st_.warnedTime = t;
       char b[400];
       std::snprintf(b, sizeof b,
                     "  warning: %s: energy balance %+.4e J at t = %.6e s exceeds %s%.3g x %.4e J "
@@ -85,6 +107,7 @@ class EnergyBalanceMonitor {
       log() << b;
     }
     st_.lowest = std::min(st_.lowest, balance);
+    if (balance > st_.highest) st_.highestTime = t;
     st_.highest = std::max(st_.highest, balance);
     const double fixedRef = std::max(st_.e0, st_.maxExternal);  // not the total, which a blow-up grows
     if (fixedRef > 0 && balance > limit_ * fixedRef) {
@@ -104,16 +127,50 @@ class EnergyBalanceMonitor {
   std::string summary() const {
     char b[240];
     std::snprintf(b, sizeof b, "  energy balance: E0 = %.6e J, balance in [%+.4e, %+.4e] J%s\n", st_.e0,
-                  st_.first ? 0.0 : st_.lowest, st_.first ? 0.0 : st_.highest, st_.warned ? " (warned)" : "");
+                  st_.first ? 0.0 : st_.lowest, st_.first ? 0.0 : st_.highest,
+                  failed() ? " (a failed check: 'Energy Balance Check')" : st_.warned ? " (warned)" : "");
     return b;
   }
   bool warned() const { return st_.warned; }
+
+  // With 'Energy Balance Check' = 'fail', a run whose balance left the band is a failed check:
+  // the largest balance relative to the reference energy, against the tolerance (at its time).
+  // Nothing otherwise (checks.csv holds the declared checks and the failures of this one).
+  // Judged at the end against the reference energy of the whole run (with loads, the largest
+  // |W_external|): a balance that is large only beside the little work done in the first steps
+  // of a ramp (HHT from rest) is not energy created.
+  bool failed() const { return fail_ && mode_ != "off" && worst() > tol_ * endReference(); }
+  CheckResult checkResult(const std::string& analysis) const {
+    CheckSpec spec;
+    spec.analysis = analysis;
+    const bool growth = mode_ == "growth";
+    spec.quantity = growth ? "energy:balance / reference energy, largest" : "|energy:balance| / reference energy, largest";
+    spec.time = growth ? st_.highestTime : st_.warnedTime;
+    spec.reference = 0.0;
+    spec.kind = ReferenceKind::Exact;
+    spec.criterion = Criterion::Absolute;
+    spec.tolerance = tol_;
+    spec.note = "energy created by the scheme beyond 'Energy Balance Tolerance' (first at t = " +
+                shortNumber(st_.warnedTime) + " s); 'Energy Balance Check' = warn accepts it";
+    const double ref = endReference() > 0 ? endReference() : 1.0;
+    return evaluateCheck(spec, worst() / ref);
+  }
+
+  double worst() const {
+    if (st_.first) return 0.0;
+    return mode_ == "growth" ? st_.highest : std::max(st_.highest, -st_.lowest);
+  }
+  double endReference() const {
+    const double ref = std::max(st_.e0, st_.maxExternal);
+    return ref > 0 ? ref : st_.maxTotal;
+  }
 
   // What the balance carries from one state to the next (a checkpoint stores it).
   struct State {
     bool first = true, warned = false;
     double e0 = 0.0, maxExternal = 0.0, maxTotal = 0.0;
     double lowest = INFINITY, highest = -INFINITY;
+    double highestTime = 0.0, warnedTime = 0.0;
   };
   State state() const { return st_; }
   void setState(const State& s) { st_ = s; }
@@ -122,6 +179,7 @@ class EnergyBalanceMonitor {
   std::string what_;
   double tol_, limit_;
   std::string mode_;
+  bool fail_;
   State st_;
 };
 

@@ -27,15 +27,15 @@ std::vector<std::string> historyColumns(const std::vector<std::string>& probeCol
 }
 
 HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> columns,
-                                 const std::string& csvPath, const Teuchos::ParameterList& analysis)
-    : what_(std::move(what)), columns_(std::move(columns)), balance_(analysis, what_) {
+                                 const std::string& csvPath, const EnergyBalanceSettings& energy)
+    : what_(std::move(what)), columns_(std::move(columns)), balance_(energy, what_) {
   if (!csvPath.empty() && isRootRank()) csv_ = std::make_unique<HistoryCsv>(csvPath, columns_);
 }
 
 HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> columns,
-                                 const std::string& csvPath, const Teuchos::ParameterList& analysis,
+                                 const std::string& csvPath, const EnergyBalanceSettings& energy,
                                  const StateArchive& resume, const Comm& comm)
-    : what_(std::move(what)), columns_(std::move(columns)), balance_(analysis, what_) {
+    : what_(std::move(what)), columns_(std::move(columns)), balance_(energy, what_) {
   balance_.setState(resume.getPod<EnergyBalanceMonitor::State>("history/balance"));
   energies_ = resume.getPod<EnergyTerms>("history/energies");
   const auto rows = static_cast<std::size_t>(resume.getInt("history/rows"));

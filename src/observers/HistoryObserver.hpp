@@ -26,15 +26,13 @@ std::vector<std::string> historyColumns(const std::vector<std::string>& probeCol
 
 class HistoryObserver : public TransientObserver {
  public:
-  // what: "transient 'c1'" for messages; csvPath "" writes no file; `analysis` holds the
-  // energy balance settings.
+  // what: "transient 'c1'" for messages; csvPath "" writes no file.
   HistoryObserver(std::string what, std::vector<std::string> columns, const std::string& csvPath,
-                  const Teuchos::ParameterList& analysis);
+                  const EnergyBalanceSettings& energy);
   // Continues a checkpointed run: the rows of the history file up to the checkpoint (read
   // by rank 0, shared with every rank) and the energy balance's state.
   HistoryObserver(std::string what, std::vector<std::string> columns, const std::string& csvPath,
-                  const Teuchos::ParameterList& analysis, const StateArchive& resume,
-                  const Comm& comm);
+                  const EnergyBalanceSettings& energy, const StateArchive& resume, const Comm& comm);
   void step(TransientView& view) override;
   void end(bool ok) override;
   void archive(StateArchive& a) const override;

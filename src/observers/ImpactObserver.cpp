@@ -83,13 +83,18 @@ void ImpactObserver::archive(StateArchive& a) const {
   a.putVector("impacts/flags", flags);
 }
 
-void ImpactObserver::step(TransientView& view) {
+void ImpactObserver::step(TransientView& view) { sampleAt(view, view.point().time); }
+
+// Every sub-step of an explicit scheme too: the impulse, the peak and the crossings are those
+// of every state the scheme computed, not of the step ends only.
+void ImpactObserver::substep(TransientView& view, double time) { sampleAt(view, time); }
+
+void ImpactObserver::sampleAt(TransientView& view, double t) {
   const InteractionOutput* io = view.interactions();
   if (!io) return;
   if (names_.empty()) names_ = io->impactNames();
   const std::vector<ImpactSample> s = io->impactSamples();
   tracks_.resize(s.size());
-  const double t = view.point().time;
   for (size_t i = 0; i < s.size(); ++i) sample(tracks_[i], t, s[i]);
 }
 

@@ -40,10 +40,12 @@ class ImpactObserver : public TransientObserver {
   ImpactObserver(std::string csvPath, const Teuchos::ParameterList& analysis, HistoryObserver& history,
                  const StateArchive* resume);
   void step(TransientView& view) override;
+  void substep(TransientView& view, double time) override;
   void end(bool ok) override;
   void archive(StateArchive& a) const override;
 
  private:
+  void sampleAt(TransientView& view, double time);
   struct Track {  // one interaction
     std::vector<Impact> impacts;
     bool active = false;

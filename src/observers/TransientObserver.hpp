@@ -17,6 +17,9 @@ class TransientObserver {
   virtual ~TransientObserver() = default;
   virtual void begin(TransientView&) {}
   virtual void step(TransientView& view) = 0;
+  // A sub-step of an explicit scheme inside a step, at `time` (its interactions current):
+  // only what integrates over every computed state needs it (impact statistics).
+  virtual void substep(TransientView& /*view*/, double /*time*/) {}
   virtual void end(bool /*ok*/) {}
   // What the observer carries between states (energy integrals, file positions), for a
   // checkpoint; called on every rank at the same state (it may be collective).
@@ -33,6 +36,9 @@ class ObserverSet {
   }
   void step(TransientView& view) {
     for (auto& o : observers_) o->step(view);
+  }
+  void substep(TransientView& view, double time) {
+    for (auto& o : observers_) o->substep(view, time);
   }
   void archive(StateArchive& a) const {
     for (const auto& o : observers_) o->archive(a);

@@ -70,6 +70,7 @@ TransientOutputSettings readTransientOutput(const Teuchos::ParameterList& p) {
   s.checkpoint.intervalSteps = p.sublist("Checkpoint").get<int>("Interval Steps");
   s.checkpoint.intervalSeconds = p.sublist("Checkpoint").get<double>("Interval Seconds");
   s.limits = readRunLimits(p);
+  s.energy = readEnergyBalance(p);
   return s;
 }
 
@@ -83,9 +84,9 @@ HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSe
                                              const OutputPlan& plan, const Model& model,
                                              const Teuchos::ParameterList& analysis) {
   const std::string csv = plan.base + ".history.csv";
-  auto history = plan.resume ? std::make_unique<HistoryObserver>(plan.what, plan.columns, csv, analysis,
+  auto history = plan.resume ? std::make_unique<HistoryObserver>(plan.what, plan.columns, csv, s.energy,
                                                                  *plan.resume, *model.comm())
-                             : std::make_unique<HistoryObserver>(plan.what, plan.columns, csv, analysis);
+                             : std::make_unique<HistoryObserver>(plan.what, plan.columns, csv, s.energy);
   HistoryObserver& h = *history;
   h.setRanks(model.comm()->getSize());
   set.add(std::move(history));

@@ -31,6 +31,7 @@ struct TransientOutputSettings {
   double progressInterval = 10; // seconds of wall time; 0: no progress lines
   CheckpointSettings checkpoint;
   RunLimits limits;
+  EnergyBalanceSettings energy;
 };
 TransientOutputSettings readTransientOutput(const Teuchos::ParameterList& analysis);
 

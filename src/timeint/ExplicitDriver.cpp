@@ -79,6 +79,8 @@ TransientSummary ExplicitDriver::run(Vector& u, Vector& v, const Resume* resume)
       acceleration(*u_, *vHalf_, t, h, *a_, h, 1.0);
       v_->update(1.0, *vHalf_, 0.5 * h, *a_, 0.0);
       t_ = t;
+      if (k + 1 < substeps_)
+        for (StepObserver* o : observers_) o->substepTaken(t_, *u_, *v_);
     }
     const double size = u_->normInf() + v_->normInf() + a_->normInf();  // collective
     if (!std::isfinite(size)) {

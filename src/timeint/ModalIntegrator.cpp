@@ -80,20 +80,27 @@ void ModalIntegrator::central(ModalState& s, double h) const {
   dissipated_ += 0.5 * h * (p0 + dampingPower(s));
 }
 
-void ModalIntegrator::advance(ModalState& s, double dt, int substeps) const {
+void ModalIntegrator::advance(ModalState& s, double dt, int substeps,
+                              const std::function<void(double)>& onSubstep) const {
   const double t0 = s.t;
   const double h = dt / substeps;
+  const auto reached = [&](double t, bool last) {
+    if (onSubstep && !last) onSubstep(t);
+  };
   for (int i = 0; i < substeps; ++i) {
     const double start = t0 + i * h;
+    const bool lastStep = i + 1 == substeps;
     s.t = start;
     switch (scheme_) {
       case ModalScheme::SymplecticEuler:
         euler(s, h);
         ++subSteps_;
+        reached(start + h, lastStep);
         break;
       case ModalScheme::CentralDifference:
         central(s, h);
         ++subSteps_;
+        reached(start + h, lastStep);
         break;
       case ModalScheme::Adaptive: {
         const int r = force_.nearContact(h) ? refinement_ : 1;
@@ -101,6 +108,7 @@ void ModalIntegrator::advance(ModalState& s, double dt, int substeps) const {
           s.t = start + j * (h / r);
           central(s, h / r);
           ++subSteps_;
+          reached(start + (j + 1) * (h / r), lastStep && j + 1 == r);
         }
         break;
       }

@@ -8,6 +8,7 @@
 //   Adaptive: central differences, each step cut into `refinement` sub-steps while a link is
 //             closed or could close within the step (refines around shocks)
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -50,7 +51,10 @@ class ModalIntegrator {
   // Sets q, v at t, evaluates f and a.
   void initialize(ModalState& s, double t) const;
   // Advances by dt (in `substeps` equal sub-steps, times the adaptive refinement).
-  void advance(ModalState& s, double dt, int substeps = 1) const;
+  // `onSubstep` (may be empty) is called after every sub-step but the step's last, with the
+  // sub-step's end time (the state and the link forces are that sub-step's).
+  void advance(ModalState& s, double dt, int substeps = 1,
+               const std::function<void(double)>& onSubstep = {}) const;
   long long subStepsTaken() const { return subSteps_; }
   // Velocity at s.t: symplectic Euler's v is a half-step velocity (v(t - h/2)), so the
   // synchronized one is v + h/2 a; the central-difference v is already at s.t. Both add half

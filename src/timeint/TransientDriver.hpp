@@ -42,6 +42,9 @@ class StepObserver {
   // Called for the initial state (step 0) and after every accepted step.
   virtual void stepAccepted(const StepInfo& info, const Vector& u, const Vector& v,
                             const Vector& a) = 0;
+  // Explicit sub-steps inside a step (not its last, which stepAccepted reports): for what
+  // integrates over every state the scheme computes (impact statistics).
+  virtual void substepTaken(double /*time*/, const Vector& /*u*/, const Vector& /*v*/) {}
 };
 
 struct TransientSummary {
