@@ -1,5 +1,7 @@
 #include "analysis/Analysis.hpp"
 
+#include "output/OutputDirectory.hpp"
+
 namespace choc {
 
 bool RunContext::failedChecks() const {
@@ -15,7 +17,7 @@ const StateArchive* Analysis::resumeFor(const RunContext& ctx) const {
 
 CheckpointPlan Analysis::checkpointPlan(const RunContext& ctx) const {
   CheckpointPlan p;
-  p.path = ctx.outputDir + "/" + name_ + ".checkpoint";
+  p.path = ctx.outputDir + "/" + name_ + suffix::checkpoint;
   p.identity.analysis = name_;
   if (ctx.input) p.identity.input = canonicalInput(*ctx.input, name_);
   p.identity.mesh = meshHash(ctx.model.mesh());

@@ -18,6 +18,7 @@
 
 #include "observers/CheckpointObserver.hpp"
 #include "output/Checks.hpp"
+#include "output/RunSummary.hpp"
 #include "physics/ModalBasis.hpp"
 #include "physics/Model.hpp"
 
@@ -38,6 +39,7 @@ struct RunContext {
   std::vector<CheckResult> checks;
   const Teuchos::ParameterList* input = nullptr;  // the whole validated input (run identity)
   std::shared_ptr<const StateArchive> restart;    // a checkpoint to continue (--restart)
+  RunSummary summary;  // what the running analysis did (<analysis>.summary.json)
   bool failedChecks() const;
 };
 

@@ -4,6 +4,7 @@
 #include <limits>
 #include <sstream>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -387,10 +388,61 @@ void ImplicitTransient::run(RunContext& ctx) {
     sum = driver->run(*b_->init.displacement, *b_->init.velocity, resume ? &from : nullptr);
   });
   timer->stopBaseTimer();
-  recordFigures(sum, op, *timer, wallStart);
-  logFigures(sum, ctx.model, *timer);
+  reportRun(ctx, sum, op, *timer, wallStart, history);
+}
+
+// The figures of the run: recorded, logged, summarised (<name>.summary.json); then the checks.
+void ImplicitTransient::reportRun(RunContext& ctx, const TransientSummary& sum, const StructuralOperator& op,
+                               Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start,
+                               const HistoryObserver& history) {
+  recordFigures(sum, op, timer, start);
+  logFigures(sum, ctx.model, timer);
+  summarize(ctx.summary, sum, op, *ctx.model.comm());
+  history.summarize(ctx.summary);
   evaluateChecks(b_->checks, history.history(), ctx.checks);
   if (history.balance().failed()) ctx.checks.push_back(history.balance().checkResult(name_));
+}
+
+void ImplicitTransient::summarize(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
+                                  const Comm& comm) const {
+  s.set("scheme", s_.explicitScheme ? std::string("central differences") : s_.scheme.name());
+  s.set("time_step", s_.time.timeStep);
+  s.set("end_time", s_.time.endTime);
+  s.set("steps", sum.steps);
+  s.set("smallest_step", sum.smallestStep);
+  if (s_.explicitScheme) {
+    s.set("substeps_per_step", b_->substeps);
+    s.set("critical_step", b_->criticalStep);
+    s.set("frequency_bound/omega_max", b_->bound.omegaMax);
+    s.set("frequency_bound/element", b_->bound.element);
+    s.set("frequency_bound/gershgorin", b_->bound.gershgorin);
+  } else {
+    s.set("newton/iterations", sum.newtonIterations);
+    s.set("newton/max_per_step", sum.maxNewtonPerStep);
+    s.set("active_set_passes", sum.activeSetIterations);
+    s.set("failed_attempts", sum.failedSteps);
+    s.set("factorizations", figures_.refactorizations);
+    s.set("kept_factorizations", figures_.keptFactorizations);
+    s.set("krylov_iterations", sum.krylovIterations);
+    s.set("linear_solver/description", op.solver().description());
+    s.set("linear_solver/choice", b_->solverChoice);
+  }
+  if (b_->contact) {
+    s.set("contact/method", s_.contact.method);
+    s.set("contact/constraints", b_->contact->numConstraints());
+  }
+  const std::pair<const char*, double> timers[] = {{"assembly", figures_.assembly},
+                                                   {"linear_solve", figures_.linearSolve},
+                                                   {"contact", figures_.contact},
+                                                   {"output", figures_.output},
+                                                   {"analysis", figures_.wall}};
+  for (const auto& [name, seconds] : timers) {  // min and max over the ranks (collective)
+    double lo = 0, hi = 0;
+    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MIN, seconds, Teuchos::outArg(lo));
+    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MAX, seconds, Teuchos::outArg(hi));
+    s.set(std::string("timers/") + name + "/min", lo);
+    s.set(std::string("timers/") + name + "/max", hi);
+  }
 }
 
 void ImplicitTransient::describe(Model& model, const StructuralOperator& op) const {

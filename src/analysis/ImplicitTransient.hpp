@@ -85,6 +85,11 @@ class ImplicitTransient : public Analysis {
   void recordFigures(const TransientSummary& sum, const StructuralOperator& op,
                      const Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start);
   void logFigures(const TransientSummary& sum, const Model& model, Teuchos::StackedTimer& timer) const;
+  void reportRun(RunContext& ctx, const TransientSummary& sum, const StructuralOperator& op,
+              Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start,
+              const HistoryObserver& history);
+  void summarize(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
+                 const Comm& comm) const;
 
   Settings s_;
   std::unique_ptr<Built> b_;

@@ -1,5 +1,6 @@
 #include "analysis/ModalAnalysis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
@@ -7,6 +8,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 
+#include "output/OutputDirectory.hpp"
 #include "fem/Components.hpp"
 #include "fem/FieldGather.hpp"
 #include "core/CollectiveFailure.hpp"
@@ -89,6 +91,15 @@ void ModalAnalysis::setup(SetupContext& ctx) {
 void ModalAnalysis::run(RunContext& ctx) {
   const EigenResult res = solve(ctx.model);
   logModes(res);
+  RunSummary& summary = ctx.summary;
+  summary.set("modes", s_.numModes);
+  summary.set("method", s_.dense ? "dense LAPACK" : "Anasazi Block Krylov-Schur");
+  summary.set("iterations", res.restarts);
+  summary.set("shift_invert_solves", res.operatorApplies);
+  std::vector<double> hz;
+  for (double l : res.eigenvalues) hz.push_back(frequencyOf(l));
+  summary.set("frequencies_hz", hz);
+  summary.set("largest_residual", *std::max_element(res.residuals.begin(), res.residuals.end()));
   checkResiduals(res);
   writeResults(ctx, res);
   auto basis = std::make_shared<ModalBasis>();
@@ -165,13 +176,13 @@ void ModalAnalysis::writeFiles(const std::string& base, const Model& model, cons
   for (int k = 0; k < s_.numModes; ++k)
     text += format("%d,%.17g,%.17g,%.17g\n", k + 1, frequencyOf(res.eigenvalues[k]),
                    res.generalizedMass[k], res.residuals[k]);
-  const std::string csv = base + ".modes.csv";
+  const std::string csv = base + suffix::modes;
   writeWholeFile(csv, text, true, incompletePath(csv));
   if (!s_.writeExodus) return;
   const std::vector<int> comps = spatialComponents(model.mesh().dimension);
   std::vector<std::string> names;
   for (int c : comps) names.push_back(std::string("DISP_") + "XYZ"[c]);
-  ExodusResultsWriter exo(base + ".exo", model.mesh(), names, {"EIGENVALUE"});
+  ExodusResultsWriter exo(base + suffix::exodus, model.mesh(), names, {"EIGENVALUE"});
   for (int k = 0; k < s_.numModes; ++k) {
     std::vector<std::vector<double>> nodal;
     for (int c : comps) nodal.push_back(nodalComponent(shapes[k], model.dofs(), c));

@@ -24,6 +24,7 @@ class ModalStepView : public TransientView {
                 const ModalBasis& basis, std::vector<double> omega2, ModalProbes probes,
                 bool symplecticEuler);
   void at(long long step, double dt, bool last);  // the state now holds this step
+  void setSubstep(double h) { substep_ = h; }     // the scheme's (sub-)step, for the energy
 
   StepPoint point() const override { return point_; }
   std::vector<double> probeValues() const override;
@@ -41,6 +42,7 @@ class ModalStepView : public TransientView {
   ModalProbes probes_;
   bool symplecticEuler_;
   StepPoint point_;
+  double substep_ = 0.0;
 };
 
 }  // namespace choc

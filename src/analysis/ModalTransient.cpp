@@ -177,6 +177,7 @@ void ModalTransient::run(RunContext& ctx) {
   ModalStepView view(state, integrator, links, basis, g.omega2,
                      {b_->probes, gatherRows(*basis.vectors, probeDofs)},
                      s_.scheme == ModalScheme::SymplecticEuler);
+  view.setSubstep(s_.dt / substeps);
   ObserverSet outputs;
   OutputPlan plan{"modal transient '" + name_ + "'", ctx.outputDir + "/" + name_, b_->columns,
                   s_.startTime, s_.endTime, ctx.model.comm()->getSize() > 1 ? 50 : 1};
@@ -189,8 +190,24 @@ void ModalTransient::run(RunContext& ctx) {
   const long long first = resume ? resumeState(cp, *resume) + 1 : 1;  // the first step to take
   const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model, params_);
   integrate(integrator, state, view, outputs, substeps, first);
+  summarize(ctx.summary, basis, g, links, substeps, integrator.subStepsTaken());
+  history.summarize(ctx.summary);
   evaluateChecks(b_->checks, history.history(), ctx.checks);
   if (history.balance().failed()) ctx.checks.push_back(history.balance().checkResult(name_));
+}
+
+void ModalTransient::summarize(RunSummary& s, const ModalBasis& basis, const Generalized& g,
+                               const ModalLinks& links, int substeps, long long taken) const {
+  s.set("scheme", params_.get<std::string>("Scheme"));
+  s.set("modes", static_cast<long long>(basis.eigenvalues.size()));
+  s.set("time_step", s_.dt);
+  s.set("end_time", s_.endTime);
+  s.set("steps", static_cast<long long>(s_.steps));
+  s.set("substeps_per_step", substeps);
+  s.set("substeps_taken", taken);
+  s.set("critical_step", explicitCriticalStep(std::sqrt(g.omega2Max + links.linkOmega2Bound()),
+                                              std::max(g.xiMax, links.linkDampingRatioBound())));
+  s.set("links", static_cast<long long>(b_->links.size()));
 }
 
 namespace {

@@ -50,6 +50,8 @@ class ModalTransient : public Analysis {
   void readTimeGrid();
   Generalized generalizedSystem(const ModalBasis& basis) const;
   ModalState initialState(Model& model, const ModalBasis& basis, double residuals[2]) const;
+  void summarize(RunSummary& s, const ModalBasis& basis, const Generalized& g, const ModalLinks& links,
+                 int substeps, long long taken) const;
   int stepsPerStep(const Generalized& g, const ModalLinks& links) const;
   void describe(const Model& model, const ModalBasis& basis, const Generalized& g,
                 const ModalLinks& links, const double residuals[2]) const;

@@ -7,9 +7,9 @@
 #include <Tpetra_Core.hpp>
 
 #include "app/Commands.hpp"
+#include "app/ErrorClass.hpp"
 #include "app/MeshCommand.hpp"
 #include "core/Errors.hpp"
-#include "core/Memory.hpp"
 #include "output/Interrupt.hpp"
 #include "core/Log.hpp"
 
@@ -25,7 +25,8 @@ const char* kUsage =
     "                           continue a transient from its checkpoint (the same input,\n"
     "                           'End Time' may be raised; any number of ranks)\n"
     "  check INPUT.xml          validate the input and print the resolved parameter list\n"
-    "  parameters               print every valid parameter with its documentation\n"
+    "  parameters [--format text|markdown]\n"
+    "                           print every valid parameter with its documentation\n"
     "  mesh [options] -o F.exo  generate a bar-impact mesh (choc mesh --help)\n"
     "  --help                   this text\n"
     "exit codes: 0 success, 1 input error, 2 numerical failure, out of memory or a result\n"
@@ -57,11 +58,12 @@ void reportError(const std::string& kind, const std::string& message) {
 
 int runApplication(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  installInterruptHandlers();  // a signal while MPI starts is a clean stop too
   // Kokkos would answer --help itself: it sees the program name only.
   int scopeArgc = 1;
   Tpetra::ScopeGuard scope(&scopeArgc, &argv);
-  installInterruptHandlers();  // again after MPI_Init, which may install handlers of its own
+  // The handlers are in place since before main (src/main.cpp); again after MPI_Init, which may
+  // install handlers of its own.
+  installInterruptHandlers();
   if (args.empty()) {
     if (isRootRank()) std::cerr << kUsage;
     return kExitInputError;
@@ -78,31 +80,10 @@ int runApplication(int argc, char** argv) {
     if (cmd == "parameters") return runParametersCommand(rest);
     if (cmd == "mesh") return runMeshCommand(rest);
     throw InputError("unknown command '" + cmd + "'; valid: run, check, parameters, mesh, --help");
-  } catch (const InputError& e) {
-    reportError("input error", e.what());
-    return kExitInputError;
-  } catch (const Interrupted& e) {
-    reportError("interrupted", e.what());
-    return e.exitCode();
-  } catch (const OutputError& e) {
-    reportError("output failure", e.what());
-    return kExitNumericalFailure;
-  } catch (const OutOfMemory& e) {
-    reportError("out of memory", e.what());
-    return kExitNumericalFailure;
-  } catch (const NumericalError& e) {
-    reportError("numerical failure", e.what());
-    return kExitNumericalFailure;
   } catch (const std::exception& e) {
-    const std::string oom = outOfMemoryMessage(e);
-    if (!oom.empty()) {
-      reportError("out of memory", oom);
-      return kExitNumericalFailure;
-    }
-    std::string m = e.what();
-    m = m.substr(0, m.find('\n'));
-    reportError("internal error", m);
-    return kExitInternalError;
+    const ErrorClass c = classifyError(e);
+    reportError(c.kind, c.message);
+    return c.exitCode;
   }
 }
 

@@ -14,7 +14,9 @@
 
 #include "analysis/AnalysisRegistry.hpp"
 #include "app/Commands.hpp"
+#include "app/AnalysisRunner.hpp"
 #include "app/InputDeck.hpp"
+#include "app/RunArgs.hpp"
 #include "core/CollectiveFailure.hpp"
 #include "core/Errors.hpp"
 #include "core/Files.hpp"
@@ -31,55 +33,6 @@
 namespace choc {
 
 namespace {
-
-struct RunArgs {
-  std::string input, outputDir, restart;
-  bool help = false;
-};
-
-const char* kRunUsage =
-    "usage: choc run INPUT.xml [-o DIR] [--restart FILE.checkpoint]\n"
-    "  runs every analysis of INPUT.xml\n"
-    "  -o, --output DIR          results in DIR (default results/<input name>/); one run at a\n"
-    "                            time per directory (a second is refused while one runs)\n"
-    "  --restart FILE.checkpoint continue the transient that wrote FILE (same input and mesh;\n"
-    "                            'End Time' may be raised; any number of ranks)\n"
-    "  -h, --help                this text\n"
-    "exit codes: 0 success, 1 input error, 2 numerical failure or a result that cannot be\n"
-    "            written, 3 a declared check failed, 4 internal error, 130/143 interrupted by\n"
-    "            SIGINT/SIGTERM (a checkpoint is written; see 'choc --help')\n";
-
-const char* kCheckUsage =
-    "usage: choc check INPUT.xml\n"
-    "  validates the input, sets every analysis up (every node set, side set, probe, basis,\n"
-    "  pair and solver choice resolved) and prints the resolved parameter list with defaults\n";
-
-RunArgs parseRunArgs(const std::vector<std::string>& args, const std::string& cmd) {
-  RunArgs r;
-  const std::string valid = cmd == "run" ? "valid: -o DIR, --restart FILE, --help" : "valid: --help";
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "-h" || args[i] == "--help") {
-      r.help = true;
-    } else if ((args[i] == "-o" || args[i] == "--output") && cmd == "run") {
-      if (i + 1 >= args.size()) throw InputError("choc " + cmd + ": option -o needs a directory");
-      r.outputDir = args[++i];
-      if (r.outputDir.empty()) throw InputError("choc run: option -o: the directory name is empty");
-    } else if (args[i] == "--restart" && cmd == "run") {
-      if (i + 1 >= args.size()) throw InputError("choc run: option --restart needs a checkpoint file");
-      r.restart = args[++i];
-    } else if (!args[i].empty() && args[i][0] == '-') {
-      throw InputError("choc " + cmd + ": unknown option '" + args[i] + "'; " + valid);
-    } else if (r.input.empty()) {
-      r.input = args[i];
-    } else {
-      throw InputError("choc " + cmd + ": one input file expected, got '" + r.input + "' and '" +
-                       args[i] + "'");
-    }
-  }
-  if (r.input.empty() && !r.help)
-    throw InputError("choc " + cmd + ": missing INPUT.xml (usage: choc " + cmd + " INPUT.xml)");
-  return r;
-}
 
 // Two log lines: the peak memory of every rank and the total per unknown; the CPU time of
 // every rank (on a loaded machine the wall time of several ranks says little; the CPU time
@@ -172,38 +125,6 @@ void prepareOutputs(const OutputDirectory& out, const std::vector<std::unique_pt
   if (!failure.empty()) throw InputError(failure);
 }
 
-// Says which results of this run are partial (the writers renamed them *.incomplete.*).
-void logPartialResults(const std::string& dir, double runStart) {
-  if (!isRootRank()) return;
-  std::vector<std::string> partial;
-  for (const DirectoryEntry& e : listDirectory(dir))
-    if (e.name.find(".incomplete") != std::string::npos && e.modified >= runStart - 2.0)
-      partial.push_back(dir + "/" + e.name);
-  std::sort(partial.begin(), partial.end());
-  log() << "\nrun stopped; incomplete results of this run:";
-  for (const auto& p : partial) log() << " " << p;
-  log() << (partial.empty() ? " none\n" : "\n") << std::flush;
-}
-
-void runAnalyses(RunContext& ctx, const std::vector<std::unique_ptr<Analysis>>& analyses,
-                 const Teuchos::ParameterList& input) {
-  const double runStart = wallClockSeconds();
-  try {
-    for (auto& an : analyses) {
-      throwIfInterruptedBefore("analysis '" + an->name() + "'");
-      const std::string type = input.sublist("Analyses").sublist(an->name()).get<std::string>("Type");
-      log() << "\nanalysis '" << an->name() << "' (" << type << ")\n";
-      const auto t0 = std::chrono::steady_clock::now();
-      an->run(ctx);
-      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      log() << "  done in " << s << " s\n";
-    }
-  } catch (...) {
-    logPartialResults(ctx.outputDir, runStart);
-    throw;
-  }
-}
-
 void writeChecks(const RunContext& ctx, const OutputDirectory& out) {
   if (ctx.checks.empty()) return;
   const std::string path = out.file("checks.csv");
@@ -226,7 +147,7 @@ int runRunCommand(const std::vector<std::string>& args) {
   const auto start = std::chrono::steady_clock::now();
   RunArgs a = parseRunArgs(args, "run");
   if (a.help) {
-    log() << kRunUsage;
+    log() << runUsage();
     return kExitOk;
   }
   auto input = readAndValidateInput(a.input);
@@ -244,8 +165,8 @@ int runRunCommand(const std::vector<std::string>& args) {
   setupAnalyses(analyses, model);
   throwIfInterruptedBefore("the first analysis (during the set-up)");
   prepareOutputs(out, analyses, *input, restart.get(), a.restart, *comm);
-  RunContext ctx{model, out.path(), {}, {}, input.get(), restart};
-  runAnalyses(ctx, analyses, *input);
+  RunContext ctx{model, out.path(), {}, {}, input.get(), restart, {}};
+  runAnalyses(ctx, analyses, *input, RunFacts{a.input, fileHash(a.input)}, out);
   writeChecks(ctx, out);
   logResources(*comm, model.dofs().numGlobal());
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

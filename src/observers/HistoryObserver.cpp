@@ -1,5 +1,6 @@
 #include "observers/HistoryObserver.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/Errors.hpp"
@@ -80,7 +81,7 @@ void HistoryObserver::step(TransientView& view) {
   energies_ = view.energies();
   const EnergyTerms& e = energies_;
   for (double x : {e.kinetic, e.strain, e.contact, e.dissipated, e.total()}) row.push_back(x);
-  row.push_back(balance_.update(pt.time, e.total(), e.dissipated, e.external));
+  row.push_back(balance_.update(pt.time, e.total() - e.shadow, e.dissipated, e.external));
   if (const InteractionOutput* io = view.interactions()) {
     const std::vector<double> v = io->historyValues();
     row.insert(row.end(), v.begin(), v.end());
@@ -100,6 +101,25 @@ void HistoryObserver::step(TransientView& view) {
       if (single_) throw;
       pending_ = e.what();
     }
+  }
+}
+
+void HistoryObserver::summarize(RunSummary& s) const {
+  const EnergyBalanceMonitor::State e = balance_.state();
+  s.set("energy/initial", e.e0);
+  s.set("energy/reference", balance_.endReference());
+  s.set("energy/balance_min", e.first ? 0.0 : e.lowest);
+  s.set("energy/balance_max", e.first ? 0.0 : e.highest);
+  s.set("energy/balance_max_time", e.highestTime);
+  s.set("energy/check", balance_.failed() ? "failed" : balance_.warned() ? "warned" : "ok");
+  s.set("recorded_states", static_cast<long long>(history_.times.size()));
+  // "<pair>:number of impacts" ... -> impacts.<pair>.number_of_impacts
+  for (const auto& [key, value] : history_.statistics) {
+    const std::size_t colon = key.find(':');
+    if (colon == std::string::npos || key.find(":impact ") != std::string::npos) continue;
+    std::string q = key.substr(colon + 1);
+    std::replace(q.begin(), q.end(), ' ', '_');
+    s.set("impacts/" + key.substr(0, colon) + "/" + q, value);
   }
 }
 

@@ -12,6 +12,7 @@
 #include "observers/EnergyBalance.hpp"
 #include "observers/TransientObserver.hpp"
 #include "output/HistoryCsv.hpp"
+#include "output/RunSummary.hpp"
 #include "output/RecordedHistory.hpp"
 #include "core/TpetraTypes.hpp"
 
@@ -45,6 +46,8 @@ class HistoryObserver : public TransientObserver {
   const std::string& pendingFailure() const { return pending_; }
   const EnergyTerms& lastEnergies() const { return energies_; }
   const EnergyBalanceMonitor& balance() const { return balance_; }
+  // The energy balance and the impact statistics, for <analysis>.summary.json.
+  void summarize(RunSummary& s) const;
 
  private:
   std::string what_;

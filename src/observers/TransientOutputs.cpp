@@ -1,5 +1,6 @@
 #include "observers/TransientOutputs.hpp"
 
+#include "output/OutputDirectory.hpp"
 #include "core/Log.hpp"
 #include "input/ParameterSpec.hpp"
 #include "observers/ExodusObserver.hpp"
@@ -75,24 +76,24 @@ TransientOutputSettings readTransientOutput(const Teuchos::ParameterList& p) {
 }
 
 void checkResumableOutputs(const std::string& base, const StateArchive& checkpoint, bool exodus) {
-  HistoryCsv::checkResumable(base + ".history.csv", checkpoint.getInt("history/bytes"));
+  HistoryCsv::checkResumable(base + suffix::history, checkpoint.getInt("history/bytes"));
   if (exodus)
-    ExodusResultsWriter::checkResumable(base + ".exo", static_cast<int>(checkpoint.getInt("exodus/steps")));
+    ExodusResultsWriter::checkResumable(base + suffix::exodus, static_cast<int>(checkpoint.getInt("exodus/steps")));
 }
 
 HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSettings& s,
                                              const OutputPlan& plan, const Model& model,
                                              const Teuchos::ParameterList& analysis) {
-  const std::string csv = plan.base + ".history.csv";
+  const std::string csv = plan.base + suffix::history;
   auto history = plan.resume ? std::make_unique<HistoryObserver>(plan.what, plan.columns, csv, s.energy,
                                                                  *plan.resume, *model.comm())
                              : std::make_unique<HistoryObserver>(plan.what, plan.columns, csv, s.energy);
   HistoryObserver& h = *history;
   h.setRanks(model.comm()->getSize());
   set.add(std::move(history));
-  set.add(std::make_unique<ImpactObserver>(plan.base + ".impacts.csv", analysis, h, plan.resume));
+  set.add(std::make_unique<ImpactObserver>(plan.base + suffix::impacts, analysis, h, plan.resume));
   if (s.exodusInterval > 0)
-    set.add(std::make_unique<ExodusObserver>(plan.base + ".exo", model, h, s.exodusInterval, plan.resume));
+    set.add(std::make_unique<ExodusObserver>(plan.base + suffix::exodus, model, h, s.exodusInterval, plan.resume));
   set.add(std::make_unique<ProgressObserver>(plan.startTime, plan.endTime, s.progressInterval));
   CheckpointPlan cp = plan.checkpoint;
   cp.settings = s.checkpoint;

@@ -136,11 +136,13 @@ std::string OutputDirectory::file(const std::string& name) const {
 
 const std::vector<OutputFileKind>& analysisOutputKinds() {
   static const std::vector<OutputFileKind> kinds = {
-      {".exo", "Exodus II results: the mesh and the nodal fields (modes, or states of a transient)"},
-      {".history.csv", "the history of a transient: one row per step"},
-      {".impacts.csv", "one row per impact of each shock link or contact pair"},
-      {".modes.csv", "the modes of a modal analysis: frequency, generalized mass, residual"},
-      {".checkpoint", "the state a stopped transient continues from (--restart)"},
+      {suffix::exodus, "Exodus II results: the mesh and the nodal fields (modes, or states of a transient)"},
+      {suffix::history, "the history of a transient: one row per step"},
+      {suffix::impacts, "one row per impact of each shock link or contact pair"},
+      {suffix::modes, "the modes of a modal analysis: frequency, generalized mass, residual"},
+      {suffix::checkpoint, "the state a stopped transient continues from (--restart)"},
+      {suffix::summary, "what the analysis did, for tools: status, exit reason, steps, iterations, "
+                        "energy, timers, memory, version and input hash"},
   };
   return kinds;
 }
@@ -156,7 +158,7 @@ std::vector<std::string> resultFileNames(const std::string& file) {
 std::vector<std::string> analysisOutputFiles(const std::string& name) {
   std::vector<std::string> out;
   for (const OutputFileKind& k : analysisOutputKinds()) {
-    if (k.suffix == ".checkpoint") {
+    if (k.suffix == suffix::checkpoint) {
       out.push_back(name + k.suffix);
       out.push_back(name + k.suffix + ".tmp");
       continue;

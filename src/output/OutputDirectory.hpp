@@ -40,7 +40,16 @@ class OutputDirectory {
 
 // The files an analysis named `name` can write, as names in the output directory: its
 // results under their final, ".part" and ".incomplete" names, and its checkpoint. The one
-// list the stale-result cleanup and the user guide use.
+// list the writers (their suffixes), the stale-result cleanup and `choc run --help` use (the
+// user guide's table is tested against that help).
+namespace suffix {
+constexpr const char* exodus = ".exo";
+constexpr const char* history = ".history.csv";
+constexpr const char* impacts = ".impacts.csv";
+constexpr const char* modes = ".modes.csv";
+constexpr const char* checkpoint = ".checkpoint";
+constexpr const char* summary = ".summary.json";
+}  // namespace suffix
 struct OutputFileKind {
   std::string suffix;       // ".history.csv"
   std::string description;  // for the user guide

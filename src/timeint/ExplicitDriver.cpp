@@ -63,6 +63,7 @@ TransientSummary ExplicitDriver::run(Vector& u, Vector& v, const Resume* resume)
     const double target1 = std::min(s_.endTime, t0 + dt);
     acceleration(*u_, *v_, t0, 0.0, *a_, (target1 - t0) / substeps_, 0.5);
     info.time = t_;
+    info.substep = (target1 - t0) / substeps_;
     notify(info);
   }
   // Bounded by the analysis's 'Maximum Steps' (checked in its settings): the cast is exact.
@@ -99,6 +100,7 @@ TransientSummary ExplicitDriver::run(Vector& u, Vector& v, const Resume* resume)
     info.last = n == nominal;
     info.boundary = true;
     info.nominal = nominal_;
+    info.substep = h;
     notify(info);
   }
   u.assign(*u_);

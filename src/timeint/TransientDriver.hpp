@@ -34,6 +34,7 @@ struct StepInfo {
   bool last = false;      // the final step of the run
   bool boundary = true;   // the end of a nominal step (not a sub-step of a cut one)
   long long nominal = 0;  // nominal steps completed
+  double substep = 0.0;   // explicit schemes: the length of the step's last sub-step (0: implicit)
 };
 
 class StepObserver {
