@@ -11,7 +11,7 @@ PYTHON ?= /usr/bin/python3
 all: build
 
 deps:
-	@tools/install-deps.sh --with-viz
+	@tools/build/install-deps.sh --with-viz
 
 $(BUILD)/Makefile: CMakeLists.txt | deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=mpicxx -DCMAKE_C_COMPILER=mpicc
@@ -23,7 +23,7 @@ build: configure
 
 # The SDNL111 suite: every benchmark input, then the report.
 run: build
-	tools/run-suite.sh $(BUILD)
+	tools/build/run-suite.sh $(BUILD)
 
 # The whole test suite (unit tests, regression cases, error messages).
 test: build
@@ -32,76 +32,80 @@ test: build
 # The scale benchmark: input/scale-3d.xml (300,300 unknowns) on 1 and 2 MPI ranks, then smaller
 # sizes of the same scene (README "Scale"); generates meshes/scale_3d.exo when missing. Then the
 # same input with the linear solver 'auto' (CG + Jacobi, adaptive tolerance). Each as the median
-# of 3 runs per rank count, np = 1 and np = 2 alternating.
+# of 3 runs per rank count, np = 1 and np = 2 alternating. Every benchmark writes its figures to
+# results/bench/<bench>.json (the performance pages of `make docs`).
 bench: build
-	$(PYTHON) tools/bench_scale.py --build $(BUILD) --sizes --repeat 3 $(BENCH_ARGS)
-	$(PYTHON) tools/bench_scale.py --build $(BUILD) --solver auto --repeat 3
-	$(PYTHON) tools/bench_modal_direct.py --build $(BUILD)
-	$(PYTHON) tools/bench_explicit.py --build $(BUILD) --end-time 2e-5
-	$(PYTHON) tools/bench_explicit.py --build $(BUILD) --end-time 2e-5 --mesh 18 560 --ranks 2 --contact lagrange
-	$(PYTHON) tools/bench_kept_factorization.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_scale.py --build $(BUILD) --sizes --repeat 3 $(BENCH_ARGS)
+	$(PYTHON) tools/bench/bench_scale.py --build $(BUILD) --solver auto --repeat 3
+	$(PYTHON) tools/bench/bench_modal_direct.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_explicit.py --build $(BUILD) --end-time 2e-5
+	$(PYTHON) tools/bench/bench_explicit.py --build $(BUILD) --end-time 2e-5 --mesh 18 560 --ranks 2 --contact lagrange
+	$(PYTHON) tools/bench/bench_kept_factorization.py --build $(BUILD)
 
 # Contact status changes on a kept factorisation (Update Budget) against refactoring at each.
 bench-kept: build
-	$(PYTHON) tools/bench_kept_factorization.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_kept_factorization.py --build $(BUILD)
 
 # SDND100's friction: stick stiffness and dt against the rows and the exact motion.
 study-friction: build
-	$(PYTHON) tools/sdnd100_study.py --build $(BUILD)
+	$(PYTHON) tools/study/sdnd100_study.py --build $(BUILD)
 
 # SDNL32 by the modal transient on 4 to 31 modes and by the direct transient (README).
 study-modal-direct: build
-	$(PYTHON) tools/modal_direct_study.py --build $(BUILD)
+	$(PYTHON) tools/study/modal_direct_study.py --build $(BUILD)
 
 # Explicit central differences on the scale scene (issue 17), np = 1 and 2, penalty and Lagrange
 # contact; then the 1.2M-unknown scene (18 x 18 x 560 HEX8 per bar) on 2 ranks.
 bench-explicit: build
-	$(PYTHON) tools/bench_explicit.py --build $(BUILD) --end-time 2e-5
-	$(PYTHON) tools/bench_explicit.py --build $(BUILD) --end-time 2e-5 --mesh 18 560 --ranks 2 --contact lagrange
+	$(PYTHON) tools/bench/bench_explicit.py --build $(BUILD) --end-time 2e-5
+	$(PYTHON) tools/bench/bench_explicit.py --build $(BUILD) --end-time 2e-5 --mesh 18 560 --ranks 2 --contact lagrange
 
 # choc against CalculiX on the same deck (issue 17): installs calculix-ccx, then runs both on
-# SDNL111's bars in 3D at growing sizes (tools/peer_calculix.py; PEER_ARGS, e.g. --sizes 3x100).
+# SDNL111's bars in 3D at growing sizes (tools/bench/peer_calculix.py; PEER_ARGS, e.g. --sizes 3x100).
 PEER_ARGS ?=
 bench-peer: build
-	@tools/install-deps.sh --with-viz --with-peer
-	$(PYTHON) tools/peer_calculix.py --build $(BUILD) $(PEER_ARGS)
+	@tools/build/install-deps.sh --with-viz --with-peer
+	$(PYTHON) tools/bench/peer_calculix.py --build $(BUILD) $(PEER_ARGS)
 
 # The same 3D scene direct and reduced to 40 modes with shock links (README "Impact statistics").
 bench-modal: build
-	$(PYTHON) tools/bench_modal_direct.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_modal_direct.py --build $(BUILD)
 
 # The speed-accuracy study: sweeps, results/study/study.csv, Pareto plots and README.md.
 study: build
-	$(PYTHON) tools/study.py --build $(BUILD) --out results/study
-	$(PYTHON) tools/study_report.py results/study
-	$(PYTHON) tools/modal_direct_study.py --build $(BUILD) --out results/study/modal-direct
-	$(PYTHON) tools/sdnd100_study.py --build $(BUILD) --out results/study/sdnd100
-	$(PYTHON) tools/sdnv100_explicit_study.py --build $(BUILD) --out results/study/sdnv100-explicit
-	$(PYTHON) tools/hertz_3d_study.py --build $(BUILD) --out results/study/hertz-3d
-	$(PYTHON) tools/explicit_implicit_study.py --build $(BUILD) --out results/study/explicit-implicit
+	$(PYTHON) tools/study/study.py --build $(BUILD) --out results/study
+	$(PYTHON) tools/study/study_report.py results/study
+	$(PYTHON) tools/study/modal_direct_study.py --build $(BUILD) --out results/study/modal-direct
+	$(PYTHON) tools/study/sdnd100_study.py --build $(BUILD) --out results/study/sdnd100
+	$(PYTHON) tools/study/sdnv100_explicit_study.py --build $(BUILD) --out results/study/sdnv100-explicit
+	$(PYTHON) tools/study/hertz_3d_study.py --build $(BUILD) --out results/study/hertz-3d
+	$(PYTHON) tools/study/explicit_implicit_study.py --build $(BUILD) --out results/study/explicit-implicit
 
 # A ~1M-unknown TET10 gmsh mesh read, partitioned and assembled on 2 ranks (time, memory per phase).
 bench-mesh: build
-	$(PYTHON) tools/bench_large_mesh.py --build $(BUILD) --n 20
+	$(PYTHON) tools/bench/bench_large_mesh.py --build $(BUILD) --n 20
 
 # The first 10 frequencies of a cantilever block in HEX20 and TET10 against mesh refinement.
 study-modal: build
-	$(PYTHON) tools/modal_convergence.py --build $(BUILD) --out results/modal_convergence
+	$(PYTHON) tools/study/modal_convergence.py --build $(BUILD) --out results/modal_convergence
 
 # The SDNL111 bar wave per element type at 4 mesh levels (about 2 minutes; gmsh meshes).
 study-bar: build
-	$(PYTHON) tools/bar_convergence.py --build $(BUILD) --out results/bar_convergence --levels 25 50 100 200
+	$(PYTHON) tools/study/bar_convergence.py --build $(BUILD) --out results/bar_convergence --levels 25 50 100 200
 
-# Wall time of every SDNL111 input, start-up included (prints figures; not a test).
+# Wall time of every SDNL111 input, start-up included (not a test).
 bench-inputs: build
-	tools/bench.sh $(BUILD) 5
+	$(PYTHON) tools/bench/bench_inputs.py --build $(BUILD) --repeat 5
 
-# The generated documentation: the parameters' reference (when its script exists) and the
+# The generated documentation: the parameters' reference (when its script exists), the
 # verification pages' results (docs/verification/generated/) from the last `make test`'s
-# regression results; it does not rerun the suite (tools/docs/verification_pages.py --run does).
+# regression results (it does not rerun the suite: tools/docs/verification_pages.py --run does),
+# and the performance tables (docs/performance/generated/) from the benchmarks' JSON files in
+# results/bench/ (a benchmark whose JSON is absent is skipped, saying so; `make bench...` writes them).
 docs: build
 	[ ! -x tools/docs/parameters_reference.sh ] || tools/docs/parameters_reference.sh $(BUILD) docs/reference/parameters.md
 	$(PYTHON) tools/docs/verification_pages.py --build $(BUILD) --out docs/verification/generated
+	$(PYTHON) tools/docs/performance_pages.py --results results/bench --out docs/performance/generated
 
 clean:
 	rm -rf $(BUILD) results

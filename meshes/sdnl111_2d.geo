@@ -5,7 +5,7 @@
 // physical names are those of the 3D meshes; the contact sides are curves. meshes/make-meshes.sh
 // generates the committed QUAD8 mesh:
 //   gmsh -2 -order 2 -format msh41 meshes/sdnl111_2d.geo -o meshes/sdnl111_2d_quad8.msh
-// tools/bar_convergence.py meshes the other element types and refinements, for example
+// tools/study/bar_convergence.py meshes the other element types and refinements, for example
 //   gmsh -2 -order 1 -setnumber n 100 -setnumber quad 0 -format msh41 sdnl111_2d.geo -o s.msh
 a = 0.02;
 L = 1.0;

@@ -7,7 +7,7 @@
 // the HEX8 mesh meshes/sdnl111_3d.exo, so that input/sdnl111c_tet10.xml reads like
 // input/sdnl111c.xml. meshes/make-meshes.sh generates the committed TET10 mesh:
 //   gmsh -3 -order 2 -format msh41 meshes/sdnl111_3d_bars.geo -o meshes/sdnl111_3d_tet10.msh
-// tools/bar_convergence.py meshes the other element types and refinements, for example
+// tools/study/bar_convergence.py meshes the other element types and refinements, for example
 //   gmsh -3 -order 2 -setnumber n 100 -setnumber hex 1 -format msh41 sdnl111_3d_bars.geo -o b.msh
 a = 0.02;      // section side [m]
 L = 1.0;       // bar length [m]

@@ -21,7 +21,7 @@ Plane Surface(1) = {1};
 Transfinite Curve{1, 2, 3, 4} = m + 1;
 Transfinite Surface{1};
 Recombine Surface{1};
-// The frame-invariance test (tools/frame_invariance.py) turns the bar by 'angle' radians
+// The frame-invariance test (tools/oracles/frame_invariance.py) turns the bar by 'angle' radians
 // about the axis (ax, ay, az) through the origin: the section is turned, then extruded along
 // (dx, dy, dz), the turned (0, 0, L) that the test passes.
 If (Exists(angle))

@@ -22,7 +22,7 @@ Transfinite Curve{1, 3} = n + 1;
 Transfinite Curve{2, 4} = 3;
 Transfinite Surface{1};
 Recombine Surface{1};
-// The frame-invariance test (tools/frame_invariance_sliding.py) turns the whole scene by
+// The frame-invariance test (tools/oracles/frame_invariance.py --scene sliding) turns the whole scene by
 // 'angle' radians about the axis (ax, ay, az) through the origin: both upper faces are turned,
 // then extruded along (dx, dy, dz), the turned (0, 0, -1) that the test passes.
 If (!Exists(angle))

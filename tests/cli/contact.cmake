@@ -7,10 +7,10 @@ function(choc_contact_script name timeout)
 endfunction()
 
 # choc_frame_invariance(<name> <timeout> [args...]): cli.frame_invariance_<name> runs
-# tools/frame_invariance.py with the args.
+# tools/oracles/frame_invariance.py with the args.
 function(choc_frame_invariance name timeout)
   add_test(NAME cli.frame_invariance_${name}
-           COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tools/frame_invariance.py ${ARGN}
+           COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tools/oracles/frame_invariance.py ${ARGN}
                    --build ${CMAKE_BINARY_DIR} --out ${CMAKE_CURRENT_BINARY_DIR}/work/frame_invariance_${name})
   set_tests_properties(cli.frame_invariance_${name} PROPERTIES TIMEOUT ${timeout} LABELS cli)
 endfunction()
@@ -31,7 +31,7 @@ choc_frame_invariance(sdnv100_springs 120 --scene sdnv100_springs)
 # and largest approach within a/R of Hertz (the order of the finite-sphere terms Hertz's
 # half-space theory leaves out, which the static press measures: |F/F_Hertz - 1| <= a/R at
 # every travel), the rebound velocity within 2% of 5 m/s and the energy balance never above
-# +0.1% of E0 (tools/hertz.py).
+# +0.1% of E0 (tools/oracles/hertz.py).
 add_test(NAME cli.hertz_axisymmetric
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/scripts/hertz.sh $<TARGET_FILE:choc>
                  ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/hertz)
@@ -59,7 +59,7 @@ choc_contact_script(curved_obstacles 120)
 # direct implicit transient with the stop as penalty contact of the tip node on a plane
 # (input/sdnl32_direct.xml) to 1e-5 of the peak, and 10 modes do not (their truncation).
 add_test(NAME cli.sdnl32_modal_equals_direct
-         COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tools/modal_direct_study.py --check
+         COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tools/study/modal_direct_study.py --check
                  --build ${CMAKE_BINARY_DIR} --out ${CMAKE_CURRENT_BINARY_DIR}/work/sdnl32_modal_direct)
 set_tests_properties(cli.sdnl32_modal_equals_direct PROPERTIES TIMEOUT 300 LABELS cli)
 

@@ -4,7 +4,7 @@
 # stiffness and mass factor out alike, r-weighted in axisymmetry), so their histories of A must
 # agree to round-off: 1e-9 of the peak displacement. Meshes by gmsh (meshes/*.geo).
 add_test(NAME cli.wave_2d_equals_3d
-         COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tools/bar_convergence.py
+         COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tools/study/bar_convergence.py
                  --build ${CMAKE_BINARY_DIR} --out ${CMAKE_CURRENT_BINARY_DIR}/work/wave_2d_equals_3d --levels 25
                  --elements HEX8 QUAD4 --exact-reduction-tolerance 1e-9)
 set_tests_properties(cli.wave_2d_equals_3d PROPERTIES TIMEOUT 120 LABELS cli)

@@ -465,7 +465,7 @@ def case_two_runs_one_directory(choc, box):
     for name, path in inputs.items():
         rc, _, err = run(choc_cmd(choc, "run", path, "-o", box.path("lone-" + name)), box.dir)
         check(rc == 0, "lone run of %s: exit %s: %s" % (name, rc, err))
-    compare = os.path.join(ROOT, "tools", "compare_results.py")
+    compare = os.path.join(ROOT, "tools", "oracles", "compare_results.py")
     for attempt in range(3):
         shutil.rmtree(box.out, ignore_errors=True)
         procs = {name: subprocess.Popen([choc, "run", path, "-o", box.out], cwd=box.dir, stdout=subprocess.PIPE,
@@ -534,7 +534,7 @@ def disk_full(choc, box, trigger, after):
     check(os.path.exists(checkpoint), "no checkpoint left to continue from")
     rc, _, err = run(choc_cmd(choc, "run", box.path("input.xml"), "-o", box.out, "--restart", checkpoint), box.dir)
     check(rc == 0, "restart after the disk was freed: exit %s: %s" % (rc, err))
-    compare = os.path.join(ROOT, "tools", "compare_results.py")
+    compare = os.path.join(ROOT, "tools", "oracles", "compare_results.py")
     rc, out, err = run([sys.executable, compare, reference, box.out, "--names", "c1_modified"], box.dir)
     check(rc == 0, "the continued run differs from the uninterrupted one:\n%s%s" % (out, err))
 

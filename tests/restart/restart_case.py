@@ -10,7 +10,7 @@ uninterrupted run, bit for bit on the same ranks and to solver tolerance on othe
 
 stops: the reference run, then for each N a run stopped at the end of nominal step N of
   analysis A (CHOC_TEST_SIGNAL_AT_STEP) and continued with --restart; histories and Exodus files
-  must be identical to the reference's (tools/compare_results.py). With --contact-column, the
+  must be identical to the reference's (tools/oracles/compare_results.py). With --contact-column, the
   reference history must show contact (COL != 0) at each of --contact-steps.
 ranks: stopped on P ranks, continued on Q ranks; equal to the 1-rank reference to T of peak.
   (With --checkpoint-steps or --checkpoint-seconds, every mode runs a copy of INPUT with checkpoints.)
@@ -34,7 +34,7 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-COMPARE = os.path.join(HERE, "..", "..", "tools", "compare_results.py")
+COMPARE = os.path.join(HERE, "..", "..", "tools", "oracles", "compare_results.py")
 MPIRUN = ["mpirun", "--allow-run-as-root", "--oversubscribe", "--bind-to", "none"]
 
 

@@ -9,7 +9,7 @@ choc="$1"; out="$2"
 top="$(cd "$(dirname "$0")/../.." && pwd)"
 mpi=(mpirun --allow-run-as-root --oversubscribe)
 rm -rf "$out"; mkdir -p "$out"
-"$top/tools/make-scale-mesh.sh" "$choc" 3 40 "$out/scale_small.exo" > /dev/null
+"$top/tools/build/make-scale-mesh.sh" "$choc" 3 40 "$out/scale_small.exo" > /dev/null
 sed -e 's|\.\./meshes/scale_3d\.exo|scale_small.exo|' \
     -e 's|name="End Time" type="double" value="[^"]*"|name="End Time" type="double" value="2e-5"|' \
     "$top/input/scale-3d.xml" > "$out/scale-small.xml"
@@ -31,5 +31,5 @@ sys.exit(0 if f > 1000 else 1)
 PY
 # Solver tolerances: Newton 1e-8 on the residual; CG (1e-10 at most) stops each correction once
 # it is a tenth of that (adaptive linear tolerance), so the ranks part at Newton's tolerance.
-python3 "$top/tools/compare_histories.py" "$out/np1/impact.history.csv" \
+python3 "$top/tools/oracles/compare_histories.py" "$out/np1/impact.history.csv" \
   "$out/np2/impact.history.csv" --rtol-peak 1e-6

@@ -26,8 +26,8 @@ Where the results come from
 
 Exit status: 0 when the pages are written; 1 on an error; 2 with --require-results when a
 case's results are missing (nothing is written then).
-Python 3 with numpy and matplotlib (Debian's /usr/bin/python3); reuses tools/bar_exact.py and
-tools/friction_oscillator.py for the closed forms.
+Python 3 with numpy and matplotlib (Debian's /usr/bin/python3); reuses tools/oracles/bar_exact.py and
+tools/oracles/friction_oscillator.py for the closed forms.
 """
 import argparse
 import csv
@@ -46,9 +46,9 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import bar_exact  # noqa: E402  (tools/bar_exact.py: d'Alembert, the input reader)
-import friction_oscillator  # noqa: E402  (tools/friction_oscillator.py: SDND100's exact motion)
+sys.path.insert(0, str(ROOT / "tools" / "oracles"))
+import bar_exact  # noqa: E402  (tools/oracles/bar_exact.py: d'Alembert, the input reader)
+import friction_oscillator  # noqa: E402  (tools/oracles/friction_oscillator.py: SDND100's exact motion)
 
 # The hand-written scene page of docs/verification/ covering each case, the scene's heading in
 # docs/verification/benchmarks.md (its first words) and the document its rows come from, as the
@@ -99,7 +99,7 @@ CASES = {
                       "the 1-DOF closed form with the ramp (code_aster's deck sdnv104e asks 5 %; 0.5 % here)"),
     "sdnd100": ("sdnd100.md", "SDND100",
                 "code_aster's SDND100 deck: its 4 rows (the rigid-plastic Coulomb closed form); the exact "
-                "elastic-plastic motion of tools/friction_oscillator.py at the deck's Kt = 4e5 N/m"),
+                "elastic-plastic motion of tools/oracles/friction_oscillator.py at the deck's Kt = 4e5 N/m"),
     "sdnd101": ("sdnd101.md", "SDND101",
                 "code_aster's SDND101 deck: its 8 rows on the impact statistics, the closed form "
                 "(contact frequency sqrt(1.01e6/100), free frequency 10 rad/s)"),
@@ -382,7 +382,7 @@ def bar_impact_closed_forms(inp, analysis):
 
 
 def sdnd100_closed_forms(inp, analysis):
-    """SDND100's exact elastic-plastic motion (tools/friction_oscillator.py) along the line
+    """SDND100's exact elastic-plastic motion (tools/oracles/friction_oscillator.py) along the line
     DX = DY: the deck's m = 1 kg and K = 1e4 N/m, the analysis' stick Kt, mu, N and x0."""
     an = inp.get("Analyses", {}).get(analysis, {})
     links = [l for l in an.get("Shock Links", {}).values()
@@ -726,8 +726,8 @@ def case_page(case, out_dir, src, bench, plots, source_note):
             recomputed.append((h, col, label, e))
         forms_of[h] = forms
     if recomputed:
-        L += ["Recomputed by this script from the histories (the same measure; `tools/bar_exact.py`, "
-              "`tools/friction_oscillator.py`), also for the columns the checks only report:", "",
+        L += ["Recomputed by this script from the histories (the same measure; `tools/oracles/bar_exact.py`, "
+              "`tools/oracles/friction_oscillator.py`), also for the columns the checks only report:", "",
               "| analysis | column | closed form | max error / peak | at t [s] | RMS error / peak |",
               "|---|---|---|---|---|---|"]
         for h, col, label, e in recomputed:

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The direct solver keeps its factorisation through changes of contact status ('Linear
 Solver/Update Budget', src/solvers/DirectSolver.cpp): the scale scene's bars at 9,648 unknowns
-(3 x 3 x 100 HEX8 per bar, tools/make-scale-mesh.sh) with Lagrange contact and Method = Direct,
+(3 x 3 x 100 HEX8 per bar, tools/build/make-scale-mesh.sh) with Lagrange contact and Method = Direct,
 100 steps of 1e-6 s (5 impacts, contact nodes opening and closing). With 'Update Budget' = 0
 every change of status refactors; with the default (auto) the changed matrices are solved by
 GMRES preconditioned by the kept factorisation. Checked: the histories agree to 1e-7 of each
@@ -18,7 +18,7 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 from scale_bars import bars_3_100  # noqa: E402
 
 choc, src, work, mesh = bars_3_100()
-sys.path.insert(0, os.path.join(src, "tools"))
+sys.path.insert(0, os.path.join(src, "tools", "bench"))
 from bench_kept_factorization import scene  # noqa: E402  (the benchmark's scene, same edits)
 
 base = scene(mesh, None)  # the default budget (auto)
@@ -47,7 +47,7 @@ def figures(log):
 
 
 def same(a, b):
-    cmp = subprocess.run([sys.executable, os.path.join(src, "tools", "compare_histories.py"),
+    cmp = subprocess.run([sys.executable, os.path.join(src, "tools", "oracles", "compare_histories.py"),
                           os.path.join(work, a, "impact.history.csv"), os.path.join(work, b, "impact.history.csv"),
                           "--rtol-peak", "1e-7", "--columns", "A:DZ,A:VZ,C:DZ,interface:force,energy:total"],
                          capture_output=True, text=True)

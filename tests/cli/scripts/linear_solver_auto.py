@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The 'auto' linear solver on the scale scene's bars at 9,648 unknowns (3 x 3 x 100 HEX8 per bar,
-tools/make-scale-mesh.sh), 20 steps of 1e-6 s (the impact at step 10): the log states CG + Jacobi with the reason
+tools/build/make-scale-mesh.sh), 20 steps of 1e-6 s (the impact at step 10): the log states CG + Jacobi with the reason
 (mass-dominated), and the histories equal those of the same input with 'Method' = 'Direct' to
 1e-7 of each peak (CG's tolerance 1e-10 on each solve). 'Newton/Linear Tolerance' = 'fixed'
 (every solve to 1e-10) gives the same histories to 1e-7 of each peak with more Krylov iterations
@@ -42,7 +42,7 @@ def krylov(log):
 
 
 def compare(name, columns="A:DZ,A:VZ,C:DZ,interface:force,energy:total"):
-    cmp = subprocess.run([sys.executable, os.path.join(src, "tools", "compare_histories.py"),
+    cmp = subprocess.run([sys.executable, os.path.join(src, "tools", "oracles", "compare_histories.py"),
                           os.path.join(work, "direct", "impact.history.csv"),
                           os.path.join(work, name, "impact.history.csv"),
                           "--rtol-peak", "1e-7", "--columns", columns], capture_output=True, text=True)

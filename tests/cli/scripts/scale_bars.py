@@ -1,5 +1,5 @@
 """The CLI scripts' common start: their arguments (CHOC SOURCE_DIR WORK_DIR) and the scale
-scene's bars at 9,648 unknowns (3 x 3 x 100 HEX8 per bar, tools/make-scale-mesh.sh) in WORK_DIR."""
+scene's bars at 9,648 unknowns (3 x 3 x 100 HEX8 per bar, tools/build/make-scale-mesh.sh) in WORK_DIR."""
 import os
 import subprocess
 import sys
@@ -10,6 +10,6 @@ def bars_3_100():
     choc, src, work = sys.argv[1:4]
     os.makedirs(work, exist_ok=True)
     mesh = os.path.join(work, "bars_3_100.exo")
-    subprocess.run([os.path.join(src, "tools", "make-scale-mesh.sh"), choc, "3", "100", mesh], check=True,
+    subprocess.run([os.path.join(src, "tools", "build", "make-scale-mesh.sh"), choc, "3", "100", mesh], check=True,
                    stdout=subprocess.DEVNULL)
     return choc, src, work, mesh
