@@ -21,7 +21,6 @@
 #include "physics/CriticalStep.hpp"
 #include "solvers/SolverChoice.hpp"
 #include "timeint/ExplicitDriver.hpp"
-#include "timeint/ModalIntegrator.hpp"
 
 namespace choc {
 
@@ -57,11 +56,7 @@ Teuchos::ParameterList ImplicitTransient::parameters() {
   declareChoice(p, "Scheme", "modified average acceleration", schemes,
                 "Newmark-family preset (see src/timeint/NewmarkFamily.hpp), or 'central "
                 "differences': explicit, lumped mass, no linear solve (src/timeint/ExplicitDriver.hpp)");
-  declareChoice(p, "Stability Check", "refuse", {"refuse", "substep"},
-                "central differences only: when 'Time Step' exceeds the critical step (a bound of "
-                "the highest frequency with the mesh, penalty contact and links), refuse the run or "
-                "cut each step into equal sub-steps at 0.9 of it; with penalty contact or links "
-                "the limit is half the critical step (they chatter and create energy above it)");
+  declareStabilityCheck(p);
   declareDouble(p, "Alpha", -0.1,
                 "alpha of 'modified average acceleration' and 'HHT', in [-1/3, 0]: "
                 "beta = (1-alpha)^2/4, gamma = 1/2 - alpha");
@@ -142,7 +137,7 @@ ImplicitTransient::ImplicitTransient(const std::string& name, const Teuchos::Par
 
 void ImplicitTransient::readScheme() {
   const std::string schemeName = params_.get<std::string>("Scheme");
-  s_.stability = params_.get<std::string>("Stability Check");
+  s_.stability = stabilityCheckFromName(params_.get<std::string>("Stability Check"));
   if (schemeName == "central differences") {
     s_.explicitScheme = true;
     return;
@@ -289,27 +284,19 @@ void ImplicitTransient::setupExplicit(const Model& model) {
   const double w = b_->bound.omegaMax;
   const double xi = w > 0 ? 0.5 * (s_.rayleighK * w + s_.rayleighM / w) : 0.0;
   b_->criticalStep = explicitCriticalStep(w, xi);
-  // Penalty contact and links switch on and off: near the limit they chatter and create
-  // energy, so they get half of it (the modal transient's rule).
+  // Penalty contact and links switch on and off (timeint/StabilityPolicy.hpp).
   const bool switching = b_->links || (b_->contact && b_->contact->method().stiffness() > 0);
-  const double limit = (switching ? 0.5 : 1.0) * b_->criticalStep;
   const double dt = s_.time.timeStep;
-  // At the limit itself the highest mode grows linearly (a double root of the amplification:
-  // measured on SDNV100's bar at Courant 1, where the element bound is exact), so a step must
-  // stay below it by more than round-off.
-  if (dt <= limit * (1 - 1e-6)) return;
-  if (s_.stability == "refuse")
+  const StabilityDecision d = decideStability(dt, b_->criticalStep, switching, s_.stability);
+  if (d.refused)
     throwInput(inputFile_, path("Time Step"), shortNumber(dt),
-               "exceeds the stable step of central differences, " + shortNumber(limit) + " s (" +
-                   (switching ? "half " : "") + "the critical step " + shortNumber(b_->criticalStep) +
-                   " s: highest frequency at most " + shortNumber(b_->bound.omegaMax) +
-                   " rad/s with the mesh, penalty contact and links" +
-                   (switching ? "; penalty contact and links chatter above half of it" : "") + ")",
-               "use a time step at most " + shortNumber(limit) + " s, or 'Stability Check' = 'substep'");
-  const double substeps = std::ceil(dt / (0.9 * limit));
-  checkStepCount(nominalSteps(0.0, s_.time.endTime, dt), substeps, s_.output.limits, inputFile_,
+               d.reason + " (highest frequency at most " + shortNumber(b_->bound.omegaMax) +
+                   " rad/s with the mesh, penalty contact and links)",
+               "use a time step at most " + shortNumber(d.stableStep) + " s, or set 'Stability Check' to 'substep'");
+  if (d.warned) b_->stabilityWarning = d.reason;
+  checkStepCount(nominalSteps(0.0, s_.time.endTime, dt), d.substeps, s_.output.limits, inputFile_,
                  "Analyses/" + name_, dt);
-  b_->substeps = static_cast<int>(substeps);  // at most 'Maximum Steps' <= 1e15 / steps
+  b_->substeps = d.substeps;
 }
 
 void ImplicitTransient::buildSolver() {
@@ -412,6 +399,7 @@ void ImplicitTransient::summarize(RunSummary& s, const TransientSummary& sum, co
   s.set("smallest_step", sum.smallestStep);
   if (s_.explicitScheme) {
     s.set("substeps_per_step", b_->substeps);
+    s.set("substep", s_.time.timeStep / b_->substeps);
     s.set("critical_step", b_->criticalStep);
     s.set("frequency_bound/omega_max", b_->bound.omegaMax);
     s.set("frequency_bound/element", b_->bound.element);
@@ -460,6 +448,7 @@ void ImplicitTransient::describe(Model& model, const StructuralOperator& op) con
                     "step\n",
                     b_->criticalStep, b_->bound.omegaMax, b_->bound.element, b_->bound.gershgorin,
                     s_.time.timeStep, b_->substeps);
+  if (!b_->stabilityWarning.empty()) log() << "  warning: " << b_->stabilityWarning << "\n";
   log() << "  dt = " << s_.time.timeStep << " s to " << s_.time.endTime << " s; Rayleigh C = "
         << s_.rayleighK << " K + " << s_.rayleighM << " M; "
         << (s_.explicitScheme ? std::string("no linear solve") : "linear solver " + op.solver().description())

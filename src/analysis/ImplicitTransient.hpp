@@ -21,6 +21,7 @@
 #include "physics/DirectLinks.hpp"
 #include "physics/StructuralOperator.hpp"
 #include "solvers/LinearSolver.hpp"
+#include "timeint/StabilityPolicy.hpp"
 #include "timeint/TransientDriver.hpp"
 
 namespace choc {
@@ -46,7 +47,7 @@ class ImplicitTransient : public Analysis {
   struct Settings {
     NewmarkFamily scheme = NewmarkFamily::averageAcceleration();
     bool explicitScheme = false;  // 'central differences': ExplicitDriver, lumped mass
-    std::string stability = "refuse";
+    StabilityCheck stability = StabilityCheck::Refuse;
     TransientSettings time;
     double rayleighK = 0, rayleighM = 0;
     ContactSettings contact;
@@ -73,6 +74,7 @@ class ImplicitTransient : public Analysis {
     FrequencyBound bound;  // the bounds of the highest frequency
     double criticalStep = 0;
     int substeps = 1;
+    std::string stabilityWarning;  // 'Stability Check' = warn above the stable step
   };
   void readScheme();
   void readTimeSettings();

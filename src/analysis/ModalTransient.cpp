@@ -36,10 +36,7 @@ Teuchos::ParameterList ModalTransient::parameters() {
                 "or central differences refined near shocks (adaptive)");
   declareInt(p, "Refinement Factor", 10, "sub-steps per step near a shock (adaptive scheme)",
              Range::atLeast(1));
-  declareChoice(p, "Stability Check", "refuse", {"refuse", "warn", "substep"},
-                "when dt exceeds the critical step (modes + link stiffness): refuse the run, "
-                "warn and go on, or sub-step each step (at 0.9 of the critical step, 0.5 with "
-                "penalty links)");
+  declareStabilityCheck(p);
   declareBool(p, "Static Correction", false,
               "enrich the basis with the static responses to unit forces at the links' nodes "
               "along their normal directions (M- and K-orthogonalised; the log says how many)");
@@ -85,7 +82,7 @@ ModalTransient::ModalTransient(const std::string& name, const Teuchos::Parameter
                "cannot be combined with 'Static Correction' (the enriched basis has more modes, mixed "
                "by its Rayleigh-Ritz step)",
                "give one 'Modal Damping' for every mode");
-  s_.stability = params_.get<std::string>("Stability Check");
+  s_.stability = stabilityCheckFromName(params_.get<std::string>("Stability Check"));
   s_.scheme = parseModalScheme(params_.get<std::string>("Scheme"));
   s_.refinement = params_.get<int>("Refinement Factor");
   s_.output = readTransientOutput(params_);
@@ -204,6 +201,7 @@ void ModalTransient::summarize(RunSummary& s, const ModalBasis& basis, const Gen
   s.set("end_time", s_.endTime);
   s.set("steps", static_cast<long long>(s_.steps));
   s.set("substeps_per_step", substeps);
+  s.set("substep", s_.dt / substeps);
   s.set("substeps_taken", taken);
   s.set("critical_step", explicitCriticalStep(std::sqrt(g.omega2Max + links.linkOmega2Bound()),
                                               std::max(g.xiMax, links.linkDampingRatioBound())));
@@ -306,30 +304,22 @@ void ModalTransient::describe(const Model& model, const ModalBasis& basis, const
                   residuals[0], residuals[1], dtCrit, s_.dt, s_.steps);
 }
 
-// Sub-steps per step from the stability check (1 when dt is below the critical step).
+// Sub-steps per step from the stability policy (timeint/StabilityPolicy.hpp); penalty links
+// switch on and off.
 int ModalTransient::stepsPerStep(const Generalized& g, const ModalLinks& links) const {
   const double dtCrit = explicitCriticalStep(std::sqrt(g.omega2Max + links.linkOmega2Bound()),
                                              std::max(g.xiMax, links.linkDampingRatioBound()));
-  if (!(s_.dt > dtCrit)) return 1;
-  const std::string what =
-      format("%.4e s exceeds the critical step %.4e s of the explicit scheme", s_.dt, dtCrit);
-  if (s_.stability == "refuse")
-    throwInput(inputFile_, path("Time Step"), format("%.6g", s_.dt), what,
-               "reduce dt, or set 'Stability Check' to 'substep'");
-  if (s_.stability == "warn") {
-    log() << "  warning: " << what << "\n";
-    return 1;
-  }
-  // Penalty links: the critical step is a linear-stability bound, but each closing of a
-  // stiff link is a nonlinear event that can add energy near the limit (a 1e16 N/m link
-  // doubled the energy at 0.9 of it, ~1% at 0.5): sub-step at half of it then.
   bool penalty = false;
   for (const auto& l : links.links()) penalty = penalty || !l.law.rigid;
-  const double count = std::ceil(s_.dt / ((penalty ? 0.5 : 0.9) * dtCrit));
-  checkStepCount(double(s_.steps), count, s_.output.limits, inputFile_, "Analyses/" + name_, s_.dt);
-  const auto substeps = static_cast<int>(count);  // at most 'Maximum Steps'
-  log() << "  " << what << ": " << substeps << " sub-steps per step\n";
-  return substeps;
+  const StabilityDecision d = decideStability(s_.dt, dtCrit, penalty, s_.stability);
+  if (d.refused)
+    throwInput(inputFile_, path("Time Step"), format("%.6g", s_.dt), d.reason + " (modes + link stiffness)",
+               "use a time step at most " + shortNumber(d.stableStep) + " s, or set 'Stability Check' to 'substep'");
+  if (d.warned) log() << "  warning: " << d.reason << "\n";
+  if (d.substeps == 1) return 1;
+  checkStepCount(double(s_.steps), d.substeps, s_.output.limits, inputFile_, "Analyses/" + name_, s_.dt);
+  log() << "  " << d.reason << ": " << d.substeps << " sub-steps per step\n";
+  return d.substeps;
 }
 
 void ModalTransient::integrate(ModalIntegrator& integrator, ModalState& state, ModalStepView& view,

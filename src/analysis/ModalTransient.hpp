@@ -11,6 +11,7 @@
 #include "observers/TransientOutputs.hpp"
 #include "physics/InitialConditions.hpp"
 #include "restart/StateVectors.hpp"
+#include "timeint/StabilityPolicy.hpp"
 
 namespace choc {
 
@@ -24,7 +25,8 @@ class ModalTransient : public Analysis {
 
  private:
   struct Settings {
-    std::string basis, projection, stability;
+    std::string basis, projection;
+    StabilityCheck stability = StabilityCheck::Refuse;
     bool staticCorrection = false;
     double damping = 0, rigidFrequency = 0;
     std::vector<double> dampingList;  // empty: 'Modal Damping' for every mode

@@ -79,6 +79,8 @@ int checksOf(RunSummary& s, const std::vector<CheckResult>& checks, const std::s
     s.set(key + "/reference", c.spec.reference);
     s.set(key + "/error", c.error);
     s.set(key + "/tolerance", c.spec.tolerance);
+    s.set(key + "/reference_kind", toString(c.spec.kind));
+    s.set(key + "/criterion", toString(c.spec.criterion));
     s.set(key + "/status", c.ok ? "OK" : "NOOK");
     failed += c.ok ? 0 : 1;
   }

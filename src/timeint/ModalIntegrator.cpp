@@ -142,9 +142,4 @@ void ModalIntegrator::unarchive(ModalState& s, const StateArchive& a) const {
   force_.unarchive(a);
 }
 
-double explicitCriticalStep(double omegaMax, double xiMax) {
-  if (!(omegaMax > 0)) return INFINITY;
-  return 2.0 / omegaMax * (std::sqrt(1.0 + xiMax * xiMax) - xiMax);
-}
-
 }  // namespace choc

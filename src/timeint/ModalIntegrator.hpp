@@ -80,8 +80,5 @@ class ModalIntegrator {
   mutable double dissipated_ = 0.0;
 };
 
-// Largest stable step of the undamped explicit schemes for the highest circular frequency
-// omega_max, reduced for the largest damping ratio xi: 2/omega (sqrt(1+xi^2) - xi).
-double explicitCriticalStep(double omegaMax, double xiMax);
 
 }  // namespace choc

@@ -12,6 +12,7 @@
 
 #include "contact/ShockLaw.hpp"
 #include "timeint/ModalIntegrator.hpp"
+#include "timeint/StabilityPolicy.hpp"
 
 namespace choc {
 namespace {

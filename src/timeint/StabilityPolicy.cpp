@@ -1,0 +1,57 @@
+#include "timeint/StabilityPolicy.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "core/Format.hpp"
+#include "input/ParameterSpec.hpp"
+
+namespace choc {
+
+double explicitCriticalStep(double omegaMax, double xiMax) {
+  if (!(omegaMax > 0)) return std::numeric_limits<double>::infinity();
+  return 2.0 / omegaMax * (std::sqrt(1.0 + xiMax * xiMax) - xiMax);
+}
+
+const std::vector<std::string>& stabilityCheckNames() {
+  static const std::vector<std::string> names = {"refuse", "warn", "substep"};
+  return names;
+}
+
+StabilityCheck stabilityCheckFromName(const std::string& name) {
+  if (name == "refuse") return StabilityCheck::Refuse;
+  if (name == "warn") return StabilityCheck::Warn;
+  if (name == "substep") return StabilityCheck::Substep;
+  throw std::invalid_argument("unknown stability check '" + name + "'");
+}
+
+void declareStabilityCheck(Teuchos::ParameterList& p) {
+  declareChoice(p, "Stability Check", "refuse", stabilityCheckNames(),
+                "explicit schemes: when 'Time Step' exceeds the stable step (the critical step "
+                "2/omega_max (sqrt(1 + xi^2) - xi) of a bound of the highest frequency, or half "
+                "of it with penalty contact or penalty links, which chatter and create energy "
+                "above it): refuse the run, warn and go on, or cut each step into equal "
+                "sub-steps at 0.9 of the stable step");
+}
+
+StabilityDecision decideStability(double dt, double criticalStep, bool switching, StabilityCheck check) {
+  StabilityDecision d;
+  d.stableStep = (switching ? kSwitchingShare : 1.0) * criticalStep;
+  if (dt <= d.stableStep * (1 - 1e-6)) return d;
+  d.above = true;
+  d.reason = format("%s s exceeds the stable step of the explicit scheme, %s s (%sthe critical step %s s)",
+                    shortNumber(dt).c_str(), shortNumber(d.stableStep).c_str(),
+                    switching ? "half " : "", shortNumber(criticalStep).c_str());
+  if (switching) d.reason += "; penalty contact and links chatter above half of it";
+  d.refused = check == StabilityCheck::Refuse;
+  d.warned = check == StabilityCheck::Warn;
+  if (check == StabilityCheck::Substep) {
+    const double n = std::ceil(dt / (kSubstepSafety * d.stableStep));
+    d.substeps = n < double(std::numeric_limits<int>::max()) ? static_cast<int>(n)
+                                                              : std::numeric_limits<int>::max();
+  }
+  return d;
+}
+
+}  // namespace choc
