@@ -290,8 +290,8 @@ void ImplicitTransient::setupExplicit(const Model& model) {
   const StabilityDecision d = decideStability(dt, b_->criticalStep, switching, s_.stability);
   if (d.refused)
     throwInput(inputFile_, path("Time Step"), shortNumber(dt),
-               d.reason + " (highest frequency at most " + shortNumber(b_->bound.omegaMax) +
-                   " rad/s with the mesh, penalty contact and links)",
+               d.reason + "; the highest frequency is at most " + shortNumber(b_->bound.omegaMax) +
+                   " rad/s with the mesh, penalty contact and links",
                "use a time step at most " + shortNumber(d.stableStep) + " s, or set 'Stability Check' to 'substep'");
   if (d.warned) b_->stabilityWarning = d.reason;
   checkStepCount(nominalSteps(0.0, s_.time.endTime, dt), d.substeps, s_.output.limits, inputFile_,

@@ -313,7 +313,7 @@ int ModalTransient::stepsPerStep(const Generalized& g, const ModalLinks& links) 
   for (const auto& l : links.links()) penalty = penalty || !l.law.rigid;
   const StabilityDecision d = decideStability(s_.dt, dtCrit, penalty, s_.stability);
   if (d.refused)
-    throwInput(inputFile_, path("Time Step"), format("%.6g", s_.dt), d.reason + " (modes + link stiffness)",
+    throwInput(inputFile_, path("Time Step"), format("%.6g", s_.dt), d.reason + "; the highest frequency is that of the modes with the link stiffness",
                "use a time step at most " + shortNumber(d.stableStep) + " s, or set 'Stability Check' to 'substep'");
   if (d.warned) log() << "  warning: " << d.reason << "\n";
   if (d.substeps == 1) return 1;

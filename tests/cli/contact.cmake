@@ -113,3 +113,8 @@ choc_frame_invariance(explicit_lagrange 120 --explicit --only lagrange)
 # peak, start, end, velocity) to round-off (1e-9); sampled at the step ends only, the impulse
 # was 0.5-1.4 % off.
 choc_contact_script(substep_impulse 120)
+
+# One stability policy (timeint/StabilityPolicy): SDND101's oscillator on a penalty stop by the
+# modal and the direct transient, above the stable step, refuse, warn and sub-step alike (the
+# same stable and critical steps to 1e-9, the same sub-steps per step).
+choc_contact_script(stability_alike 120)

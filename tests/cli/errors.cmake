@@ -273,7 +273,7 @@ choc_cli_input_error(explicit_consistent_mass check bad_explicit_consistent_mass
 choc_cli_input_error(explicit_continuous check bad_explicit_continuous.xml
   "parameter 'Analyses/impact/Contact/Method' = 'Continuous': has pressure unknowns, which the explicit scheme .central differences. cannot solve for. use Lagrange .forward-increment multipliers. or Penalty with central differences")
 choc_cli_input_error(explicit_time_step check bad_explicit_time_step.xml
-  "parameter 'Analyses/impact/Time Step' = '1e-05': exceeds the stable step of central differences, 3.9[0-9]*e-06 s .the critical step")
+  "parameter 'Analyses/impact/Time Step' = '1e-05': 1e-05 s exceeds the stable step of the explicit scheme, 3.9[0-9]*e-06 s .the critical step 3.9[0-9]*e-06 s.. the highest frequency is at most [0-9]+ rad/s")
 # Contact friction (issue 15): a negative Coulomb coefficient or stick stiffness, friction in an
 # explicit run or with CG.
 choc_cli_input_error(contact_negative_friction check bad_contact_negative_friction.xml
