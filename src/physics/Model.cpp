@@ -58,39 +58,59 @@ BeamSection beamSection(const Teuchos::ParameterList& sec, const std::string& fi
 Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
              RCP<const Comm> comm)
     : inputFile_(inputFile), comm_(std::move(comm)) {
-  const std::string& file = inputFile_;
-  const std::string meshFile =
-      resolveBeside(inputFile, input.sublist("Mesh").get<std::string>("File"));
+  const std::string meshFile = readMesh(input.sublist("Mesh"));
+  const Teuchos::ParameterList& model = input.sublist("Model");
+  kinematics_ = kinematicsFromName(model.get<std::string>("Kinematics"));
+  const std::vector<BlockPhysics> physics = blockPhysics(model);
+  const auto checkStart = std::chrono::steady_clock::now();
+  checkElementGeometry(physics, input.sublist("Mesh").get<std::string>("File"));
+  logPhase(*comm_, "element geometry check", secondsSince(checkStart));
+  std::vector<std::uint8_t> mask = freeComponents(model, physics);
+  readSprings(model.sublist("Springs"));
+  const auto partitionStart = std::chrono::steady_clock::now();
+  buildDofMap(std::move(mask), model.get<std::string>("Partition"));
+  logPhase(*comm_, "partition and DOF map (" + std::to_string(dofs_->numGlobal()) + " unknowns)",
+           secondsSince(partitionStart));
+  if (dofs_->numGlobal() == 0)
+    throwInput(inputFile_, "Model/Active Components", model.get<std::string>("Active Components"),
+               "the model has no unknowns", "check the active components and Dirichlet sets");
+  try {
+    assembler_ = std::make_unique<Assembler>(mesh_, *dofs_, physics, comm_);
+  } catch (const std::invalid_argument& e) {
+    throwInput(inputFile_, "Mesh/File", meshFile, e.what());
+  }
+}
+
+// Reads 'Mesh/File' (relative to the input file); returns its path.
+std::string Model::readMesh(const Teuchos::ParameterList& meshList) {
+  const std::string given = meshList.get<std::string>("File");
+  const std::string meshFile = resolveBeside(inputFile_, given);
   const auto readStart = std::chrono::steady_clock::now();
   try {
     mesh_ = readMeshFile(meshFile);
   } catch (const InputError& e) {
-    throwInput(file, "Mesh/File", input.sublist("Mesh").get<std::string>("File"),
-               std::string("cannot use the mesh: ") + e.what());
+    throwInput(inputFile_, "Mesh/File", given, std::string("cannot use the mesh: ") + e.what());
   }
   logPhase(*comm_, "mesh read (" + std::to_string(mesh_.numNodes()) + " nodes, " +
                        std::to_string(mesh_.numElements()) + " elements)",
            secondsSince(readStart));
-  handleCoincidentNodes(input.sublist("Mesh"));
-  const Teuchos::ParameterList& model = input.sublist("Model");
-  kinematics_ = kinematicsFromName(model.get<std::string>("Kinematics"));
+  handleCoincidentNodes(meshList);
+  return meshFile;
+}
 
-  // Materials
+// Every mesh block needs an entry in Model/Blocks, every entry a mesh block; each block's
+// material, mass and element kernel.
+std::vector<BlockPhysics> Model::blockPhysics(const Teuchos::ParameterList& model) {
+  const std::string& file = inputFile_;
   const Teuchos::ParameterList& mats = model.sublist("Materials");
   std::vector<std::string> matNames;
   for (auto it = mats.begin(); it != mats.end(); ++it) matNames.push_back(mats.name(it));
-
-  // Blocks: every mesh block needs an entry, every entry a mesh block.
   const Teuchos::ParameterList& blocks = model.sublist("Blocks");
   const auto meshBlocks = mesh_.blockNames();
-  for (auto it = blocks.begin(); it != blocks.end(); ++it) {
-    const std::string& name = blocks.name(it);
-    if (!mesh_.findBlock(name)) {
-      throwInput(file, "Model/Blocks/" + name, "", "no element block of that name in the mesh",
-                 didYouMean(name, meshBlocks) + "blocks: " +
-                     joinNames(meshBlocks));
-    }
-  }
+  for (auto it = blocks.begin(); it != blocks.end(); ++it)
+    if (!mesh_.findBlock(blocks.name(it)))
+      throwInput(file, "Model/Blocks/" + blocks.name(it), "", "no element block of that name in the mesh",
+                 didYouMean(blocks.name(it), meshBlocks) + "blocks: " + joinNames(meshBlocks));
   std::vector<BlockPhysics> physics(mesh_.blocks.size());
   blockMaterial_.resize(mesh_.blocks.size());
   for (size_t b = 0; b < mesh_.blocks.size(); ++b) {
@@ -101,11 +121,9 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
                  "add <ParameterList name=\"" + blk.name + "\"> with its Material");
     const Teuchos::ParameterList& bp = blocks.sublist(blk.name);
     const std::string matName = bp.get<std::string>("Material");
-    if (!mats.isSublist(matName)) {
+    if (!mats.isSublist(matName))
       throwInput(file, path + "/Material", matName, "no material of that name",
-                 didYouMean(matName, matNames) + "materials: " +
-                     joinNames(matNames));
-    }
+                 didYouMean(matName, matNames) + "materials: " + joinNames(matNames));
     const Teuchos::ParameterList& mp = mats.sublist(matName);
     Material m;
     m.youngsModulus = mp.get<double>("Young's Modulus");
@@ -115,47 +133,34 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
     physics[b].mass = bp.get<std::string>("Mass") == "lumped" ? MassKind::Lumped : MassKind::Consistent;
     physics[b].kernel = blockKernel(blk, kinematics_, m, bp, file);
   }
-  const auto checkStart = std::chrono::steady_clock::now();
-  checkElementGeometry(physics, input.sublist("Mesh").get<std::string>("File"));
-  logPhase(*comm_, "element geometry check", secondsSince(checkStart));
+  return physics;
+}
 
-  // Free components: carried by an element, active, not fixed by a Dirichlet condition.
+// The components that are unknowns: carried by an element, active, not fixed by a Dirichlet
+// condition (one bit per component and node).
+std::vector<std::uint8_t> Model::freeComponents(const Teuchos::ParameterList& model,
+                                                const std::vector<BlockPhysics>& physics) const {
   std::vector<std::uint8_t> mask = Assembler::carriedComponents(mesh_, physics);
-  std::uint8_t active = 0;
-  try {
-    for (int c : parseComponents(model.get<std::string>("Active Components")))
-      active |= std::uint8_t(1u << c);
-  } catch (const std::invalid_argument& e) {
-    throwInput(file, "Model/Active Components", model.get<std::string>("Active Components"),
-               e.what());
-  }
+  const auto bits = [&](const std::string& path, const std::string& components) {
+    std::uint8_t b = 0;
+    try {
+      for (int c : parseComponents(components)) b |= std::uint8_t(1u << c);
+    } catch (const std::invalid_argument& e) {
+      throwInput(inputFile_, path, components, e.what());
+    }
+    return b;
+  };
+  const std::uint8_t active = bits("Model/Active Components", model.get<std::string>("Active Components"));
   for (auto& m : mask) m &= active;
   const Teuchos::ParameterList& dir = model.sublist("Dirichlet");
   for (auto it = dir.begin(); it != dir.end(); ++it) {
     const std::string path = "Model/Dirichlet/" + dir.name(it);
     const Teuchos::ParameterList& d = dir.sublist(dir.name(it));
     const NodeSet& ns = nodeSet(d.get<std::string>("Node Set"), path + "/Node Set");
-    std::uint8_t fixed = 0;
-    try {
-      for (int c : parseComponents(d.get<std::string>("Components"))) fixed |= std::uint8_t(1u << c);
-    } catch (const std::invalid_argument& e) {
-      throwInput(file, path + "/Components", d.get<std::string>("Components"), e.what());
-    }
+    const std::uint8_t fixed = bits(path + "/Components", d.get<std::string>("Components"));
     for (int n : ns.nodes) mask[n] &= std::uint8_t(~fixed);
   }
-  readSprings(model.sublist("Springs"));
-  const auto partitionStart = std::chrono::steady_clock::now();
-  buildDofMap(std::move(mask), model.get<std::string>("Partition"));
-  logPhase(*comm_, "partition and DOF map (" + std::to_string(dofs_->numGlobal()) + " unknowns)",
-           secondsSince(partitionStart));
-  if (dofs_->numGlobal() == 0)
-    throwInput(file, "Model/Active Components", model.get<std::string>("Active Components"),
-               "the model has no unknowns", "check the active components and Dirichlet sets");
-  try {
-    assembler_ = std::make_unique<Assembler>(mesh_, *dofs_, physics, comm_);
-  } catch (const std::invalid_argument& e) {
-    throwInput(file, "Mesh/File", meshFile, e.what());
-  }
+  return mask;
 }
 
 // Parts meshed apart whose nodes meet are not connected: say so once, or join them.

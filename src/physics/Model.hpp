@@ -53,7 +53,11 @@ class Model {
   long long dof(int node, int comp) const { return dofs_->dof(node, comp); }
 
  private:
+  std::string readMesh(const Teuchos::ParameterList& meshList);
   void handleCoincidentNodes(const Teuchos::ParameterList& meshList);
+  std::vector<BlockPhysics> blockPhysics(const Teuchos::ParameterList& model);
+  std::vector<std::uint8_t> freeComponents(const Teuchos::ParameterList& model,
+                                           const std::vector<BlockPhysics>& physics) const;
   std::shared_ptr<const ElementKernel> blockKernel(const ElementBlock& blk, Kinematics kin,
                                                   const Material& m, const Teuchos::ParameterList& bp,
                                                   const std::string& file) const;

@@ -5,8 +5,8 @@
 // ratio xi at omega_max: 2/omega_max (sqrt(1 + xi^2) - xi). The stable step is the critical
 // step, or half of it when penalty springs switch on and off during the run (penalty contact,
 // penalty shock links: near the limit they chatter and create energy, measured on SDNL111 D's
-// scene at 0.85 of it). A step within 1e-6 of the stable step counts as above it (at the
-// limit itself the highest mode grows linearly). Above it, 'Stability Check':
+// scene at 0.85 of it). A step closer than 1e-6 (relative) to the stable step counts as above
+// it (at the limit itself the highest mode grows linearly). Above it, 'Stability Check':
 //   refuse  (default) the input is refused, naming the stable step;
 //   warn    the run goes on at the given step, with a warning (it may blow up: the energy
 //           balance and the finiteness checks then stop it);

@@ -14,6 +14,7 @@ WORKDIR/CASE/s/a/b/out) and asserts, besides what the case is about:
 The case names follow the table of the reliability work in docs/user-guide/errors.md.
 """
 import hashlib
+import json
 import os
 import re
 import shutil
@@ -378,8 +379,20 @@ def case_out_of_memory(choc, box):
     rc, out, err = run(choc_cmd(choc, "run", box.path("input.xml"), "-o", box.out), box.dir, preexec=preexec)
     expect_error(rc, err, 2, r"^choc: out of memory: .*(allocation of [0-9.]+ [KMG]?i?B|[0-9.]+ [KMG]iB \(an estimate of its factors\))")
     unchanged(before, box.snapshot())
-    complete = [f for f in os.listdir(box.out) if f.startswith("c1_modified") and ".incomplete" not in f]
+    complete = [f for f in os.listdir(box.out) if f.startswith("c1_modified") and ".incomplete" not in f
+                and not f.endswith(".summary.json")]
     check(not complete, "complete-named results of a failed run: %s" % complete)
+    stopped_summary(box, "c1_modified", "failed", 2)
+
+
+def stopped_summary(box, analysis, status, code):
+    """A stopped analysis still reports itself: its summary says how it ended."""
+    path = os.path.join(box.out, analysis + ".summary.json")
+    check(os.path.exists(path), "no %s written by the stopped analysis" % os.path.basename(path))
+    summary = json.load(open(path))
+    check(summary.get("status") == status and summary.get("exit_code") == code,
+          "%s: status %r, exit code %r; expected %r, %r" % (path, summary.get("status"), summary.get("exit_code"),
+                                                           status, code))
 
 
 def long_transient(box):
@@ -399,8 +412,10 @@ def interrupted_by_timeout(choc, box, seconds):
         check(re.search(r"run stopped before (analysis '[a-z]+'|the first analysis \(during the set-up\))", err),
               "neither a transient stopped with its checkpoint nor a stop before an analysis: %s" % err)
     complete = [f for f in os.listdir(box.out) if f.startswith("long.") and ".incomplete" not in f
-                and not f.endswith(".checkpoint")] if os.path.isdir(box.out) else []
+                and not f.endswith((".checkpoint", ".summary.json"))] if os.path.isdir(box.out) else []
     check(not complete, "complete-named results of an interrupted run: %s" % complete)
+    if m:
+        stopped_summary(box, "long", "interrupted", 143)
     return bool(m)
 
 
