@@ -14,6 +14,7 @@
 #include "physics/ModalProjection.hpp"
 #include "physics/StaticCorrection.hpp"
 #include "restart/StateVectors.hpp"
+#include "timeint/TimeGrid.hpp"
 
 namespace choc {
 
@@ -95,13 +96,18 @@ void ModalTransient::readTimeGrid() {
   s_.dt = params_.get<double>("Time Step");
   if (!(s_.endTime > s_.startTime))
     throwInput(inputFile_, path("End Time"), format("%.6g", s_.endTime), "must exceed the Start Time");
+  // The time grid of both transients (timeint/TimeGrid.hpp): steps of dt, the last one cut to
+  // the end time; a span within 1e-6 of whole steps is whole steps of dt.
   const double ratio = (s_.endTime - s_.startTime) / s_.dt;
   checkStepCount(ratio, 1, s_.output.limits, inputFile_, "Analyses/" + name_, s_.dt);
-  s_.steps = std::llround(ratio);
-  if (s_.steps < 1 || std::abs(ratio - s_.steps) > 1e-6 * std::max(1.0, ratio))
-    throwInput(inputFile_, path("Time Step"), format("%.6g", s_.dt),
-               "does not divide End Time - Start Time into whole steps",
-               "choose dt = (End - Start) / N");
+  const double whole = std::round(ratio);
+  if (whole >= 1 && std::abs(ratio - whole) <= 1e-6 * std::max(1.0, ratio)) {
+    s_.steps = static_cast<long long>(whole);
+    s_.lastStep = s_.dt;
+  } else {
+    s_.steps = static_cast<long long>(nominalSteps(s_.startTime, s_.endTime, s_.dt));
+    s_.lastStep = s_.endTime - s_.startTime - double(s_.steps - 1) * s_.dt;
+  }
 }
 
 void ModalTransient::setup(SetupContext& ctx) {
@@ -333,9 +339,10 @@ void ModalTransient::integrate(ModalIntegrator& integrator, ModalState& state, M
     // Impact statistics take every sub-step's state, not only the step ends.
     const auto onSubstep = [&](double t) { outputs.substep(view, t); };
     for (long long n = first; n <= s_.steps; ++n) {
-      integrator.advance(state, s_.dt, substeps, onSubstep);
-      state.t = s_.startTime + n * s_.dt;
-      view.at(n, s_.dt, n == s_.steps);
+      const bool last = n == s_.steps, cut = last && s_.lastStep != s_.dt;
+      integrator.advance(state, cut ? s_.lastStep : s_.dt, substeps, onSubstep);
+      state.t = cut ? s_.endTime : s_.startTime + n * s_.dt;
+      view.at(n, cut ? s_.lastStep : s_.dt, last);
       outputs.step(view);
     }
   });

@@ -31,6 +31,7 @@ class ModalTransient : public Analysis {
     double damping = 0, rigidFrequency = 0;
     std::vector<double> dampingList;  // empty: 'Modal Damping' for every mode
     double startTime = 0, endTime = 0, dt = 0;
+    double lastStep = 0;  // dt, or the last step cut to End Time
     long long steps = 0;
     ModalScheme scheme = ModalScheme::SymplecticEuler;
     int refinement = 1;
