@@ -9,8 +9,10 @@
 
 namespace choc {
 
-void declareContactParameters(Teuchos::ParameterList& p) {
-  ParameterList& ct = declareSublist(p, "Contact", "unilateral contact between side sets");
+namespace {
+
+// The enforcement method, its coefficients and its active-set tolerances.
+void declareMethodParameters(ParameterList& ct) {
   declareChoice(ct, "Method", "None", {"None", "Lagrange", "Penalty", "Continuous"},
                 "Lagrange: multipliers with an active set (CONTRAINTE); Penalty: E_N per slave "
                 "node (PENALISATION); Continuous: augmented Lagrangian with pressure unknowns "
@@ -28,6 +30,27 @@ void declareContactParameters(Teuchos::ParameterList& p) {
                 "k_t [N/m] per slave node of the pairs with friction: the stick spring (a sticking "
                 "node's elastic slip is F_t / k_t); 0: the largest diagonal entry of the "
                 "stiffness matrix", Range::nonNegative());
+}
+
+// The obstacle in place of a pair's master side set.
+void declareObstacleParameters(ParameterList& pr) {
+  ParameterList& ob = declareSublist(pr, "Obstacle",
+                                     "a rigid obstacle given by its geometry, in place of a master "
+                                     "side set (every slave node is paired with it)");
+  declareChoice(ob, "Shape", "none", {"none", "plane", "sphere", "cylinder"},
+                "none: no obstacle; plane (body on the side 'Normal' points to), sphere or "
+                "cylinder (body outside)");
+  declareString(ob, "Point", "0 0 0",
+                "'x y z' [m]: a point of the plane, the sphere's centre, a point of the "
+                "cylinder's axis (at t = 0)");
+  declareString(ob, "Normal", "0 0 1", "'x y z': the plane's normal, towards the body");
+  declareString(ob, "Axis", "0 0 1", "'x y z': the cylinder's axis");
+  declareDouble(ob, "Radius", 0.0, "sphere or cylinder radius [m]", Range::nonNegative());
+  declareString(ob, "Velocity", "0 0 0", "'x y z' [m/s]: prescribed translation of the obstacle");
+}
+
+// A contact pair: its surfaces (or node sets, or obstacle), friction and search.
+void declarePairParameters(ParameterList& ct) {
   ParameterList& pr = declareNamedSublists(
       ct, "Pairs",
       "contact pairs, by name (the name starts the pair's result columns: 1 to 32 letters, "
@@ -66,19 +89,10 @@ void declareContactParameters(Teuchos::ParameterList& p) {
                 "multipliers (Wohlmuth): each slave node's gap and force are its dual shape "
                 "function's averages over the master faces it overlaps, which passes the contact "
                 "patch test on non-matching meshes; linear slave faces (TRI3, QUAD4, LINE2)");
-  ParameterList& ob = declareSublist(pr, "Obstacle",
-                                     "a rigid obstacle given by its geometry, in place of a master "
-                                     "side set (every slave node is paired with it)");
-  declareChoice(ob, "Shape", "none", {"none", "plane", "sphere", "cylinder"},
-                "none: no obstacle; plane (body on the side 'Normal' points to), sphere or "
-                "cylinder (body outside)");
-  declareString(ob, "Point", "0 0 0",
-                "'x y z' [m]: a point of the plane, the sphere's centre, a point of the "
-                "cylinder's axis (at t = 0)");
-  declareString(ob, "Normal", "0 0 1", "'x y z': the plane's normal, towards the body");
-  declareString(ob, "Axis", "0 0 1", "'x y z': the cylinder's axis");
-  declareDouble(ob, "Radius", 0.0, "sphere or cylinder radius [m]", Range::nonNegative());
-  declareString(ob, "Velocity", "0 0 0", "'x y z' [m/s]: prescribed translation of the obstacle");
+  declareObstacleParameters(pr);
+}
+
+void declareContactMassParameter(ParameterList& p) {
   declareChoice(p, "Contact Mass", "auto", {"auto", "standard", "redistributed"},
                 "standard: the blocks' mass matrices as they are; redistributed: the nodes of the "
                 "contact pairs' master and slave side sets carry no mass, each element touching "
@@ -88,6 +102,15 @@ void declareContactParameters(Teuchos::ParameterList& p) {
                 "each step, their velocities reported as displacement differences; auto: "
                 "redistributed for Lagrange and Continuous (standard when an element has every "
                 "node on a contact surface), standard for Penalty");
+}
+
+}  // namespace
+
+void declareContactParameters(Teuchos::ParameterList& p) {
+  ParameterList& ct = declareSublist(p, "Contact", "unilateral contact between side sets");
+  declareMethodParameters(ct);
+  declarePairParameters(ct);
+  declareContactMassParameter(p);
 }
 
 namespace {

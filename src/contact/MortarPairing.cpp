@@ -53,24 +53,11 @@ struct NodeSums {
   Point3 nu{};                     // the contact normal: that sum normalised, turned to the slave
 };
 
-}  // namespace
-
-PairingResult pairMortar(const Mesh& mesh, const PairDefinition& def, int pairIndex) {
-  const std::vector<Face> slave = facesOf(mesh, def.slaveSideSet);  // dualBasis rejects quadratic faces
-  PairingResult res = mortarPairing(slave, SurfaceSearch(facesOf(mesh, def.masterSideSet), def.searchDistance), def, pairIndex);
-  if (res.projections.size() == (def.followMotion ? res.unpaired.size() : 0))
-    throw std::invalid_argument("no face of slave side set '" + def.slaveSideSet + "' overlaps a face of master side set '" +
-                                def.masterSideSet + "' within the search distance " +
-                                std::to_string(def.searchDistance) + " m");
-  return res;
-}
-
-PairingResult mortarPairing(const std::vector<Face>& slave, const SurfaceSearch& search,
-                            const PairDefinition& def, int pairIndex) {
-  const std::vector<Face>& master = search.faces();
+// Per slave node: int N_j over its faces and the contact normal from its faces' normals.
+std::map<int, NodeSums> slaveNodeNormals(const std::vector<Face>& slave, bool axisymmetric) {
   std::map<int, NodeSums> sums;
   for (const Face& f : slave) {
-    const std::vector<double> I = shapeIntegrals(f, def.axisymmetric);
+    const std::vector<double> I = shapeIntegrals(f, axisymmetric);
     for (size_t a = 0; a < f.nodes.size(); ++a) {
       NodeSums& s = sums[f.nodes[a]];
       s.full += I[a];
@@ -82,29 +69,40 @@ PairingResult mortarPairing(const std::vector<Face>& slave, const SurfaceSearch&
     const double l = norm(s.normal);
     s.nu = {-s.normal[0] / l, -s.normal[1] / l, -s.normal[2] / l};
   }
-  for (const Face& f : slave) {
-    const DenseMatrix A = dualBasis(f, def.axisymmetric);
-    const Box box = boxOf(f, def.searchDistance);
-    for (const int mf : search.candidates(box.lo, box.hi)) {  // master faces near the slave face
-      if (!overlap(box, boxOf(master[mf], 0.0))) continue;
-      const std::vector<MortarPoint> pts = mortarPoints(f, master[mf], def.axisymmetric);
-      if (pts.empty()) continue;
-      if (!(std::abs(dot(pts[0].xs - pts[0].xm, sums[f.nodes[0]].nu)) <= def.searchDistance)) continue;
-      for (const MortarPoint& p : pts) {
-        const std::vector<double> phi = dualShapes(A, p.Ns);
-        for (size_t a = 0; a < f.nodes.size(); ++a) {
-          NodeSums& s = sums[f.nodes[a]];
-          const double w = phi[a] * p.weight;
-          s.D += w;
-          s.G += w * dot(s.nu, p.xs - p.xm);
-          for (size_t b = 0; b < p.Nm.size(); ++b) s.M[master[mf].nodes[b]] += w * p.Nm[b];
-          if (s.firstFace < 0) s.firstFace = int(mf);
-        }
+  return sums;
+}
+
+// The integrals of slave face f's dual functions over its overlaps with the master faces
+// near it, added to its nodes' sums.
+void integrateOverlaps(const Face& f, const SurfaceSearch& search, const PairDefinition& def,
+                       std::map<int, NodeSums>& sums) {
+  const std::vector<Face>& master = search.faces();
+  const DenseMatrix A = dualBasis(f, def.axisymmetric);
+  const Box box = boxOf(f, def.searchDistance);
+  for (const int mf : search.candidates(box.lo, box.hi)) {  // master faces near the slave face
+    if (!overlap(box, boxOf(master[mf], 0.0))) continue;
+    const std::vector<MortarPoint> pts = mortarPoints(f, master[mf], def.axisymmetric);
+    if (pts.empty()) continue;
+    if (!(std::abs(dot(pts[0].xs - pts[0].xm, sums[f.nodes[0]].nu)) <= def.searchDistance)) continue;
+    for (const MortarPoint& p : pts) {
+      const std::vector<double> phi = dualShapes(A, p.Ns);
+      for (size_t a = 0; a < f.nodes.size(); ++a) {
+        NodeSums& s = sums[f.nodes[a]];
+        const double w = phi[a] * p.weight;
+        s.D += w;
+        s.G += w * dot(s.nu, p.xs - p.xm);
+        for (size_t b = 0; b < p.Nm.size(); ++b) s.M[master[mf].nodes[b]] += w * p.Nm[b];
+        if (s.firstFace < 0) s.firstFace = int(mf);
       }
     }
   }
+}
+
+// One projection per slave node, in ascending node number: its gap, area and master weights
+// (the averages of its dual function), or unpaired when it overhangs the master.
+PairingResult projectionsOf(const std::map<int, NodeSums>& sums, const PairDefinition& def, int pairIndex) {
   PairingResult res;
-  for (const auto& [node, s] : sums) {  // ascending node number
+  for (const auto& [node, s] : sums) {
     SlaveProjection sp;
     sp.pair = pairIndex;
     sp.slaveNode = node;
@@ -127,6 +125,25 @@ PairingResult mortarPairing(const std::vector<Face>& slave, const SurfaceSearch&
     res.projections.push_back(sp);
   }
   return res;
+}
+
+}  // namespace
+
+PairingResult pairMortar(const Mesh& mesh, const PairDefinition& def, int pairIndex) {
+  const std::vector<Face> slave = facesOf(mesh, def.slaveSideSet);  // dualBasis rejects quadratic faces
+  PairingResult res = mortarPairing(slave, SurfaceSearch(facesOf(mesh, def.masterSideSet), def.searchDistance), def, pairIndex);
+  if (res.projections.size() == (def.followMotion ? res.unpaired.size() : 0))
+    throw std::invalid_argument("no face of slave side set '" + def.slaveSideSet + "' overlaps a face of master side set '" +
+                                def.masterSideSet + "' within the search distance " +
+                                std::to_string(def.searchDistance) + " m");
+  return res;
+}
+
+PairingResult mortarPairing(const std::vector<Face>& slave, const SurfaceSearch& search,
+                            const PairDefinition& def, int pairIndex) {
+  std::map<int, NodeSums> sums = slaveNodeNormals(slave, def.axisymmetric);
+  for (const Face& f : slave) integrateOverlaps(f, search, def, sums);
+  return projectionsOf(sums, def, pairIndex);
 }
 
 }  // namespace choc

@@ -135,65 +135,93 @@ void ImpactObserver::sample(Track& k, double t, const ImpactSample& given) {
   const bool on = s.force > floor;
   k.largest = std::max(k.largest, s.force);
   const double power = s.tangentialForce * s.slipSpeed;
-  // The level whose crossing starts or ends an impact: the gap when the threshold is 0, where
-  // gaps within 1e-9 of the largest seen are round-off of a closed contact (0).
-  const bool onGap = threshold_ == 0.0;
+  // The level whose crossing starts or ends an impact (closingTime, openingTime): the gap when
+  // the threshold is 0, where gaps within 1e-9 of the largest seen are round-off of a closed
+  // contact (0).
   k.gapScale = std::max(k.gapScale, std::abs(s.gap));
   const double tol = 1e-9 * k.gapScale;
-  if (k.active) {
-    Impact& im = k.impacts.back();
-    if (on) {
-      im.impulse += 0.5 * (k.f0 + s.force) * (t - k.t0);
-      im.wear += 0.5 * (k.p0 + power) * (t - k.t0);
-    } else {
-      const double te = onGap && s.gap > tol && k.g0 <= tol ? crossing(k.t0, std::min(k.g0, 0.0), t, s.gap)
-                                                           : crossing(k.t0, k.f0 - threshold_, t, s.force - threshold_);
-      im.impulse += 0.5 * (k.f0 + threshold_) * (te - k.t0);
-      im.wear += k.p0 * (te - k.t0);
-      im.end = te;
-      im.open = false;
-      k.active = false;
-    }
-    // The previous state was the largest so far: refine the peak on the parabola.
-    if (k.f0 >= im.peakForce && s.force <= k.f0 && k.havePrevious) {
-      double tp, fp;
-      parabolaVertex(k.tm, k.fm, k.t0, k.f0, t, s.force, tp, fp);
-      if (fp >= im.peakForce) {
-        im.peakForce = fp;
-        im.peakTime = tp;
-      }
-    }
-    if (on && s.force > im.peakForce) {
-      im.peakForce = s.force;
-      im.peakTime = t;
-    }
-  } else if (on) {
-    double ts = t, f0 = threshold_;
-    if (k.havePrevious)
-      ts = onGap && k.g0 > tol && s.gap <= tol ? crossing(k.t0, k.g0, t, std::min(s.gap, 0.0))
-                                                : crossing(k.t0, k.f0 - threshold_, t, s.force - threshold_);
-    const bool merge = !k.impacts.empty() && ts - k.impacts.back().end < rest_;
-    if (!merge) {
-      Impact im;
-      im.start = ts;
-      // The gap rate before the impact; for a differenced rate from the first state, the
-      // secant over the interval where the impact starts.
-      im.velocity = !k.havePrevious ? s.gapRate
-                    : k.rateKnown ? k.rate0
-                                  : (s.gap - k.g0) / (t - k.t0);
-      k.impacts.push_back(im);
-    }
-    Impact& im = k.impacts.back();
-    im.open = true;
-    im.impulse += 0.5 * (f0 + s.force) * (t - ts);
-    im.wear += power * (t - ts);
-    if (s.force > im.peakForce) {
-      im.peakForce = s.force;
-      im.peakTime = t;
-    }
-    k.active = true;
-  }
+  if (k.active)
+    continueImpact(k, t, s, on, power, tol);
+  else if (on)
+    startImpact(k, t, s, power, tol);
   if (k.active) k.impacts.back().end = t;
+  remember(k, t, s, power, rateKnown);
+}
+
+// The instant the contact closed, between the previous state and the state at t.
+double ImpactObserver::closingTime(const Track& k, double t, const ImpactSample& s, double tol) const {
+  const bool onGap = threshold_ == 0.0;
+  return onGap && k.g0 > tol && s.gap <= tol ? crossing(k.t0, k.g0, t, std::min(s.gap, 0.0))
+                                             : crossing(k.t0, k.f0 - threshold_, t, s.force - threshold_);
+}
+
+// The instant the contact opened, between the previous state and the state at t.
+double ImpactObserver::openingTime(const Track& k, double t, const ImpactSample& s, double tol) const {
+  const bool onGap = threshold_ == 0.0;
+  return onGap && s.gap > tol && k.g0 <= tol ? crossing(k.t0, std::min(k.g0, 0.0), t, s.gap)
+                                             : crossing(k.t0, k.f0 - threshold_, t, s.force - threshold_);
+}
+
+// The impact under way: its impulse and wear work up to t (or to its end, when the force no
+// longer counts as contact), and its peak.
+void ImpactObserver::continueImpact(Track& k, double t, const ImpactSample& s, bool on, double power,
+                                    double tol) {
+  Impact& im = k.impacts.back();
+  if (on) {
+    im.impulse += 0.5 * (k.f0 + s.force) * (t - k.t0);
+    im.wear += 0.5 * (k.p0 + power) * (t - k.t0);
+  } else {
+    const double te = openingTime(k, t, s, tol);
+    im.impulse += 0.5 * (k.f0 + threshold_) * (te - k.t0);
+    im.wear += k.p0 * (te - k.t0);
+    im.end = te;
+    im.open = false;
+    k.active = false;
+  }
+  // The previous state was the largest so far: refine the peak on the parabola.
+  if (k.f0 >= im.peakForce && s.force <= k.f0 && k.havePrevious) {
+    double tp, fp;
+    parabolaVertex(k.tm, k.fm, k.t0, k.f0, t, s.force, tp, fp);
+    if (fp >= im.peakForce) {
+      im.peakForce = fp;
+      im.peakTime = tp;
+    }
+  }
+  if (on && s.force > im.peakForce) {
+    im.peakForce = s.force;
+    im.peakTime = t;
+  }
+}
+
+// A contact begins: a new impact, or the last one again when the rest since it is shorter
+// than 'Minimum Rest Time'; its impulse and wear work from where it began to t.
+void ImpactObserver::startImpact(Track& k, double t, const ImpactSample& s, double power, double tol) {
+  double ts = t, f0 = threshold_;
+  if (k.havePrevious) ts = closingTime(k, t, s, tol);
+  const bool merge = !k.impacts.empty() && ts - k.impacts.back().end < rest_;
+  if (!merge) {
+    Impact im;
+    im.start = ts;
+    // The gap rate before the impact; for a differenced rate from the first state, the
+    // secant over the interval where the impact starts.
+    im.velocity = !k.havePrevious ? s.gapRate
+                  : k.rateKnown ? k.rate0
+                                : (s.gap - k.g0) / (t - k.t0);
+    k.impacts.push_back(im);
+  }
+  Impact& im = k.impacts.back();
+  im.open = true;
+  im.impulse += 0.5 * (f0 + s.force) * (t - ts);
+  im.wear += power * (t - ts);
+  if (s.force > im.peakForce) {
+    im.peakForce = s.force;
+    im.peakTime = t;
+  }
+  k.active = true;
+}
+
+// The state at t becomes the previous one.
+void ImpactObserver::remember(Track& k, double t, const ImpactSample& s, double power, bool rateKnown) {
   k.tm = k.t0;
   k.fm = k.f0;
   k.t0 = t;

@@ -57,6 +57,13 @@ class ImpactObserver : public TransientObserver {
     double gapScale = 0;                               // largest |gap| so far
   };
   void sample(Track& k, double t, const ImpactSample& s);
+  // The phases of sample(): an impact under way or one that starts, the instants a contact
+  // closes and opens (interpolated from the previous state), the state kept for the next.
+  void continueImpact(Track& k, double t, const ImpactSample& s, bool on, double power, double tol);
+  void startImpact(Track& k, double t, const ImpactSample& s, double power, double tol);
+  double closingTime(const Track& k, double t, const ImpactSample& s, double tol) const;
+  double openingTime(const Track& k, double t, const ImpactSample& s, double tol) const;
+  static void remember(Track& k, double t, const ImpactSample& s, double power, bool rateKnown);
   std::map<std::string, double> statistics() const;
   void write(bool complete) const;
   std::string csvPath_;

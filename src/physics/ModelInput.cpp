@@ -4,9 +4,9 @@
 
 namespace choc {
 
-Teuchos::ParameterList topLevelParameters() {
-  Teuchos::ParameterList top;
-  declareString(top, "Title", "", "one line describing the input, printed in the log");
+namespace {
+
+void declareMeshParameters(ParameterList& top) {
   ParameterList& mesh = declareSublist(top, "Mesh", "the mesh");
   declareRequiredString(mesh, "File",
                         "mesh file, relative to the input file: Exodus II (see 'choc mesh') or "
@@ -16,30 +16,16 @@ Teuchos::ParameterList topLevelParameters() {
               "shortest element edge) but are not shared: parts meshed apart that should be one "
               "body. Without it such nodes are reported once on the log and left unconnected "
               "(right for contact surfaces that touch at the start)");
+}
 
-  ParameterList& model = declareSublist(top, "Model", "materials, element blocks, supports");
-  declareChoice(model, "Kinematics", "3D", {"3D", "plane strain", "axisymmetric"},
-                "3D: solids (TET4, TET10, HEX8, HEX20) and beams (BEAM2) in space; plane strain: "
-                "a unit-thickness section in the x-y plane (TRI3, TRI6, QUAD4, QUAD8; DX, DY); "
-                "axisymmetric: the half-plane x = r >= 0, y = the axis (TRI3...QUAD8; DX radial, "
-                "DY axial; masses, forces and energies of the whole 360-degree body)");
-  declareString(model, "Active Components", "all",
-                "nodal components that may be unknowns; every other component is fixed to zero "
-                "on every node (e.g. 'DX' for an axial 1D model, 'DZ' for the 3D bars): names DX "
-                "DY DZ DRX DRY DRZ, or 'all', 'translations', 'rotations'");
-  declareChoice(model, "Partition", "rcb", {"rcb", "numbering"},
-                "how the nodes are shared among MPI ranks: rcb: Zoltan2 recursive coordinate "
-                "bisection weighted by unknowns (compact regions whatever the numbering); "
-                "numbering: contiguous ranges of the mesh's node numbering");
+void declareMaterialParameters(ParameterList& model) {
   ParameterList& mat = declareNamedSublists(model, "Materials", "isotropic elastic materials, by name");
   declareRequiredDouble(mat, "Young's Modulus", "E [Pa]", Range::positive());
   declareDouble(mat, "Poisson's Ratio", 0.0, "nu [-]", {-1.0, 0.5, true, true});
   declareRequiredDouble(mat, "Density", "rho [kg/m^3]", Range::positive());
+}
 
-  ParameterList& blk = declareNamedSublists(model, "Blocks",
-                                            "one entry per element block of the mesh, by name");
-  declareRequiredString(blk, "Material", "name of an entry of Model/Materials");
-  declareChoice(blk, "Mass", "consistent", {"consistent", "lumped"}, "mass matrix of the block");
+void declareSectionParameters(ParameterList& blk) {
   ParameterList& sec = declareSublist(blk, "Section", "beam section (BEAM2 blocks only)");
   declareDouble(sec, "Square Side", 0.0,
                 "side of a square section; when > 0 it sets Area, Iy, Iz and the torsion "
@@ -55,19 +41,60 @@ Teuchos::ParameterList topLevelParameters() {
   declareString(sec, "Orientation", "0 0 0",
                 "local y axis direction 'x y z'; '0 0 0' chooses global y (global z for beams "
                 "along y)");
+}
 
+void declareBlockParameters(ParameterList& model) {
+  ParameterList& blk = declareNamedSublists(model, "Blocks",
+                                            "one entry per element block of the mesh, by name");
+  declareRequiredString(blk, "Material", "name of an entry of Model/Materials");
+  declareChoice(blk, "Mass", "consistent", {"consistent", "lumped"}, "mass matrix of the block");
+  declareSectionParameters(blk);
+}
+
+void declareDirichletParameters(ParameterList& model) {
   ParameterList& dir = declareNamedSublists(model, "Dirichlet",
                                             "homogeneous supports: components fixed to zero");
   declareRequiredString(dir, "Node Set", "node set of the mesh");
   declareRequiredString(dir, "Components", "fixed components, e.g. 'DX' or 'DX DY DZ' or 'all'");
+}
 
+void declareSpringParameters(ParameterList& model) {
   ParameterList& spr = declareNamedSublists(model, "Springs",
                                             "linear springs from each node of a node set to a fixed "
                                             "point (grounded), by name; in the stiffness of every analysis");
   declareRequiredString(spr, "Node Set", "node set of the mesh: one spring per node");
   declareRequiredString(spr, "Direction", "the springs' axis 'x y z' (normalised; e.g. '1 0 0')");
   declareRequiredDouble(spr, "Stiffness", "stiffness of each node's spring [N/m]", Range::positive());
+}
 
+void declareModelParameters(ParameterList& top) {
+  ParameterList& model = declareSublist(top, "Model", "materials, element blocks, supports");
+  declareChoice(model, "Kinematics", "3D", {"3D", "plane strain", "axisymmetric"},
+                "3D: solids (TET4, TET10, HEX8, HEX20) and beams (BEAM2) in space; plane strain: "
+                "a unit-thickness section in the x-y plane (TRI3, TRI6, QUAD4, QUAD8; DX, DY); "
+                "axisymmetric: the half-plane x = r >= 0, y = the axis (TRI3...QUAD8; DX radial, "
+                "DY axial; masses, forces and energies of the whole 360-degree body)");
+  declareString(model, "Active Components", "all",
+                "nodal components that may be unknowns; every other component is fixed to zero "
+                "on every node (e.g. 'DX' for an axial 1D model, 'DZ' for the 3D bars): names DX "
+                "DY DZ DRX DRY DRZ, or 'all', 'translations', 'rotations'");
+  declareChoice(model, "Partition", "rcb", {"rcb", "numbering"},
+                "how the nodes are shared among MPI ranks: rcb: Zoltan2 recursive coordinate "
+                "bisection weighted by unknowns (compact regions whatever the numbering); "
+                "numbering: contiguous ranges of the mesh's node numbering");
+  declareMaterialParameters(model);
+  declareBlockParameters(model);
+  declareDirichletParameters(model);
+  declareSpringParameters(model);
+}
+
+}  // namespace
+
+Teuchos::ParameterList topLevelParameters() {
+  Teuchos::ParameterList top;
+  declareString(top, "Title", "", "one line describing the input, printed in the log");
+  declareMeshParameters(top);
+  declareModelParameters(top);
   declareOpenSublist(top, "Analyses",
                      "the analyses to run, in order; each sublist has a 'Type' (see below)");
   return top;

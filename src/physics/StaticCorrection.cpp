@@ -48,23 +48,19 @@ double massNorm(const CrsMatrix& M, const Vector& x) {
   return std::sqrt(std::max(0.0, x.dot(Mx)));
 }
 
-}  // namespace
-
-StaticCorrection enrichWithStaticModes(const ModalBasis& basis, Model& model,
-                                       const std::vector<StaticLoad>& loads, double rigidFrequencyHz) {
-  const CrsMatrix& K = *model.stiffness();
-  const CrsMatrix& M = *model.mass();
-  const MultiVector& Phi = *basis.vectors;
-  const size_t m = Phi.getNumVectors();
-  // Unit forces.
-  MultiVector F(model.map(), loads.size());
+// Unit forces: column j at the node of load j, along its direction.
+void fillUnitForces(Model& model, const std::vector<StaticLoad>& loads, MultiVector& F) {
   for (size_t j = 0; j < loads.size(); ++j)
     for (int c : {DX, DY, DZ}) {
       const long long d = model.dof(loads[j].node, c);
       if (d >= 0 && model.map()->isNodeGlobalElement(GO(d)))
         F.replaceGlobalValue(GO(d), j, loads[j].direction[c]);
     }
-  // (K + s M) psi = f.
+}
+
+// s of K + s M: 0, or 1 % of the lowest flexible eigenvalue (of the rigid-body limit when
+// there is none) when the basis has rigid-body modes.
+double staticShift(const ModalBasis& basis, double rigidFrequencyHz) {
   const double rigid = std::pow(2 * M_PI * rigidFrequencyHz, 2);
   double lowestFlexible = 0.0;
   bool hasRigid = false;
@@ -72,18 +68,26 @@ StaticCorrection enrichWithStaticModes(const ModalBasis& basis, Model& model,
     if (l < rigid) hasRigid = true;
     else if (lowestFlexible == 0.0) lowestFlexible = l;
   }
-  const double shift = hasRigid ? 1e-2 * (lowestFlexible > 0 ? lowestFlexible : rigid) : 0.0;
-  RCP<const CrsMatrix> A = shift > 0 ? RCP<const CrsMatrix>(addMatrices(1.0, K, shift, M)) : model.stiffness();
+  return hasRigid ? 1e-2 * (lowestFlexible > 0 ? lowestFlexible : rigid) : 0.0;
+}
+
+// (K + s M) Psi = F.
+void solveStaticResponses(RCP<const CrsMatrix> K, const CrsMatrix& M, double shift, const MultiVector& F,
+                          MultiVector& Psi) {
+  RCP<const CrsMatrix> A = shift > 0 ? RCP<const CrsMatrix>(addMatrices(1.0, *K, shift, M)) : K;
   Teuchos::ParameterList lp = linearSolverParameters();
   auto solver = makeLinearSolver(lp);
   solver->setMatrix(A);
-  MultiVector Psi(model.map(), loads.size());
   const LinearSolveStatus st = solver->solve(F, Psi);
   if (!st.converged) throw NumericalError("static correction: the static solve failed: " + st.message);
-  // M-orthogonal to the modes (twice, for round-off) and to each other; drop what is left of
-  // a response already in the span.
+}
+
+// The responses M-orthogonal to the modes (twice, for round-off) and to each other, M-normalised;
+// what is left of a response already in the span is dropped.
+std::vector<RCP<Vector>> orthogonalResponses(const CrsMatrix& M, const MultiVector& Phi, const MultiVector& Psi) {
+  const size_t m = Phi.getNumVectors();
   std::vector<RCP<Vector>> kept;
-  for (size_t j = 0; j < loads.size(); ++j) {
+  for (size_t j = 0; j < Psi.getNumVectors(); ++j) {
     RCP<Vector> x = rcp(new Vector(*Psi.getVector(j), Teuchos::Copy));
     const double before = massNorm(M, *x);
     if (!(before > 0)) continue;
@@ -98,18 +102,19 @@ StaticCorrection enrichWithStaticModes(const ModalBasis& basis, Model& model,
     x->scale(1.0 / after);
     kept.push_back(x);
   }
-  StaticCorrection out;
-  out.added = static_cast<int>(kept.size());
-  out.dropped = static_cast<int>(loads.size() - kept.size());
-  const size_t n = m + kept.size();
-  MultiVector Q(model.map(), n);
-  for (size_t k = 0; k < m; ++k) Q.getVectorNonConst(k)->assign(*Phi.getVector(k));
-  for (size_t k = 0; k < kept.size(); ++k) Q.getVectorNonConst(m + k)->assign(*kept[k]);
-  // Rayleigh-Ritz: Kr y = lambda Mr y.
-  MultiVector KQ(model.map(), n), MQ(model.map(), n);
+  return kept;
+}
+
+// Rayleigh-Ritz on the span of Q: Kr y = lambda Mr y (LAPACK dsygv). Returns the eigenvalues,
+// ascending, and leaves the eigenvectors in Kr (n x n, column-major).
+std::vector<double> rayleighRitz(const CrsMatrix& K, const CrsMatrix& M, const MultiVector& Q,
+                                 std::vector<double>& Kr) {
+  const size_t n = Q.getNumVectors();
+  MultiVector KQ(Q.getMap(), n), MQ(Q.getMap(), n);
   K.apply(Q, KQ);
   M.apply(Q, MQ);
-  std::vector<double> Kr = transposeProduct(Q, KQ), Mr = transposeProduct(Q, MQ);
+  Kr = transposeProduct(Q, KQ);
+  std::vector<double> Mr = transposeProduct(Q, MQ);
   for (size_t i = 0; i < n; ++i)  // exact symmetry
     for (size_t j = 0; j < i; ++j) {
       Kr[j * n + i] = Kr[i * n + j] = 0.5 * (Kr[j * n + i] + Kr[i * n + j]);
@@ -122,6 +127,31 @@ StaticCorrection enrichWithStaticModes(const ModalBasis& basis, Model& model,
   if (info != 0)
     throw NumericalError("static correction: the Rayleigh-Ritz eigenproblem failed (LAPACK dsygv info " +
                          std::to_string(info) + ")");
+  return w;
+}
+
+}  // namespace
+
+StaticCorrection enrichWithStaticModes(const ModalBasis& basis, Model& model,
+                                       const std::vector<StaticLoad>& loads, double rigidFrequencyHz) {
+  const CrsMatrix& K = *model.stiffness();
+  const CrsMatrix& M = *model.mass();
+  const MultiVector& Phi = *basis.vectors;
+  const size_t m = Phi.getNumVectors();
+  MultiVector F(model.map(), loads.size());
+  fillUnitForces(model, loads, F);
+  MultiVector Psi(model.map(), loads.size());
+  solveStaticResponses(model.stiffness(), M, staticShift(basis, rigidFrequencyHz), F, Psi);
+  const std::vector<RCP<Vector>> kept = orthogonalResponses(M, Phi, Psi);
+  StaticCorrection out;
+  out.added = static_cast<int>(kept.size());
+  out.dropped = static_cast<int>(loads.size() - kept.size());
+  const size_t n = m + kept.size();
+  MultiVector Q(model.map(), n);
+  for (size_t k = 0; k < m; ++k) Q.getVectorNonConst(k)->assign(*Phi.getVector(k));
+  for (size_t k = 0; k < kept.size(); ++k) Q.getVectorNonConst(m + k)->assign(*kept[k]);
+  std::vector<double> Kr;
+  std::vector<double> w = rayleighRitz(K, M, Q, Kr);
   auto enriched = std::make_shared<ModalBasis>();
   enriched->name = basis.name + "+static";
   auto vectors = rcp(new MultiVector(model.map(), n));

@@ -217,47 +217,7 @@ CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, c
   CorrectionStatus st;
   auto rowMap = K_->getRowMap();
   const size_t nLocal = rowMap->getNodeNumElements();
-  RCP<CrsMatrix> A0;
-  {
-    TimerScope ts(timer_, "Transient: assembly");
-    Vector zRow(rowMap);
-    {
-      auto z = zRow.getDataNonConst();
-      for (size_t i = 0; i < nLocal; ++i) z[i] = massless_[i] ? 1.0 : 0.0;
-    }
-    Vector zCol(K_->getColMap());
-    zCol.doImport(zRow, Tpetra::Import<LO, GO>(rowMap, K_->getColMap()), Tpetra::INSERT);
-    auto zc = zCol.getData();
-    auto colMap = K_->getColMap();
-    std::vector<std::vector<std::pair<GO, double>>> rows(nLocal);
-    Teuchos::Array<GO> ci;
-    Teuchos::Array<double> cv;
-    for (size_t i = 0; i < nLocal; ++i) {
-      const GO g = rowMap->getGlobalElement(LO(i));
-      const CrsMatrix& X = massless_[i] ? *K_ : *M_;
-      const size_t n = X.getNumEntriesInGlobalRow(g);
-      ci.resize(n);
-      cv.resize(n);
-      size_t got = 0;
-      X.getGlobalRowCopy(g, ci(), cv(), got);
-      for (size_t k = 0; k < got; ++k)
-        if (!massless_[i] || zc[colMap->getLocalElement(ci[k])] != 0.0) rows[i].emplace_back(ci[k], cv[k]);
-    }
-    std::vector<size_t> counts(nLocal);
-    for (size_t i = 0; i < nLocal; ++i) counts[i] = rows[i].size();
-    A0 = rcp(new CrsMatrix(rowMap, Teuchos::ArrayView<const size_t>(counts)));
-    for (size_t i = 0; i < nLocal; ++i) {
-      std::vector<GO> c;
-      std::vector<double> v;
-      for (const auto& [cc, vv] : rows[i]) {
-        c.push_back(cc);
-        v.push_back(vv);
-      }
-      A0->insertGlobalValues(rowMap->getGlobalElement(LO(i)), Teuchos::ArrayView<const GO>(c),
-                             Teuchos::ArrayView<const double>(v));
-    }
-    A0->fillComplete(rowMap, rowMap);
-  }
+  RCP<CrsMatrix> A0 = initialAccelerationMatrix();
   TimerScope ts(timer_, "Transient: linear solve");
   haveKey_ = false;  // the next correction refactors the effective matrix
   solver_->setMatrix(A0);
@@ -269,19 +229,7 @@ CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, c
     for (size_t i = 0; i < nLocal; ++i) bd[i] = massless_[i] ? 0.0 : -rd[i];
   }
   for (int pass = 0; pass < 2; ++pass) {
-    if (pass == 1) {  // b_z = -(K [a_m; 0])_z
-      {
-        auto xd = x.getDataNonConst(0);
-        for (size_t i = 0; i < nLocal; ++i)
-          if (massless_[i]) xd[i] = 0.0;
-      }
-      Vector y(rowMap);
-      K_->apply(*x.getVector(0), y);
-      auto yd = y.getData();
-      auto bd = b.getDataNonConst(0);
-      for (size_t i = 0; i < nLocal; ++i)
-        if (massless_[i]) bd[i] = -yd[i];
-    }
+    if (pass == 1) masslessRightHandSide(x, b);
     x.putScalar(0.0);
     const LinearSolveStatus ls = solver_->solve(b, x);
     st.ok = ls.converged;
@@ -292,6 +240,78 @@ CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, c
   (void)u;
   a.assign(*x.getVector(0));
   return st;
+}
+
+// A0 = [M_mm 0; 0 K_zz]: the rows of M on the DOFs with mass, the rows of K restricted to the
+// massless columns on the others.
+RCP<CrsMatrix> StructuralOperator::initialAccelerationMatrix() const {
+  TimerScope ts(timer_, "Transient: assembly");
+  auto rowMap = K_->getRowMap();
+  const size_t nLocal = rowMap->getNodeNumElements();
+  const std::vector<std::vector<std::pair<GO, double>>> rows = initialAccelerationRows();
+  std::vector<size_t> counts(nLocal);
+  for (size_t i = 0; i < nLocal; ++i) counts[i] = rows[i].size();
+  RCP<CrsMatrix> A0 = rcp(new CrsMatrix(rowMap, Teuchos::ArrayView<const size_t>(counts)));
+  for (size_t i = 0; i < nLocal; ++i) {
+    std::vector<GO> c;
+    std::vector<double> v;
+    for (const auto& [cc, vv] : rows[i]) {
+      c.push_back(cc);
+      v.push_back(vv);
+    }
+    A0->insertGlobalValues(rowMap->getGlobalElement(LO(i)), Teuchos::ArrayView<const GO>(c),
+                           Teuchos::ArrayView<const double>(v));
+  }
+  A0->fillComplete(rowMap, rowMap);
+  return A0;
+}
+
+// A0's entries by local row (global column, value).
+std::vector<std::vector<std::pair<GO, double>>> StructuralOperator::initialAccelerationRows() const {
+  auto rowMap = K_->getRowMap();
+  const size_t nLocal = rowMap->getNodeNumElements();
+  Vector zRow(rowMap);
+  {
+    auto z = zRow.getDataNonConst();
+    for (size_t i = 0; i < nLocal; ++i) z[i] = massless_[i] ? 1.0 : 0.0;
+  }
+  Vector zCol(K_->getColMap());
+  zCol.doImport(zRow, Tpetra::Import<LO, GO>(rowMap, K_->getColMap()), Tpetra::INSERT);
+  auto zc = zCol.getData();
+  auto colMap = K_->getColMap();
+  std::vector<std::vector<std::pair<GO, double>>> rows(nLocal);
+  Teuchos::Array<GO> ci;
+  Teuchos::Array<double> cv;
+  for (size_t i = 0; i < nLocal; ++i) {
+    const GO g = rowMap->getGlobalElement(LO(i));
+    const CrsMatrix& X = massless_[i] ? *K_ : *M_;
+    const size_t n = X.getNumEntriesInGlobalRow(g);
+    ci.resize(n);
+    cv.resize(n);
+    size_t got = 0;
+    X.getGlobalRowCopy(g, ci(), cv(), got);
+    for (size_t k = 0; k < got; ++k)
+      if (!massless_[i] || zc[colMap->getLocalElement(ci[k])] != 0.0) rows[i].emplace_back(ci[k], cv[k]);
+  }
+  return rows;
+}
+
+// The second solve's right-hand side on the massless rows: b_z = -(K [a_m; 0])_z, from the
+// first solve's x = (a_m, a_z) (whose a_z it zeroes).
+void StructuralOperator::masslessRightHandSide(MultiVector& x, MultiVector& b) const {
+  auto rowMap = K_->getRowMap();
+  const size_t nLocal = rowMap->getNodeNumElements();
+  {
+    auto xd = x.getDataNonConst(0);
+    for (size_t i = 0; i < nLocal; ++i)
+      if (massless_[i]) xd[i] = 0.0;
+  }
+  Vector y(rowMap);
+  K_->apply(*x.getVector(0), y);
+  auto yd = y.getData();
+  auto bd = b.getDataNonConst(0);
+  for (size_t i = 0; i < nLocal; ++i)
+    if (massless_[i]) bd[i] = -yd[i];
 }
 
 void StructuralOperator::beginStep(const Vector& u, double t, double dt) {

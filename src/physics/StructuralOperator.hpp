@@ -9,6 +9,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Teuchos_StackedTimer.hpp>
@@ -131,6 +132,11 @@ class StructuralOperator : public SecondOrderOperator {
   bool restoreKept_ = false;
   int recordedFactorizations_ = -1;  // the solver's factorisations when kept_.factored was taken
   void restoreKeptFactorization();
+  // solveInitialAcceleration with massless DOFs: its matrix A0 (assembled from its rows) and
+  // its second right-hand side.
+  RCP<CrsMatrix> initialAccelerationMatrix() const;
+  std::vector<std::vector<std::pair<GO, double>>> initialAccelerationRows() const;
+  void masslessRightHandSide(MultiVector& x, MultiVector& b) const;
 };
 
 }  // namespace choc

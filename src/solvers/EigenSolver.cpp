@@ -56,6 +56,86 @@ void fillStart(MultiVector& X) {
   }
 }
 
+using Eigenproblem = Anasazi::BasicEigenproblem<double, MultiVector, Operator>;
+using KrylovSchur = Anasazi::BlockKrylovSchurSolMgr<double, MultiVector, Operator>;
+
+// Block Krylov-Schur needs Num Blocks > numModes and Num Blocks <= n - 1 (krylovSchurParameters).
+void requirePossibleModeCount(int numModes, long long n) {
+  if (numModes < 1 || numModes > n - 2)
+    throw InputError("Modal analysis: 'Number of Modes' = " + std::to_string(numModes) +
+                     " must be between 1 and " + std::to_string(n - 2) + " (the model has " +
+                     std::to_string(n) + " unknowns)");
+}
+
+// The Hermitian problem of the shift-invert operator with M's inner product, from the
+// deterministic start vector.
+RCP<Eigenproblem> makeEigenproblem(RCP<const Operator> op, RCP<const CrsMatrix> M, RCP<const Map> domain,
+                                   int numModes) {
+  auto X0 = rcp(new MultiVector(domain, 1));
+  fillStart(*X0);
+  auto problem = rcp(new Eigenproblem(op, M, X0));
+  problem->setHermitian(true);
+  problem->setNEV(numModes);
+  if (!problem->setProblem()) throw NumericalError("Anasazi: eigenproblem set-up failed");
+  return problem;
+}
+
+// The solver's parameters for n unknowns.
+Teuchos::ParameterList krylovSchurParameters(const EigenRequest& req, long long n) {
+  Teuchos::ParameterList pl;
+  pl.set("Which", std::string("LM"));
+  pl.set("Block Size", 1);
+  // The Krylov basis holds Num Blocks + 1 vectors: at most n - 1 blocks for n unknowns (Anasazi
+  // throws "Orthogonalization constraints not feasible" when the basis reaches n + 1 vectors).
+  const int numBlocks = static_cast<int>(std::min<long long>(n - 1, std::max(2 * req.numModes, req.numModes + 20)));
+  pl.set("Num Blocks", numBlocks);
+  pl.set("Maximum Restarts", req.maxRestarts);
+  pl.set("Convergence Tolerance", req.tolerance);
+  pl.set("Verbosity", static_cast<int>(Anasazi::Errors));
+  return pl;
+}
+
+// Anasazi's own exceptions become a NumericalError (or the out-of-memory error).
+Anasazi::ReturnType runKrylovSchur(KrylovSchur& mgr) {
+  try {
+    return mgr.solve();
+  } catch (const NumericalError&) {
+    throw;
+  } catch (const std::exception& e) {
+    rethrowIfOutOfMemory(describeFailure(e), "Anasazi Block Krylov-Schur");
+    throw NumericalError(std::string("Anasazi Block Krylov-Schur failed: ") +
+                         std::string(e.what()).substr(0, 200));
+  }
+}
+
+void requireConverged(Anasazi::ReturnType ret, int converged, int iterations, const EigenRequest& req) {
+  if (ret != Anasazi::Converged || converged < req.numModes)
+    throw NumericalError("Anasazi Block Krylov-Schur converged " + std::to_string(converged) +
+                         " of " + std::to_string(req.numModes) + " modes in " +
+                         std::to_string(iterations) + " iterations with 'Maximum Restarts' = " +
+                         std::to_string(req.maxRestarts) + "; raise 'Maximum Restarts' or loosen 'Tolerance'");
+}
+
+// The requested modes of the solution nearest the shift, by increasing eigenvalue.
+EigenResult lowestModes(const Anasazi::Eigensolution<double, MultiVector>& sol, const EigenRequest& req,
+                        RCP<const Map> domain) {
+  // theta = 1/(lambda - sigma)  =>  lambda = sigma + 1/theta
+  std::vector<double> lambda(sol.numVecs);
+  for (int i = 0; i < sol.numVecs; ++i) lambda[i] = req.shift + 1.0 / sol.Evals[i].realpart;
+  std::vector<int> order(sol.numVecs);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return lambda[a] < lambda[b]; });
+  order.resize(req.numModes);
+
+  EigenResult res;
+  res.vectors = rcp(new MultiVector(domain, req.numModes));
+  for (int k = 0; k < req.numModes; ++k) {
+    res.vectors->getVectorNonConst(k)->assign(*sol.Evecs->getVector(order[k]));
+    res.eigenvalues.push_back(lambda[order[k]]);
+  }
+  return res;
+}
+
 }  // namespace
 
 void finishEigenResult(const CrsMatrix& K, const CrsMatrix& M, double shift, EigenResult& res) {
@@ -87,65 +167,20 @@ void finishEigenResult(const CrsMatrix& K, const CrsMatrix& M, double shift, Eig
 EigenResult solveEigenproblem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
                               const EigenRequest& req) {
   const long long n = static_cast<long long>(K->getGlobalNumRows());
-  // Block Krylov-Schur needs Num Blocks > numModes and Num Blocks <= n - 1 (below).
-  if (req.numModes < 1 || req.numModes > n - 2)
-    throw InputError("Modal analysis: 'Number of Modes' = " + std::to_string(req.numModes) +
-                     " must be between 1 and " + std::to_string(n - 2) + " (the model has " +
-                     std::to_string(n) + " unknowns)");
+  requirePossibleModeCount(req.numModes, n);
   RCP<CrsMatrix> A = addMatrices(1.0, *K, -req.shift, *M);
   auto solver = makeDirectSolver(req.directPackage, 1e-8);
   solver->setMatrix(A);
   auto op = rcp(new ShiftInvertOperator(M, std::move(solver)));
 
-  auto X0 = rcp(new MultiVector(K->getDomainMap(), 1));
-  fillStart(*X0);
-  auto problem = rcp(new Anasazi::BasicEigenproblem<double, MultiVector, Operator>(op, M, X0));
-  problem->setHermitian(true);
-  problem->setNEV(req.numModes);
-  if (!problem->setProblem()) throw NumericalError("Anasazi: eigenproblem set-up failed");
-
-  Teuchos::ParameterList pl;
-  pl.set("Which", std::string("LM"));
-  pl.set("Block Size", 1);
-  // The Krylov basis holds Num Blocks + 1 vectors: at most n - 1 blocks for n unknowns (Anasazi
-  // throws "Orthogonalization constraints not feasible" when the basis reaches n + 1 vectors).
-  const int numBlocks = static_cast<int>(std::min<long long>(n - 1, std::max(2 * req.numModes, req.numModes + 20)));
-  pl.set("Num Blocks", numBlocks);
-  pl.set("Maximum Restarts", req.maxRestarts);
-  pl.set("Convergence Tolerance", req.tolerance);
-  pl.set("Verbosity", static_cast<int>(Anasazi::Errors));
-  Anasazi::BlockKrylovSchurSolMgr<double, MultiVector, Operator> mgr(problem, pl);
-  Anasazi::ReturnType ret;
-  try {
-    ret = mgr.solve();
-  } catch (const NumericalError&) {
-    throw;
-  } catch (const std::exception& e) {
-    rethrowIfOutOfMemory(describeFailure(e), "Anasazi Block Krylov-Schur");
-    throw NumericalError(std::string("Anasazi Block Krylov-Schur failed: ") +
-                         std::string(e.what()).substr(0, 200));
-  }
+  RCP<Eigenproblem> problem = makeEigenproblem(op, M, K->getDomainMap(), req.numModes);
+  Teuchos::ParameterList pl = krylovSchurParameters(req, n);
+  KrylovSchur mgr(problem, pl);
+  const Anasazi::ReturnType ret = runKrylovSchur(mgr);
   const auto& sol = problem->getSolution();
-  if (ret != Anasazi::Converged || sol.numVecs < req.numModes)
-    throw NumericalError("Anasazi Block Krylov-Schur converged " + std::to_string(sol.numVecs) +
-                         " of " + std::to_string(req.numModes) + " modes in " +
-                         std::to_string(mgr.getNumIters()) + " iterations with 'Maximum Restarts' = " +
-                         std::to_string(req.maxRestarts) + "; raise 'Maximum Restarts' or loosen 'Tolerance'");
+  requireConverged(ret, sol.numVecs, mgr.getNumIters(), req);
 
-  // theta = 1/(lambda - sigma)  =>  lambda = sigma + 1/theta
-  std::vector<double> lambda(sol.numVecs);
-  for (int i = 0; i < sol.numVecs; ++i) lambda[i] = req.shift + 1.0 / sol.Evals[i].realpart;
-  std::vector<int> order(sol.numVecs);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return lambda[a] < lambda[b]; });
-  order.resize(req.numModes);
-
-  EigenResult res;
-  res.vectors = rcp(new MultiVector(K->getDomainMap(), req.numModes));
-  for (int k = 0; k < req.numModes; ++k) {
-    res.vectors->getVectorNonConst(k)->assign(*sol.Evecs->getVector(order[k]));
-    res.eigenvalues.push_back(lambda[order[k]]);
-  }
+  EigenResult res = lowestModes(sol, req, K->getDomainMap());
   finishEigenResult(*K, *M, req.shift, res);
   res.restarts = mgr.getNumIters();
   res.operatorApplies = op->applies();

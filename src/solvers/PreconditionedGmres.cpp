@@ -8,6 +8,70 @@
 
 namespace choc {
 
+namespace {
+
+using Preconditioner = std::function<std::string(const Vector&, Vector&)>;
+
+// The Krylov space: its basis V, the Hessenberg matrix H ((m+1) x m, stored by columns, made
+// upper triangular by the Givens rotations cs/sn) and the rotated residual g.
+struct KrylovSpace {
+  std::vector<RCP<Vector>> V;
+  std::vector<std::vector<double>> H;
+  std::vector<double> cs, sn, g;
+};
+
+// Column m of the Hessenberg matrix: w orthogonalised against V[0..m] (modified Gram-Schmidt).
+std::vector<double> orthogonalize(Vector& w, const std::vector<RCP<Vector>>& V, int m) {
+  std::vector<double> h(m + 2, 0.0);
+  for (int i = 0; i <= m; ++i) {
+    h[i] = w.dot(*V[i]);
+    w.update(-h[i], *V[i], 1.0);
+  }
+  h[m + 1] = w.norm2();
+  return h;
+}
+
+// Rotates column h by the earlier rotations and a new one that zeroes h[m + 1], and appends
+// it to H; false on breakdown (the solution lies in the current space). next: ||w||, the
+// scale of the next basis vector.
+bool rotateColumn(std::vector<double> h, KrylovSpace& k, int m, double& next) {
+  for (int i = 0; i < m; ++i) {  // earlier rotations
+    const double t = k.cs[i] * h[i] + k.sn[i] * h[i + 1];
+    h[i + 1] = -k.sn[i] * h[i] + k.cs[i] * h[i + 1];
+    h[i] = t;
+  }
+  const double r = std::hypot(h[m], h[m + 1]);
+  if (!(r > 0.0)) return false;
+  k.cs.push_back(h[m] / r);
+  k.sn.push_back(h[m + 1] / r);
+  k.g.push_back(-k.sn[m] * k.g[m]);
+  k.g[m] = k.cs[m] * k.g[m];
+  next = h[m + 1];
+  h[m] = r;
+  h[m + 1] = 0.0;
+  k.H.push_back(std::move(h));
+  return true;
+}
+
+// x += P^-1 (V y) with y = H^-1 g (upper triangular) over the first m columns; returns the
+// preconditioner's failure (w and z: work vectors).
+std::string addCorrection(const KrylovSpace& k, int m, const Preconditioner& precondition, Vector& w,
+                          Vector& z, Vector& x) {
+  std::vector<double> y(m, 0.0);
+  for (int i = m - 1; i >= 0; --i) {
+    double s = k.g[i];
+    for (int j = i + 1; j < m; ++j) s -= k.H[j][i] * y[j];
+    y[i] = s / k.H[i][i];
+  }
+  w.putScalar(0.0);
+  for (int i = 0; i < m; ++i) w.update(y[i], *k.V[i], 1.0);
+  const std::string failure = precondition(w, z);
+  x.update(1.0, z, 1.0);
+  return failure;
+}
+
+}  // namespace
+
 GmresOutcome preconditionedGmres(const CrsMatrix& A,
                                  const std::function<std::string(const Vector&, Vector&)>& precondition,
                                  const Vector& b, Vector& x, double tol, int maxIterations) {
@@ -31,60 +95,29 @@ GmresOutcome preconditionedGmres(const CrsMatrix& A,
     out.converged = true;
     return out;
   }
-  std::vector<RCP<Vector>> V;
-  V.push_back(rcp(new Vector(r0, Teuchos::Copy)));
-  V[0]->scale(1.0 / beta);
-  // H is (m+1) x m, stored by columns; cs/sn: the Givens rotations; g: the rotated residual.
-  std::vector<std::vector<double>> H;
-  std::vector<double> cs, sn, g{beta};
+  KrylovSpace k;
+  k.V.push_back(rcp(new Vector(r0, Teuchos::Copy)));
+  k.V[0]->scale(1.0 / beta);
+  k.g.push_back(beta);
   Vector z(map), w(map);
   int m = 0;
   for (; m < maxIterations; ++m) {
-    out.failure = precondition(*V[m], z);
+    out.failure = precondition(*k.V[m], z);
     if (!out.failure.empty()) return out;
     A.apply(z, w);
-    std::vector<double> h(m + 2, 0.0);
-    for (int i = 0; i <= m; ++i) {
-      h[i] = w.dot(*V[i]);
-      w.update(-h[i], *V[i], 1.0);
-    }
-    h[m + 1] = w.norm2();
-    for (int i = 0; i < m; ++i) {  // earlier rotations
-      const double t = cs[i] * h[i] + sn[i] * h[i + 1];
-      h[i + 1] = -sn[i] * h[i] + cs[i] * h[i + 1];
-      h[i] = t;
-    }
-    const double r = std::hypot(h[m], h[m + 1]);
-    if (!(r > 0.0)) break;  // breakdown: the solution lies in the current space
-    cs.push_back(h[m] / r);
-    sn.push_back(h[m + 1] / r);
-    g.push_back(-sn[m] * g[m]);
-    g[m] = cs[m] * g[m];
-    const double next = h[m + 1];
-    h[m] = r;
-    h[m + 1] = 0.0;
-    H.push_back(std::move(h));
-    out.estimatedResidual = std::fabs(g[m + 1]) / bnorm;
+    double next = 0.0;
+    if (!rotateColumn(orthogonalize(w, k.V, m), k, m, next)) break;
+    out.estimatedResidual = std::fabs(k.g[m + 1]) / bnorm;
     if (!std::isfinite(out.estimatedResidual)) return out;
     if (out.estimatedResidual <= tol) {
       ++m;
       break;
     }
-    V.push_back(rcp(new Vector(w, Teuchos::Copy)));
-    V.back()->scale(1.0 / next);
+    k.V.push_back(rcp(new Vector(w, Teuchos::Copy)));
+    k.V.back()->scale(1.0 / next);
   }
   out.iterations = m;
-  // y = H^-1 g (upper triangular), x = P^-1 (V y).
-  std::vector<double> y(m, 0.0);
-  for (int i = m - 1; i >= 0; --i) {
-    double s = g[i];
-    for (int j = i + 1; j < m; ++j) s -= H[j][i] * y[j];
-    y[i] = s / H[i][i];
-  }
-  w.putScalar(0.0);
-  for (int i = 0; i < m; ++i) w.update(y[i], *V[i], 1.0);
-  out.failure = precondition(w, z);
-  x.update(1.0, z, 1.0);
+  out.failure = addCorrection(k, m, precondition, w, z, x);
   out.converged = out.failure.empty() && out.estimatedResidual <= tol;
   return out;
 }

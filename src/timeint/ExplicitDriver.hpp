@@ -36,6 +36,11 @@ class ExplicitDriver : public StepLoop {
   void acceleration(const Vector& u, const Vector& vStar, double t, double dt, Vector& a,
                     double h, double factor);
   void notify(const StepInfo& info);
+  // The phases of run(): the initial state, and per nominal step its sub-steps and the check
+  // that the state stayed finite (throws NumericalError naming the stability limit).
+  void startState(const Vector& u, const Vector& v, StepInfo& info);
+  void takeSubsteps(double target, double h);
+  void requireFiniteState(long long n) const;
 
   SecondOrderOperator& op_;
   RCP<const Vector> inverseMass_;

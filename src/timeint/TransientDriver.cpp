@@ -124,6 +124,98 @@ void TransientDriver::archive(StateArchive& a, const StateVectors& vectors) cons
   putState(a, vectors, {*u0_, *v0_, *a0_, t_, nominal_, sum_}, op_);
 }
 
+// The state the run starts from: the checkpoint's, or (u, v) at startTime with the initial
+// acceleration from equilibrium; then the weighted terms M a_n and F_n of the first step.
+void TransientDriver::startState(const Vector& u, const Vector& v, const Resume* resume) {
+  TransientSummary& sum = sum_;
+  if (resume) {
+    getState(*resume, {*u0_, *v0_, *a0_, t_, nominal_, sum}, op_);
+  } else {
+    u0_->assign(u);
+    v0_->assign(v);
+    t_ = s_.startTime;
+    nominal_ = 0;
+    initialState(sum);
+    sum.smallestStep = s_.timeStep;
+  }
+  if (scheme_.alphaM() != 0.0) op_.applyMass(*a0_, *Ma0_);
+  if (scheme_.alphaF() != 0.0) op_.applyForces(*u0_, *v0_, t_, *F0_);
+}
+
+void TransientDriver::countIterations(const NewtonOutcome& out) {
+  sum_.newtonIterations += out.iterations;
+  sum_.activeSetIterations += out.activeSetIterations;
+  sum_.refactorizations += out.refactorizations;
+  sum_.krylovIterations += out.krylovIterations;
+}
+
+// A failed attempt: back to the accepted state; the run stops when no cut of dt is left.
+void TransientDriver::rejectAttempt(double t, double h, int cuts, const NewtonOutcome& out) {
+  op_.restoreState();
+  ++sum_.failedSteps;
+  if (cuts < s_.maxCuts) return;
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "step from t = %.6e s with dt = %.3e s failed after %d cut(s) of dt: ",
+                t, h, cuts);
+  throw NumericalError(s_.label + ": " + buf + out.message +
+                       (s_.maxCuts == 0 ? " (dt cutting is off: set 'Maximum Step Cuts')"
+                                        : " (raise 'Maximum Step Cuts' or lower 'Time Step')"));
+}
+
+// The converged attempt that reached t: n+1 becomes n.
+void TransientDriver::acceptAttempt(double t) {
+  std::swap(u0_, u1_);
+  std::swap(v0_, v1_);
+  std::swap(a0_, a1_);
+  op_.acceptStep(*u0_);
+  op_.saveState();
+  std::swap(Ma0_, Ma1_);  // M a and F of the converged u (zero-weighted when alpha is 0)
+  if (scheme_.alphaF() != 0.0 && op_.forcesVaryInTime())
+    op_.applyForces(*u0_, *v0_, t, *F0_);  // at t itself (t + h can differ by round-off)
+  else
+    std::swap(F0_, F1_);
+}
+
+// Nominal step n from t to its end, by attempts cut on failure; each accepted one is shown to
+// the observers.
+void TransientDriver::nominalStep(long long n, long long nominal, double& t, StepInfo& info) {
+  TransientSummary& sum = sum_;
+  const double dt = s_.timeStep;
+  const double target = n == nominal ? s_.endTime : s_.startTime + double(n) * dt;
+  double h = target - t;
+  int cuts = 0;
+  while (t < target) {
+    const bool finalSub = h >= target - t - 1e-9 * dt;
+    // A whole nominal step uses dt itself (not target - t, which differs by round-off and
+    // would change the effective matrix's key).
+    if (finalSub) h = std::abs(target - t - dt) <= 1e-9 * dt ? dt : target - t;
+    NewtonOutcome out = attempt(t, h);
+    countIterations(out);
+    if (!out.converged) {
+      rejectAttempt(t, h, cuts, out);
+      ++cuts;
+      h *= s_.cutFactor;
+      continue;
+    }
+    t = finalSub ? target : t + h;
+    acceptAttempt(t);
+    ++sum.steps;
+    sum.maxNewtonPerStep = std::max(sum.maxNewtonPerStep, out.iterations);
+    sum.smallestStep = std::min(sum.smallestStep, h);
+    t_ = t;
+    if (t >= target) nominal_ = n;
+    info.step = sum.steps;
+    info.time = t;
+    info.dt = h;
+    info.newton = out;
+    info.cuts = cuts;
+    info.last = n == nominal && t >= target;
+    info.boundary = t >= target;
+    info.nominal = nominal_;
+    notify(info);
+  }
+}
+
 TransientSummary TransientDriver::run(Vector& u, Vector& v, const Resume* resume) {
   TransientSummary& sum = sum_;
   sum = TransientSummary();
@@ -131,18 +223,7 @@ TransientSummary TransientDriver::run(Vector& u, Vector& v, const Resume* resume
   if (!(dt > 0) || !(s_.endTime > t0))
     throw std::invalid_argument("TransientDriver: needs dt > 0 and endTime > startTime");
   StepInfo info;
-  if (resume) {
-    getState(*resume, {*u0_, *v0_, *a0_, t_, nominal_, sum}, op_);
-  } else {
-    u0_->assign(u);
-    v0_->assign(v);
-    t_ = t0;
-    nominal_ = 0;
-    initialState(sum);
-    sum.smallestStep = dt;
-  }
-  if (scheme_.alphaM() != 0.0) op_.applyMass(*a0_, *Ma0_);
-  if (scheme_.alphaF() != 0.0) op_.applyForces(*u0_, *v0_, t_, *F0_);
+  startState(u, v, resume);
   info.time = t_;
   info.step = sum.steps;
   info.nominal = nominal_;
@@ -152,63 +233,7 @@ TransientSummary TransientDriver::run(Vector& u, Vector& v, const Resume* resume
   // Bounded by the analysis's 'Maximum Steps' (checked in its settings): the cast is exact.
   const auto nominal = static_cast<long long>(nominalSteps(t0, t0 + span, dt));
   double t = t_;
-  for (long long n = nominal_ + 1; n <= nominal; ++n) {
-    const double target = n == nominal ? s_.endTime : t0 + double(n) * dt;
-    double h = target - t;
-    int cuts = 0;
-    while (t < target) {
-      const bool finalSub = h >= target - t - 1e-9 * dt;
-      // A whole nominal step uses dt itself (not target - t, which differs by round-off and
-      // would change the effective matrix's key).
-      if (finalSub) h = std::abs(target - t - dt) <= 1e-9 * dt ? dt : target - t;
-      NewtonOutcome out = attempt(t, h);
-      sum.newtonIterations += out.iterations;
-      sum.activeSetIterations += out.activeSetIterations;
-      sum.refactorizations += out.refactorizations;
-      sum.krylovIterations += out.krylovIterations;
-      if (!out.converged) {
-        op_.restoreState();
-        ++sum.failedSteps;
-        if (cuts >= s_.maxCuts) {
-          char buf[200];
-          std::snprintf(buf, sizeof buf, "step from t = %.6e s with dt = %.3e s failed after %d cut(s) of dt: ",
-                        t, h, cuts);
-          throw NumericalError(s_.label + ": " + buf + out.message +
-                               (s_.maxCuts == 0 ? " (dt cutting is off: set 'Maximum Step Cuts')"
-                                                : " (raise 'Maximum Step Cuts' or lower 'Time Step')"));
-        }
-        ++cuts;
-        h *= s_.cutFactor;
-        continue;
-      }
-      // Accept: n+1 becomes n.
-      t = finalSub ? target : t + h;
-      std::swap(u0_, u1_);
-      std::swap(v0_, v1_);
-      std::swap(a0_, a1_);
-      op_.acceptStep(*u0_);
-      op_.saveState();
-      std::swap(Ma0_, Ma1_);  // M a and F of the converged u (zero-weighted when alpha is 0)
-      if (scheme_.alphaF() != 0.0 && op_.forcesVaryInTime())
-        op_.applyForces(*u0_, *v0_, t, *F0_);  // at t itself (t + h can differ by round-off)
-      else
-        std::swap(F0_, F1_);
-      ++sum.steps;
-      sum.maxNewtonPerStep = std::max(sum.maxNewtonPerStep, out.iterations);
-      sum.smallestStep = std::min(sum.smallestStep, h);
-      t_ = t;
-      if (t >= target) nominal_ = n;
-      info.step = sum.steps;
-      info.time = t;
-      info.dt = h;
-      info.newton = out;
-      info.cuts = cuts;
-      info.last = n == nominal && t >= target;
-      info.boundary = t >= target;
-      info.nominal = nominal_;
-      notify(info);
-    }
-  }
+  for (long long n = nominal_ + 1; n <= nominal; ++n) nominalStep(n, nominal, t, info);
   u.assign(*u0_);
   v.assign(*v0_);
   return sum;

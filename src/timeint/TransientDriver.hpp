@@ -113,6 +113,13 @@ class TransientDriver : public StepLoop {
   NewtonOutcome attempt(double t, double dt);
   void initialState(TransientSummary& sum);
   void notify(const StepInfo& info);
+  // The phases of run(): the starting state, then each nominal step by attempts (rejected and
+  // cut, or accepted).
+  void startState(const Vector& u, const Vector& v, const Resume* resume);
+  void nominalStep(long long n, long long nominal, double& t, StepInfo& info);
+  void countIterations(const NewtonOutcome& out);
+  void rejectAttempt(double t, double h, int cuts, const NewtonOutcome& out);
+  void acceptAttempt(double t);
 
   SecondOrderOperator& op_;
   NewmarkFamily scheme_;
