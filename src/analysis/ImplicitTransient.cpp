@@ -109,8 +109,8 @@ ImplicitTransient::ImplicitTransient(const std::string& name, const Teuchos::Par
   s_.output = readTransientOutput(params_);
   checkStepCount(nominalSteps(0.0, s_.time.endTime, s_.time.timeStep), 1, s_.output.limits, inputFile_,
                  "Analyses/" + name_, s_.time.timeStep);
-  if (s_.explicitScheme && s_.contact.method == "Continuous")
-    throwInput(inputFile_, path("Contact/Method"), s_.contact.method,
+  if (s_.explicitScheme && s_.contact.hasPressureUnknowns())
+    throwInput(inputFile_, path("Contact/Method"), s_.contact.methodName(),
                "has pressure unknowns, which the explicit scheme (central differences) cannot solve for",
                "use Lagrange (forward-increment multipliers) or Penalty with central differences");
   // Central differences enforce Lagrange contact by forward increments on the lumped mass:
@@ -131,7 +131,7 @@ ImplicitTransient::ImplicitTransient(const std::string& name, const Teuchos::Par
   if (!s_.explicitScheme && s_.contact.hasMultipliers() &&
       params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
     throwInput(inputFile_, path("Linear Solver/Method"), "CG",
-               "the saddle-point system of contact method '" + s_.contact.method + "' is indefinite",
+               "the saddle-point system of contact method '" + s_.contact.methodName() + "' is indefinite",
                "use Direct, GMRES or MINRES (or the Penalty method with CG)");
 }
 
@@ -305,7 +305,7 @@ void ImplicitTransient::buildSolver() {
     SolverRegime r;
     r.unknowns = (long long)b_->K->getGlobalNumRows();
     if (b_->contact && b_->contact->method().hasMultipliers())
-      r.notSymmetricBecause = "contact method '" + s_.contact.method + "' has multipliers";
+      r.notSymmetricBecause = "contact method '" + s_.contact.methodName() + "' has multipliers";
     else if (b_->contact && b_->contact->hasFriction())
       r.notSymmetricBecause = "contact friction";
     else if (b_->links)
@@ -343,7 +343,7 @@ void ImplicitTransient::run(RunContext& ctx) {
   auto timer = rcp(new Teuchos::StackedTimer(("Transient '" + name_ + "'").c_str()));
   StructuralOperator op(b_->K, b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->contact.get(),
                         b_->links.get(), std::move(b_->solver), timer.get());
-  op.setForwardIncrementContact(s_.explicitScheme && s_.contact.method == "Lagrange");
+  op.setForwardIncrementContact(s_.explicitScheme && s_.contact.forwardIncrementsWhenExplicit());
   describe(ctx.model, op);
   const StateArchive* resume = resumeFor(ctx);
   ObserverSet outputs;
@@ -362,7 +362,7 @@ void ImplicitTransient::run(RunContext& ctx) {
     driver->archive(a, vectors);
     view.archive(a, vectors);
   };
-  const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model, params_);
+  const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model);
   if (resume) {
     view.unarchive(*resume, vectors, ctx.model.map());
     log() << format("  continuing from the checkpoint at t = %.6e s (step %lld)\n",
@@ -416,7 +416,7 @@ void ImplicitTransient::summarize(RunSummary& s, const TransientSummary& sum, co
     s.set("linear_solver/choice", b_->solverChoice);
   }
   if (b_->contact) {
-    s.set("contact/method", s_.contact.method);
+    s.set("contact/method", s_.contact.methodName());
     s.set("contact/constraints", b_->contact->numConstraints());
   }
   const std::pair<const char*, double> timers[] = {{"assembly", figures_.assembly},

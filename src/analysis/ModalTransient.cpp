@@ -191,7 +191,7 @@ void ModalTransient::run(RunContext& ctx) {
   ModalCheckpoint cp{integrator, state, links, basis, *ctx.model.mass(), vectors};
   plan.checkpoint.archiveRun = [&](StateArchive& a) { archiveState(cp, a); };
   const long long first = resume ? resumeState(cp, *resume) + 1 : 1;  // the first step to take
-  const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model, params_);
+  const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model);
   integrate(integrator, state, view, outputs, substeps, first);
   summarize(ctx.summary, basis, g, links, substeps, integrator.subStepsTaken());
   history.summarize(ctx.summary);

@@ -9,6 +9,15 @@
 
 namespace choc {
 
+const char* contactMethodName(ContactMethodKind m) {
+  switch (m) {
+    case ContactMethodKind::Lagrange: return "Lagrange";
+    case ContactMethodKind::Penalty: return "Penalty";
+    case ContactMethodKind::Continuous: return "Continuous";
+    default: return "None";
+  }
+}
+
 namespace {
 
 // The enforcement method, its coefficients and its active-set tolerances.
@@ -195,7 +204,11 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::
   ContactSettings s;
   s.path = path;
   const ParameterList& ct = p.sublist("Contact");
-  s.method = ct.get<std::string>("Method");
+  const std::string method = ct.get<std::string>("Method");
+  s.method = method == "Lagrange"     ? ContactMethodKind::Lagrange
+             : method == "Penalty"    ? ContactMethodKind::Penalty
+             : method == "Continuous" ? ContactMethodKind::Continuous
+                                      : ContactMethodKind::None;
   s.penaltyStiffness = ct.get<double>("Penalty Stiffness");
   s.augmentation = ct.get<double>("Augmentation Coefficient");
   s.gapTolerance = ct.get<double>("Gap Tolerance");
@@ -207,7 +220,7 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::
   if (s.enabled()) {
     const ParameterList& pairs = ct.sublist("Pairs");
     if (pairs.numParams() == 0)
-      throwInput(file, path + "/Contact/Pairs", "", "contact method '" + s.method + "' needs a pair",
+      throwInput(file, path + "/Contact/Pairs", "", "contact method '" + s.methodName() + "' needs a pair",
                  "add a sublist with 'Master Side Set' and 'Slave Side Set'");
     for (auto it = pairs.begin(); it != pairs.end(); ++it)
       s.pairs.push_back(readPair(pairs.sublist(pairs.name(it)), pairs.name(it), file,
@@ -222,8 +235,8 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::
 namespace {
 
 std::unique_ptr<ContactMethod> makeContactMethod(const ContactSettings& s) {
-  if (s.method == "Lagrange") return makeLagrangeContact(s.gapTolerance);
-  if (s.method == "Penalty") return makePenaltyContact(s.penaltyStiffness, s.gapTolerance);
+  if (s.method == ContactMethodKind::Lagrange) return makeLagrangeContact(s.gapTolerance);
+  if (s.method == ContactMethodKind::Penalty) return makePenaltyContact(s.penaltyStiffness, s.gapTolerance);
   return makeAugmentedLagrangianContact(s.augmentation, s.gapTolerance);
 }
 

@@ -15,8 +15,12 @@ namespace choc {
 // Declares 'Contact' (method, pairs, tolerances) and 'Contact Mass' in an analysis' list.
 void declareContactParameters(Teuchos::ParameterList& analysis);
 
+// The contact methods; what an analysis needs to know of one, it asks (ContactSettings).
+enum class ContactMethodKind { None, Lagrange, Penalty, Continuous };
+const char* contactMethodName(ContactMethodKind m);
+
 struct ContactSettings {
-  std::string method = "None";  // None, Lagrange, Penalty, Continuous
+  ContactMethodKind method = ContactMethodKind::None;
   double penaltyStiffness = 0, augmentation = 0, gapTolerance = 0;
   double tangentialStiffness = 0;  // 0: automatic (see 'Tangential Stiffness')
   int maxActiveSetIterations = 20;
@@ -24,8 +28,15 @@ struct ContactSettings {
   bool redistributeMass = false;  // 'Contact Mass' = redistributed, or auto with multipliers
   bool massIsAutomatic = false;   // 'Contact Mass' = auto: may fall back to standard
   std::string path;               // "Analyses/<name>", for messages
-  bool enabled() const { return method != "None"; }
-  bool hasMultipliers() const { return method == "Lagrange" || method == "Continuous"; }
+  bool enabled() const { return method != ContactMethodKind::None; }
+  bool hasMultipliers() const {
+    return method == ContactMethodKind::Lagrange || method == ContactMethodKind::Continuous;
+  }
+  // Pressure unknowns, which an explicit scheme cannot solve for.
+  bool hasPressureUnknowns() const { return method == ContactMethodKind::Continuous; }
+  // An explicit scheme enforces the multipliers by forward increments.
+  bool forwardIncrementsWhenExplicit() const { return method == ContactMethodKind::Lagrange; }
+  std::string methodName() const { return contactMethodName(method); }
   // The first pair with a friction coefficient, or null.
   const PairDefinition* frictionPair() const {
     for (const auto& p : pairs)

@@ -37,11 +37,16 @@ const std::vector<std::string>& impactSummaryQuantities() {
   return q;
 }
 
-ImpactObserver::ImpactObserver(std::string csvPath, const Teuchos::ParameterList& analysis,
+ImpactSettings readImpactSettings(const Teuchos::ParameterList& analysis) {
+  const Teuchos::ParameterList& s = analysis.sublist("Impact Statistics");
+  return {s.get<double>("Force Threshold"), s.get<double>("Minimum Rest Time")};
+}
+
+ImpactObserver::ImpactObserver(std::string csvPath, const ImpactSettings& settings,
                                HistoryObserver& history, const StateArchive* resume)
     : csvPath_(std::move(csvPath)),
-      threshold_(analysis.sublist("Impact Statistics").get<double>("Force Threshold")),
-      rest_(analysis.sublist("Impact Statistics").get<double>("Minimum Rest Time")),
+      threshold_(settings.forceThreshold),
+      rest_(settings.minimumRestTime),
       history_(history) {
   if (!resume || !resume->has("impacts/tracks")) return;
   const auto n = resume->getVector<long long>("impacts/tracks");

@@ -35,9 +35,16 @@ struct Impact {
 const std::vector<std::string>& impactQuantities();         // per impact
 const std::vector<std::string>& impactSummaryQuantities();  // per interaction
 
+// 'Impact Statistics', read once.
+struct ImpactSettings {
+  double forceThreshold = 0.0;   // an impact lasts while the normal force exceeds this [N]
+  double minimumRestTime = 0.0;  // two contacts closer than this [s] are one impact
+};
+ImpactSettings readImpactSettings(const Teuchos::ParameterList& analysis);
+
 class ImpactObserver : public TransientObserver {
  public:
-  ImpactObserver(std::string csvPath, const Teuchos::ParameterList& analysis, HistoryObserver& history,
+  ImpactObserver(std::string csvPath, const ImpactSettings& settings, HistoryObserver& history,
                  const StateArchive* resume);
   void step(TransientView& view) override;
   void substep(TransientView& view, double time) override;

@@ -72,6 +72,7 @@ TransientOutputSettings readTransientOutput(const Teuchos::ParameterList& p) {
   s.checkpoint.intervalSeconds = p.sublist("Checkpoint").get<double>("Interval Seconds");
   s.limits = readRunLimits(p);
   s.energy = readEnergyBalance(p);
+  s.impacts = readImpactSettings(p);
   return s;
 }
 
@@ -82,8 +83,7 @@ void checkResumableOutputs(const std::string& base, const StateArchive& checkpoi
 }
 
 HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSettings& s,
-                                             const OutputPlan& plan, const Model& model,
-                                             const Teuchos::ParameterList& analysis) {
+                                             const OutputPlan& plan, const Model& model) {
   const std::string csv = plan.base + suffix::history;
   auto history = plan.resume ? std::make_unique<HistoryObserver>(plan.what, plan.columns, csv, s.energy,
                                                                  *plan.resume, *model.comm())
@@ -91,7 +91,7 @@ HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSe
   HistoryObserver& h = *history;
   h.setRanks(model.comm()->getSize());
   set.add(std::move(history));
-  set.add(std::make_unique<ImpactObserver>(plan.base + suffix::impacts, analysis, h, plan.resume));
+  set.add(std::make_unique<ImpactObserver>(plan.base + suffix::impacts, s.impacts, h, plan.resume));
   if (s.exodusInterval > 0)
     set.add(std::make_unique<ExodusObserver>(plan.base + suffix::exodus, model, h, s.exodusInterval, plan.resume));
   set.add(std::make_unique<ProgressObserver>(plan.startTime, plan.endTime, s.progressInterval));

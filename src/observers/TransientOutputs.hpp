@@ -12,6 +12,7 @@
 
 #include "observers/CheckpointObserver.hpp"
 #include "observers/HistoryObserver.hpp"
+#include "observers/ImpactObserver.hpp"
 #include "observers/RunLimits.hpp"
 #include "physics/Model.hpp"
 
@@ -32,6 +33,7 @@ struct TransientOutputSettings {
   CheckpointSettings checkpoint;
   RunLimits limits;
   EnergyBalanceSettings energy;
+  ImpactSettings impacts;
 };
 TransientOutputSettings readTransientOutput(const Teuchos::ParameterList& analysis);
 
@@ -53,7 +55,6 @@ void checkResumableOutputs(const std::string& base, const StateArchive& checkpoi
 // Adds history, Exodus, progress and checkpoint/interrupt observers, in that order; returns the
 // history.
 HistoryObserver& addTransientObservers(ObserverSet& set, const TransientOutputSettings& s,
-                                             const OutputPlan& plan, const Model& model,
-                                             const Teuchos::ParameterList& analysis);
+                                             const OutputPlan& plan, const Model& model);
 
 }  // namespace choc
