@@ -17,30 +17,33 @@ choc="${1:-$here/../build/choc}"
 # Beyond the reference (input/sdnl111c_accurate.xml): the 3D bars with 400 HEX8 along each.
 "$choc" mesh --dim 3 --axis z --along1 400 --along2 400 --across1 1 --across2 1 \
   --width 0.02 --height 0.02 --gap 1e-5 -o "$here/sdnl111_3d_400.exo"
-# Issue 13's gmsh example: the same bars in TET10 (needs the gmsh command, Debian package gmsh).
+# The gmsh example: the same bars in TET10 (needs the gmsh command, Debian package gmsh).
 gmsh -3 -order 2 -format msh41 "$here/sdnl111_3d_bars.geo" -o "$here/sdnl111_3d_tet10.msh" > /dev/null
-# Issue 13's 2D section (plane strain, axisymmetric): the bars in QUAD8.
+# The 2D section (plane strain, axisymmetric): the bars in QUAD8.
 gmsh -2 -order 2 -format msh41 "$here/sdnl111_2d.geo" -o "$here/sdnl111_2d_quad8.msh" > /dev/null
-# SDNV100 (issue 14): the bar dropped on a rigid wall, 20 HEX8 along.
+# SDNV100: the bar dropped on a rigid wall, 20 HEX8 along.
 gmsh -3 -format msh41 "$here/sdnv100_bar.geo" -o "$here/sdnv100_bar.msh" > /dev/null
 gmsh -3 -format msh41 -setnumber n 1000 "$here/sdnv100_bar.geo" -o "$here/sdnv100_bar_1000.msh" > /dev/null
-# Hertz (issue 14): the sphere (axisymmetric half disc) and its lower half for the static press.
+# Hertz: the sphere (axisymmetric half disc) and its lower half for the static press.
 gmsh -2 -order 2 -format msh41 "$here/hertz_axisymmetric.geo" -o "$here/hertz_axisymmetric.msh" > /dev/null
 gmsh -2 -order 2 -format msh41 "$here/hertz_hemisphere.geo" -o "$here/hertz_hemisphere.msh" > /dev/null
-# SDND101 (issue 16): the oscillator on a stop, one beam standing for the discrete spring and mass.
+# SDND101: the oscillator on a stop, one beam standing for the discrete spring and mass.
 gmsh -1 -format msh41 "$here/sdnd101.geo" -o "$here/sdnd101.msh" > /dev/null
-# SDNL32 (issue 16): the articulated beam, the deck's 11 nodes.
+# SDNL32: the articulated beam, the deck's 11 nodes.
 gmsh -1 -format msh41 "$here/sdnl32.geo" -o "$here/sdnl32.msh" > /dev/null
-# SDND100 (issue 15): the oscillator with friction, one beam across the motion for the spring and mass.
+# SDND100: the oscillator with friction, one beam across the motion for the spring and mass.
 gmsh -1 -format msh41 "$here/sdnd100.geo" -o "$here/sdnd100.msh" > /dev/null
-# Sliding (issue 14): a block pushed along a longer foundation, non-matching HEX8 faces.
+# Sliding: a block pushed along a longer foundation, non-matching HEX8 faces.
 gmsh -3 -format msh41 "$here/sliding_blocks.geo" -o "$here/sliding_blocks.msh" > /dev/null
-# SDNL111 on non-matching meshes (issue 14): bar 1 HEX8 3 x 3, bar 2 TET4.
+# SDNL111 on non-matching meshes: bar 1 HEX8 3 x 3, bar 2 TET4.
 gmsh -3 -format msh41 "$here/sdnl111_nonmatching.geo" -o "$here/sdnl111_nonmatching.msh" > /dev/null
-# Contact patch test (issue 14): HEX8 3 x 3 on TET4 4 x 4 triangles (tet = 0: matching HEX8).
+# Contact patch test: HEX8 3 x 3 on TET4 4 x 4 triangles (tet = 0: matching HEX8).
 gmsh -3 -format msh41 "$here/patch_test.geo" -o "$here/patch_test.msh" > /dev/null
-# SDNV104 (issue 15): the pad on the frame in plane strain, QUAD4 and QUAD8.
+# SDNV104: the pad on the frame in plane strain, QUAD4 and QUAD8.
 gmsh -2 -format msh41 "$here/sdnv104.geo" -o "$here/sdnv104_quad4.msh" > /dev/null
 gmsh -2 -order 2 -format msh41 "$here/sdnv104.geo" -o "$here/sdnv104_quad8.msh" > /dev/null
-# Hertz in 3D (issue 14): the quarter sphere in TET10, 0.1 mm near the first point of contact.
+# Hertz in 3D: the quarter sphere in TET10, 0.1 mm near the first point of contact.
 gmsh -3 -order 2 -format msh41 "$here/hertz_quarter.geo" -o "$here/hertz_quarter.msh" > /dev/null
+# The copper bar probe (penalty contact with the non-dissipative schemes): the cylinder R = 3.2 mm,
+# L = 32.4 mm in HEX8, an O-grid disk (16 segments on the circle) extruded in 24 layers.
+gmsh -3 -format msh41 "$here/copper_bar.geo" -o "$here/copper_bar.msh" > /dev/null

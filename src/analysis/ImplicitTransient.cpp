@@ -19,6 +19,7 @@
 #include "input/ParameterSpec.hpp"
 #include "output/InteractionList.hpp"
 #include "physics/CriticalStep.hpp"
+#include "physics/LinearElasticForce.hpp"
 #include "solvers/SolverChoice.hpp"
 #include "timeint/ExplicitDriver.hpp"
 
@@ -285,7 +286,9 @@ void ImplicitTransient::setupExplicit(const Model& model) {
   const double xi = w > 0 ? 0.5 * (s_.rayleighK * w + s_.rayleighM / w) : 0.0;
   b_->criticalStep = explicitCriticalStep(w, xi);
   // Penalty contact and links switch on and off (timeint/StabilityPolicy.hpp).
-  const bool switching = b_->links || (b_->contact && b_->contact->method().stiffness() > 0);
+  const Switching switching = b_->contact && b_->contact->method().stiffness() > 0 ? Switching::PenaltyContact
+                              : b_->links                                          ? Switching::PenaltyLinks
+                                                                                   : Switching::None;
   const double dt = s_.time.timeStep;
   const StabilityDecision d = decideStability(dt, b_->criticalStep, switching, s_.stability);
   if (d.refused)
@@ -341,7 +344,7 @@ std::unique_ptr<StepLoop> ImplicitTransient::stepLoop(StructuralOperator& op) co
 void ImplicitTransient::run(RunContext& ctx) {
   const auto wallStart = std::chrono::steady_clock::now();
   auto timer = rcp(new Teuchos::StackedTimer(("Transient '" + name_ + "'").c_str()));
-  StructuralOperator op(b_->K, b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->contact.get(),
+  StructuralOperator op(std::make_shared<LinearElasticForce>(b_->K), b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->contact.get(),
                         b_->links.get(), std::move(b_->solver), timer.get());
   op.setForwardIncrementContact(s_.explicitScheme && s_.contact.forwardIncrementsWhenExplicit());
   describe(ctx.model, op);

@@ -317,7 +317,7 @@ int ModalTransient::stepsPerStep(const Generalized& g, const ModalLinks& links) 
                                              std::max(g.xiMax, links.linkDampingRatioBound()));
   bool penalty = false;
   for (const auto& l : links.links()) penalty = penalty || !l.law.rigid;
-  const StabilityDecision d = decideStability(s_.dt, dtCrit, penalty, s_.stability);
+  const StabilityDecision d = decideStability(s_.dt, dtCrit, penalty ? Switching::PenaltyLinks : Switching::None, s_.stability);
   if (d.refused)
     throwInput(inputFile_, path("Time Step"), format("%.6g", s_.dt), d.reason + "; the highest frequency is that of the modes with the link stiffness",
                "use a time step at most " + shortNumber(d.stableStep) + " s, or set 'Stability Check' to 'substep'");

@@ -106,11 +106,12 @@ void declareContactMassParameter(ParameterList& p) {
                 "standard: the blocks' mass matrices as they are; redistributed: the nodes of the "
                 "contact pairs' master and slave side sets carry no mass, each element touching "
                 "them has its mass moved onto its other nodes (element mass kept in every "
-                "direction; Khenous, Laborde, Renard 2008): no chatter of exactly enforced contact "
-                "and no energy created by it, the contact surfaces' displacements found statically "
-                "each step, their velocities reported as displacement differences; auto: "
-                "redistributed for Lagrange and Continuous (standard when an element has every "
-                "node on a contact surface), standard for Penalty");
+                "direction; Khenous, Laborde, Renard 2008): no chatter of the contact nodes and no "
+                "energy created by it with any contact method, the contact surfaces' displacements "
+                "found statically each step, their velocities reported as displacement "
+                "differences; auto: redistributed with the implicit schemes, whatever the contact "
+                "method (standard when an element has every node on a contact surface), standard "
+                "with central differences");
 }
 
 }  // namespace
@@ -216,7 +217,7 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::
   s.tangentialStiffness = ct.get<double>("Tangential Stiffness");
   const std::string mass = p.get<std::string>("Contact Mass");
   s.massIsAutomatic = mass == "auto";
-  s.redistributeMass = mass == "redistributed" || (s.massIsAutomatic && s.hasMultipliers());
+  s.redistributeMass = mass == "redistributed" || (s.massIsAutomatic && s.enabled());
   if (s.enabled()) {
     const ParameterList& pairs = ct.sublist("Pairs");
     if (pairs.numParams() == 0)

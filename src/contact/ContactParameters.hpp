@@ -25,7 +25,7 @@ struct ContactSettings {
   double tangentialStiffness = 0;  // 0: automatic (see 'Tangential Stiffness')
   int maxActiveSetIterations = 20;
   std::vector<PairDefinition> pairs;
-  bool redistributeMass = false;  // 'Contact Mass' = redistributed, or auto with multipliers
+  bool redistributeMass = false;  // 'Contact Mass' = redistributed, or auto (implicit schemes)
   bool massIsAutomatic = false;   // 'Contact Mass' = auto: may fall back to standard
   std::string path;               // "Analyses/<name>", for messages
   bool enabled() const { return method != ContactMethodKind::None; }

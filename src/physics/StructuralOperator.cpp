@@ -11,11 +11,20 @@
 
 namespace choc {
 
-StructuralOperator::StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M,
+namespace {
+
+RCP<const CrsMatrix> initialTangent(InternalForce& internal) {
+  const Vector zero(internal.map());
+  return internal.tangent(zero);
+}
+
+}  // namespace
+
+StructuralOperator::StructuralOperator(std::shared_ptr<InternalForce> internal, RCP<const CrsMatrix> M,
                                        double rayleighK, double rayleighM, std::shared_ptr<const Loads> loads,
                                        ContactManager* contact, DirectLinks* links,
                                        std::unique_ptr<LinearSolver> solver, Teuchos::StackedTimer* timer)
-    : K_(std::move(K)), M_(std::move(M)), aK_(rayleighK), aM_(rayleighM), loads_(std::move(loads)),
+    : internal_(std::move(internal)), K_(initialTangent(*internal_)), M_(std::move(M)), aK_(rayleighK), aM_(rayleighM), loads_(std::move(loads)),
       contact_(contact), links_(links), solver_(std::move(solver)), timer_(timer),
       ku_(K_->getRowMap(), 1), vProducts_(K_->getRowMap(), 2) {
 
@@ -71,9 +80,7 @@ double StructuralOperator::kineticEnergy(const Vector& v) const {
 }
 
 double StructuralOperator::strainEnergy(const Vector& u) const {
-  if (ku_.holds(u, 0)) return 0.5 * u.dot(ku_.product(0));
-  applyStiffness(u, *energyTmp_);
-  return 0.5 * u.dot(*energyTmp_);
+  return internal_->strainEnergy(u, ku_.holds(u, 0) ? &ku_.product(0) : nullptr);
 }
 
 // v^T C v = aK v^T K v + aM v^T M v.
@@ -81,20 +88,10 @@ double StructuralOperator::dampingPower(const Vector& v, double kinetic) const {
   double power = aM_ * 2.0 * kinetic;
   if (aK_ != 0.0) {
     if (vProducts_.holds(v, kKv)) return power + aK_ * v.dot(vProducts_.product(kKv));
-    applyStiffness(v, *energyTmp_);
+    internal_->applyDampingStiffness(v, *energyTmp_);
     power += aK_ * v.dot(*energyTmp_);
   }
   return power;
-}
-
-void StructuralOperator::storeStiffnessSymmetrically() {
-  if (!symmetricK_ && K_->getGlobalNumRows() >= SymmetricProduct::kWorthwhileRows)
-    symmetricK_ = SymmetricProduct::build(*K_);
-}
-
-void StructuralOperator::applyStiffness(const Vector& x, Vector& out) const {
-  if (symmetricK_) symmetricK_->apply(x, out);
-  else K_->apply(x, out);
 }
 
 void StructuralOperator::useDiagonalMass(RCP<const Vector> m) { massDiagonal_ = std::move(m); }
@@ -111,7 +108,7 @@ void StructuralOperator::applyMass(const Vector& a, Vector& out) {
 
 void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t, Vector& out) {
   TimerScope ts(timer_, "Transient: assembly");
-  applyStiffness(u, out);
+  internal_->internalForce(u, out);
   if (keepProducts_) {
     ku_.reset(u);
     ku_.write(0).assign(out);
@@ -120,7 +117,7 @@ void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t,
   // K v and M v straight into the cache's buffers when kept.
   if (aK_ != 0.0) {
     Vector& Kv = keepProducts_ ? vProducts_.write(kKv) : *tmp_;
-    applyStiffness(v, Kv);
+    internal_->applyDampingStiffness(v, Kv);
     out.update(aK_, Kv, 1.0);
   }
   if (aM_ != 0.0 && !keepProducts_ && !massDiagonal_.is_null()) {
@@ -145,6 +142,8 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
   CorrectionStatus st;
   if (restoreKept_) restoreKeptFactorization();
   ContactSystem& sys = system();
+  internal_->tangent(u);  // K_'s values at u (a linear model: K, always version 0)
+  const long long tangent = internal_->tangentVersion();
   std::vector<char> status = sys.statusKey();
   // The links' tangent, with v following u (dv/du = cv / cd); none for W = M.
   const bool linkTangent = links_ && c.cd > 0.0;
@@ -152,7 +151,7 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
     const std::vector<char> lk = links_->tangentKey();
     status.insert(status.end(), lk.begin(), lk.end());
   }
-  if (!haveKey_ || !(keyCoefficients_ == c) || keyStatus_ != status) {
+  if (!haveKey_ || !(keyCoefficients_ == c) || keyTangent_ != tangent || keyStatus_ != status) {
     {
       TimerScope ts(timer_, "Transient: assembly");
       sys.fill(c.ca + c.cv * aM_, c.cd + c.cv * aK_,
@@ -160,12 +159,13 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
     }
     TimerScope ts(timer_, "Transient: linear solve");
     // throws NumericalError when singular
-    if (haveKey_ && keyCoefficients_ == c)
+    if (haveKey_ && keyCoefficients_ == c && keyTangent_ == tangent)
       solver_->updateMatrix(sys.matrix());  // a change of status: contact rows only
     else
       solver_->setMatrix(sys.matrix());
     haveKey_ = true;
     keyCoefficients_ = c;
+    keyTangent_ = tangent;
     keyStatus_ = status;
     st.refactored = true;
   }
@@ -321,38 +321,7 @@ void StructuralOperator::beginStep(const Vector& u, double t, double dt) {
   contact_->beginStep(u, t, dt);
 }
 
-double StructuralOperator::elasticTermsNorm(const Vector& u) const {
-  if (colTmp_.is_null()) colTmp_ = rcp(new Vector(K_->getColMap()));
-  Vector& uc = *colTmp_;
-  auto importer = K_->getGraph()->getImporter();
-  if (importer.is_null()) uc.assign(u);
-  else uc.doImport(u, *importer, Tpetra::INSERT);
-  auto udata = uc.getData();
-  const double* ud = udata.getRawPtr();
-  // The local CRS arrays directly, through raw pointers (a row view per row costs more than
-  // the row's arithmetic; the views' accessors in the inner loop cost twice the raw loop).
-  const auto A = K_->getLocalMatrixHost();
-  const size_t nRows = size_t(A.graph.row_map.extent(0)) - 1;
-  const auto* rows = A.graph.row_map.data();
-  const LO* cols = A.graph.entries.data();
-  const double* vals = A.values.data();
-  // Four partial sums per row: one running sum waits on each addition's latency (3 times
-  // the time of a product with K).
-  double local = 0.0;
-  for (size_t i = 0; i < nRows; ++i) {
-    double part[4] = {0.0, 0.0, 0.0, 0.0};
-    auto k = rows[i];
-    const auto end = rows[i + 1];
-    for (; k + 4 <= end; k += 4)
-      for (int j = 0; j < 4; ++j) part[j] += std::abs(vals[k + j]) * std::abs(ud[cols[k + j]]);
-    for (; k < end; ++k) part[0] += std::abs(vals[k]) * std::abs(ud[cols[k]]);
-    const double row = (part[0] + part[1]) + (part[2] + part[3]);
-    local += row * row;
-  }
-  double global = 0.0;
-  Teuchos::reduceAll<int, double>(*K_->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
-  return std::sqrt(global);
-}
+double StructuralOperator::elasticTermsNorm(const Vector& u) const { return internal_->termsNorm(u); }
 
 void StructuralOperator::addExplicitContact(const Vector& uStar, const Vector& inverseMass, double h2,
                                             Vector& a) {
@@ -382,13 +351,16 @@ void StructuralOperator::initializeConstraints(const Vector& u) {
   if (contact_) contact_->initialize(u);
 }
 void StructuralOperator::saveState() {
+  internal_->commit();
   if (links_) links_->commit();
   if (contact_) contact_->save();
 }
 void StructuralOperator::restoreState() {
+  internal_->revert();
   if (contact_) contact_->restore();
 }
 void StructuralOperator::archive(StateArchive& a) const {
+  internal_->archive(a);
   if (contact_) contact_->archive(a);
   if (links_) links_->archive(a);
   if (system_ && haveKey_ && solver_->mayKeepFactorization()) {
@@ -400,6 +372,7 @@ void StructuralOperator::archive(StateArchive& a) const {
   }
 }
 void StructuralOperator::unarchive(const StateArchive& a) {
+  internal_->unarchive(a);
   if (contact_) contact_->unarchive(a);
   if (links_) links_->unarchive(a);
   restoreKept_ = kept_.unarchive(a, *K_->getComm());
@@ -422,6 +395,7 @@ void StructuralOperator::restoreKeptFactorization() {
   solver_->restoreKeptState(kept_.solverState);
   haveKey_ = true;
   keyCoefficients_ = c;
+  keyTangent_ = internal_->tangentVersion();
   keyStatus_ = kept_.keyStatus;
 }
 

@@ -1,10 +1,11 @@
-// The second-order operator of a linear elastic model with Rayleigh damping, constant nodal
-// loads, contact and shock links: what ImplicitTransient gives its integrator.
-//   M a + C v + K u + f_c(u) + f_l(u, v) = f,   C = a_K K + a_M M.
-// Newton corrections solve with the effective matrix W = ca M + cv C + cd K plus the contact
-// block (ContactSystem) and the links' tangent, factored by the linear solver only when the
-// key (ca, cv, cd, the statuses of the contact nodes, the links' tangent key) changes; the key is compared in full, so a stale matrix is
-// impossible. Timings go to the analysis' stacked timer under "Transient: assembly",
+// The second-order operator of a structural model (its internal force and tangent: an
+// InternalForce) with Rayleigh damping, nodal loads, contact and shock links: what
+// ImplicitTransient gives its integrator.
+//   M a + C v + f_int(u) + f_c(u) + f_l(u, v) = f,   C = a_K K0 + a_M M.
+// Newton corrections solve with the effective matrix W = ca M + cv C + cd K_T(u) plus the
+// contact block (ContactSystem) and the links' tangent, factored by the linear solver only when
+// the key (ca, cv, cd, the tangent's version, the statuses of the contact nodes, the links'
+// tangent key) changes; the key is compared in full, so a stale matrix is impossible. Timings go to the analysis' stacked timer under "Transient: assembly",
 // "Transient: linear solve" and "Transient: contact".
 #pragma once
 #include <memory>
@@ -17,9 +18,9 @@
 #include "core/TimerScope.hpp"
 #include "contact/ContactManager.hpp"
 #include "contact/ContactSystem.hpp"
-#include "fem/SymmetricProduct.hpp"
 #include "physics/KeptFactorization.hpp"
 #include "physics/DirectLinks.hpp"
+#include "physics/InternalForce.hpp"
 #include "physics/Loads.hpp"
 #include "physics/ProductCache.hpp"
 #include "solvers/LinearSolver.hpp"
@@ -31,7 +32,7 @@ class StructuralOperator : public SecondOrderOperator {
  public:
   // loads, contact and links may be null. The solver is owned; the contact manager and the
   // links are not.
-  StructuralOperator(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, double rayleighK,
+  StructuralOperator(std::shared_ptr<InternalForce> internal, RCP<const CrsMatrix> M, double rayleighK,
                      double rayleighM, std::shared_ptr<const Loads> loads, ContactManager* contact,
                      DirectLinks* links, std::unique_ptr<LinearSolver> solver,
                      Teuchos::StackedTimer* timer);
@@ -47,10 +48,10 @@ class StructuralOperator : public SecondOrderOperator {
   // acceleration is solved by blocks; see the .cpp. Otherwise the default (W = M).
   CorrectionStatus solveInitialAcceleration(const Vector& u, const Vector& r, Vector& a) override;
   ConstraintUpdate updateConstraints(const Vector& u) override;
-  // Linear elasticity and constant-in-u loads: linear unless friction (stick and slip decided
-  // at every residual) or shock links (their status likewise) act.
+  // A linear internal force and constant-in-u loads: linear unless friction (stick and slip
+  // decided at every residual) or shock links (their status likewise) act.
   bool linearWithinPass() const override {
-    return !links_ && !(contact_ && contact_->hasFriction());
+    return internal_->linear() && !links_ && !(contact_ && contact_->hasFriction());
   }
   void beginStep(const Vector& u, double t, double dt) override;
   void acceptStep(const Vector& u) override;
@@ -60,10 +61,10 @@ class StructuralOperator : public SecondOrderOperator {
   // Explicit runs with a multiplier method: contact by forward increments (ContactManager::
   // forwardIncrement) instead of forces and statuses.
   void setForwardIncrementContact(bool on) { forwardIncrement_ = on; }
-  // K's products through SymmetricProduct (half the bytes streamed) from kWorthwhileRows rows
-  // when K is symmetric: for explicit runs, whose cost is those products. Implicit runs keep the
-  // CRS product: their linear solve dominates, and the copy costs 0.4 kB per unknown.
-  void storeStiffnessSymmetrically();
+  // The internal force's products from half a symmetric matrix (InternalForce::
+  // preferSymmetricProducts): for explicit runs, whose cost is those products. Implicit runs
+  // keep the CRS product: their linear solve dominates, and the copy costs 0.4 kB per unknown.
+  void storeStiffnessSymmetrically() { internal_->preferSymmetricProducts(); }
   // M is the diagonal m (a lumped mass: explicit runs): its products element by element, and
   // applyForces' damping term aM m .* v added in the same pass.
   void useDiagonalMass(RCP<const Vector> m);
@@ -77,7 +78,7 @@ class StructuralOperator : public SecondOrderOperator {
   void unarchive(const StateArchive& a) override;
 
   const DirectLinks* links() const { return links_; }
-  // Energies of a state, for the output: 1/2 v.M v, 1/2 u.K u, the contact springs' energy,
+  // Energies of a state, for the output: 1/2 v.M v, the stored elastic energy, the contact springs' energy,
   // the damping power v.C v (given the kinetic energy).
   double kineticEnergy(const Vector& v) const;
   double strainEnergy(const Vector& u) const;
@@ -96,10 +97,10 @@ class StructuralOperator : public SecondOrderOperator {
 
  private:
   ContactSystem& system();
-  RCP<const CrsMatrix> K_, M_;
-  // K's products from half its entries (storeStiffnessSymmetrically), else K's own.
-  std::unique_ptr<SymmetricProduct> symmetricK_;
-  void applyStiffness(const Vector& x, Vector& out) const;
+  std::shared_ptr<InternalForce> internal_;
+  // The tangent's matrix object (one graph for the run; its values the model's current ones).
+  RCP<const CrsMatrix> K_;
+  RCP<const CrsMatrix> M_;
   RCP<const Vector> massDiagonal_;  // useDiagonalMass(); null: M's own product
   void applyMassTo(const Vector& x, Vector& out) const;
   double aK_, aM_;
@@ -112,7 +113,6 @@ class StructuralOperator : public SecondOrderOperator {
   int systemTopology_ = 0;
   bool forwardIncrement_ = false;  // the contact manager's topologyVersion() the graph was built for
   RCP<Vector> tmp_, energyTmp_;
-  mutable RCP<Vector> colTmp_;  // u on K's column map, for elasticTermsNorm
   // K u, K v and M v of the last applyForces: the energies of the state a step ended at (whose
   // forces the step's last residual computed) cost no second product with K or M.
   ProductCache ku_, vProducts_;  // K u; K v and M v (one copy of v)
@@ -125,6 +125,7 @@ class StructuralOperator : public SecondOrderOperator {
   // Cache key of the factored matrix.
   bool haveKey_ = false;
   EffectiveCoefficients keyCoefficients_;
+  long long keyTangent_ = 0;  // the tangent's version
   std::vector<char> keyStatus_;
   // The factored matrix's coupling entries and coefficients, while the solver may keep it
   // through changes of status; a checkpoint's, to rebuild at the first correction.

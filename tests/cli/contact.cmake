@@ -15,19 +15,19 @@ function(choc_frame_invariance name timeout)
   set_tests_properties(cli.frame_invariance_${name} PROPERTIES TIMEOUT ${timeout} LABELS cli)
 endfunction()
 
-# Frame invariance of a contact scene (BENCHMARKS section 8, issue 14): SDNV100 (the bar on a
+# Frame invariance of a contact scene (docs/verification/properties.md): SDNV100 (the bar on a
 # rigid plane obstacle) with every component free, as drawn and turned by 0.7 rad about
 # (1, 2, 0.5): the motion of N5 and N100 and the wall force seen in the turned frame equal the
 # unturned ones to 1e-8 of their peaks (the scene is the same; only round-off differs), with
 # the same Newton iterations and factorisations (10%), for penalty, continuous and Lagrange, and
-# no energy balance above +0.1% of E0 at the default contact mass (BENCHMARKS section 8).
+# no energy balance above +0.1% of E0 at the default contact mass (docs/verification/properties.md).
 choc_frame_invariance(sdnv100 120)
 # SDNV100 (f): the bar on 4 nodal shock links against a fixed PLAN_Z (central differences), turned
 # the same way with the plane's origin and normal (the links' Axis and Twist): the same motion and
 # link force to 1e-8 of their peaks, the same steps, no energy balance above +0.1% of E0.
 choc_frame_invariance(sdnv100_springs 120 --scene sdnv100_springs)
 
-# Hertz's impact (BENCHMARKS section 2), axisymmetric: the sphere's peak force, contact duration
+# Hertz's impact (docs/verification/hertz.md), axisymmetric: the sphere's peak force, contact duration
 # and largest approach within a/R of Hertz (the order of the finite-sphere terms Hertz's
 # half-space theory leaves out, which the static press measures: |F/F_Hertz - 1| <= a/R at
 # every travel), the rebound velocity within 2% of 5 m/s and the energy balance never above
@@ -55,7 +55,7 @@ choc_contact_script(obstacle_slip 120)
 # plane run within ten times the obstacles' departure from the plane over the face.
 choc_contact_script(curved_obstacles 120)
 
-# SDNL32 modal or direct (issue 16): the modal transient on all 31 modes (no damping) equals the
+# SDNL32 modal or direct: the modal transient on all 31 modes (no damping) equals the
 # direct implicit transient with the stop as penalty contact of the tip node on a plane
 # (input/sdnl32_direct.xml) to 1e-5 of the peak, and 10 modes do not (their truncation).
 add_test(NAME cli.sdnl32_modal_equals_direct
@@ -63,31 +63,31 @@ add_test(NAME cli.sdnl32_modal_equals_direct
                  --build ${CMAKE_BINARY_DIR} --out ${CMAKE_CURRENT_BINARY_DIR}/work/sdnl32_modal_direct)
 set_tests_properties(cli.sdnl32_modal_equals_direct PROPERTIES TIMEOUT 300 LABELS cli)
 
-# Shock links in the direct transient (issue 16): the same spring as a contact pair, a circle
+# Shock links in the direct transient: the same spring as a contact pair, a circle
 # equal to the planes on a 1D motion, and a ring against the modal transient on all modes.
 choc_contact_script(direct_links 300)
 
-# Large sliding (issue 14): input/sliding.xml's block pushed across 22 faces of a stiff
+# Large sliding: input/sliding.xml's block pushed across 22 faces of a stiff
 # foundation keeps a closed contact with a pressure uniform to 1 %, slips as it moves, creates no
 # energy; on an elastic foundation the dent follows the block only with 'Search' = current.
 choc_contact_script(sliding 300)
 
-# Coulomb friction in a contact pair (issue 15): the law at every node (sliding on the cone,
+# Coulomb friction in a contact pair: the law at every node (sliding on the cone,
 # sticking inside it), the block slides then sticks, no energy growth, Newton <= 2.5 a step; and
 # mu -> 0 (1e-12) reproduces the frictionless sliding to 1e-8 of the peaks.
 choc_contact_script(sliding_friction 300)
-# SDNV104 (issue 15, BENCHMARKS section 4), QUAD4 and QUAD8: the pad's whole motion against the
+# SDNV104 (docs/verification/sdnv104.md), QUAD4 and QUAD8: the pad's whole motion against the
 # 1-DOF closed form with the ramp (0.5 % of the peak), the friction work against mu N times the
 # distance slid (0.5 %), the Coulomb law, the normal force, the energy balance, and the scene
-# turned by 0.7 rad about z (BENCHMARKS section 8: the same motion to 1e-8 of the peak).
+# turned by 0.7 rad about z (docs/verification/properties.md: the same motion to 1e-8 of the peak).
 choc_contact_script(sdnv104 120)
 
-# Frame invariance of the search in the current configuration (BENCHMARKS section 8): the
+# Frame invariance of the search in the current configuration (docs/verification/properties.md): the
 # sliding scene turned as a rigid whole (mesh, velocity, loads) gives the same motion, contact
 # force, nodal pressures and slips to 1e-8 of their peaks, the same cost within 10 %, and no
 # energy growth.
 choc_frame_invariance(sliding 300 --scene sliding)
-# The same with Coulomb friction (issue 15, mu = 0.02: the block slides 0.039 m and sticks at
+# The same with Coulomb friction (mu = 0.02: the block slides 0.039 m and sticks at
 # 7.8 ms): the motion, contact and friction work to 1e-8 of their peaks, the friction force of
 # the stuck block (a reaction known to Newton's tolerance) to 1e-5 of its peak.
 choc_frame_invariance(sliding_friction 300 --scene sliding --friction 0.02)
@@ -97,13 +97,13 @@ choc_frame_invariance(sliding_mortar 300 --scene sliding --mortar)
 # And with Coulomb friction on the mortar pair (mu = 0.02, as above).
 choc_frame_invariance(sliding_friction_mortar 300 --scene sliding --mortar --friction 0.02)
 
-# The contact patch test (BENCHMARKS section 3): matching faces pass it to 1e-8; on
+# The contact patch test (docs/verification/patch-test.md): matching faces pass it to 1e-8; on
 # non-matching faces (quadrilaterals on triangles) node to face's error is reported.
 choc_contact_script(patch_test 300)
 # Mortar on matching axisymmetric meshes (LINE2 rings) equals node to face to round-off.
 choc_contact_script(mortar_matching 120)
 
-# Explicit central differences with Lagrange contact by forward increments (issue 17): SDNV100
+# Explicit central differences with Lagrange contact by forward increments: SDNV100
 # with every component free, as drawn and turned: the same motion to 1e-8 of the peak, no
 # penetration of the wall (gaps >= -1e-12 of the motion), no energy growth above +0.1 % of E0.
 choc_frame_invariance(explicit_lagrange 120 --explicit --only lagrange)
@@ -113,6 +113,9 @@ choc_frame_invariance(explicit_lagrange 120 --explicit --only lagrange)
 # peak, start, end, velocity) to round-off (1e-9); sampled at the step ends only, the impulse
 # was 0.5-1.4 % off.
 choc_contact_script(substep_impulse 120)
+# Energy created by no scheme x contact method unnoticed: the copper bar at 227 m/s on a rigid
+# plane (docs/verification/copper-bar.md), every pair within +0.1 % of E0 or ending non-zero.
+choc_contact_script(copper_bar_energy 900)
 
 # One stability policy (timeint/StabilityPolicy): SDND101's oscillator on a penalty stop by the
 # modal and the direct transient, above the stable step, refuse, warn and sub-step alike (the

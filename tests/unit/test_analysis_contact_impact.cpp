@@ -12,6 +12,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "analysis/ImplicitTransient.hpp"
+#include "physics/LinearElasticForce.hpp"
 #include "physics/StructuralOperator.hpp"
 #include "contact/ContactManager.hpp"
 #include "reference/BarImpactExact.hpp"
@@ -100,7 +101,7 @@ void staticCompression(const std::string& method, int across2, bool exactPressur
   Teuchos::ParameterList lsp = linearSolverParameters();
   auto loads = std::make_shared<Loads>();
   loads->add({"load", load, 0.0});
-  StructuralOperator op(model.stiffness(), model.mass(), 0, 0, loads, &cm, nullptr, makeLinearSolver(lsp), nullptr);
+  StructuralOperator op(std::make_shared<LinearElasticForce>(model.stiffness()), model.mass(), 0, 0, loads, &cm, nullptr, makeLinearSolver(lsp), nullptr);
   Vector u(model.map());
   op.initializeConstraints(u);
   ASSERT_EQ(cm.activeCount(), cm.numConstraints());

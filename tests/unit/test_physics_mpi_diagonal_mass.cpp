@@ -12,6 +12,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "physics/LinearElasticForce.hpp"
 #include "physics/StructuralOperator.hpp"
 #include "solvers/LinearSolver.hpp"
 #include "symmetric_band_helpers.hpp"
@@ -65,8 +66,8 @@ TEST(MpiDiagonalMass, ForcesAndKineticEnergyEqualTheCrsMass) {
     absSum.replaceLocalValue(LO(l), s);
   }
   for (bool keep : {false, true}) {
-    StructuralOperator crs(K, M, aK, aM, nullptr, nullptr, nullptr, nullptr, nullptr);
-    StructuralOperator diagonal(K, M, aK, aM, nullptr, nullptr, nullptr, nullptr, nullptr);
+    StructuralOperator crs(std::make_shared<LinearElasticForce>(K), M, aK, aM, nullptr, nullptr, nullptr, nullptr, nullptr);
+    StructuralOperator diagonal(std::make_shared<LinearElasticForce>(K), M, aK, aM, nullptr, nullptr, nullptr, nullptr, nullptr);
     diagonal.useDiagonalMass(m);
     crs.keepProducts(keep);
     diagonal.keepProducts(keep);

@@ -3,7 +3,7 @@
 # Baselines change only through this command; say why in the commit that records them.
 # usage: tools/build/update-baselines.sh [BUILD_DIR] [case ...]
 set -euo pipefail
-top="$(cd "$(dirname "$0")/.." && pwd)"
+top="$(cd "$(dirname "$0")/../.." && pwd)"
 build="${1:-$top/build}"; shift || true
 cases=("$@")
 [ ${#cases[@]} -gt 0 ] || cases=($(cd "$top/regression" && ls -d */ | tr -d / | grep -v extremes))

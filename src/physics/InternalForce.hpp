@@ -1,0 +1,56 @@
+// The structural model's internal force and its tangent: what the operator asks the elements
+// for, and all it asks (the mass and damping, the loads, contact, links and the linear solver
+// are the operator's other parts).
+//
+//   f_int(u)            internalForce(u, out)
+//   K_T(u) = df_int/du  tangent(u): one matrix object on one graph for the whole run, its
+//                       values refreshed in place when the state changes; tangentVersion()
+//                       changes with them, and the operator's factorisation key includes it,
+//                       so a stale factorisation of an old tangent cannot be reused.
+//
+// How a tangent that changes every Newton iteration flows: the integrator asks the operator
+// for a correction at u; the operator calls tangent(u) (a nonlinear model assembles K_T(u)
+// into its fixed graph and bumps its version), compares the version in its key, refills the
+// effective matrix W = ca M + cv C + cd K_T (+ contact and links) and refactors or
+// re-preconditions. A linear model returns K with a constant version: W is factored once per
+// (coefficients, contact status) as before.
+//
+// Material state (per integration point, for the models to come) follows the step: commit()
+// when a step is accepted, revert() when it is cut or fails, archive()/unarchive() in
+// checkpoints. The linear model has none.
+//
+// Rayleigh damping C = aK K0 + aM M uses the reference stiffness K0 (dampingStiffness; the
+// tangent at u = 0), which for a linear model is K itself.
+#pragma once
+#include "core/TpetraTypes.hpp"
+#include "restart/StateArchive.hpp"
+
+namespace choc {
+
+class InternalForce {
+ public:
+  virtual ~InternalForce() = default;
+  virtual RCP<const Map> map() const = 0;
+  // out = f_int(u)
+  virtual void internalForce(const Vector& u, Vector& out) const = 0;
+  // K_T(u), on the same graph every call (see above).
+  virtual RCP<const CrsMatrix> tangent(const Vector& u) = 0;
+  virtual long long tangentVersion() const = 0;
+  // out = K0 x, the stiffness of Rayleigh damping.
+  virtual void applyDampingStiffness(const Vector& x, Vector& out) const = 0;
+  // Is f_int affine in u (one tangent for the whole run)?
+  virtual bool linear() const = 0;
+  // The stored elastic energy at u, given f_int(u) when the caller holds it (else null).
+  virtual double strainEnergy(const Vector& u, const Vector* internalForceAtU) const = 0;
+  // || |K| |u| ||: the size of the terms whose sum is f_int(u), for the round-off floor of
+  // Newton's residual test (0 when not known).
+  virtual double termsNorm(const Vector& /*u*/) const { return 0.0; }
+  // Explicit runs stream the products of a symmetric model from half its entries.
+  virtual void preferSymmetricProducts() {}
+  virtual void commit() {}
+  virtual void revert() {}
+  virtual void archive(StateArchive& /*a*/) const {}
+  virtual void unarchive(const StateArchive& /*a*/) {}
+};
+
+}  // namespace choc
