@@ -54,13 +54,13 @@ study-friction: build
 study-modal-direct: build
 	$(PYTHON) tools/study/modal_direct_study.py --build $(BUILD)
 
-# Explicit central differences on the scale scene (issue 17), np = 1 and 2, penalty and Lagrange
+# Explicit central differences on the scale scene, np = 1 and 2, penalty and Lagrange
 # contact; then the 1.2M-unknown scene (18 x 18 x 560 HEX8 per bar) on 2 ranks.
 bench-explicit: build
 	$(PYTHON) tools/bench/bench_explicit.py --build $(BUILD) --end-time 2e-5
 	$(PYTHON) tools/bench/bench_explicit.py --build $(BUILD) --end-time 2e-5 --mesh 18 560 --ranks 2 --contact lagrange
 
-# choc against CalculiX on the same deck (issue 17): installs calculix-ccx, then runs both on
+# choc against CalculiX on the same deck: installs calculix-ccx, then runs both on
 # SDNL111's bars in 3D at growing sizes (tools/bench/peer_calculix.py; PEER_ARGS, e.g. --sizes 3x100).
 PEER_ARGS ?=
 bench-peer: build

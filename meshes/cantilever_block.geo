@@ -1,4 +1,5 @@
-// A cantilever block 1 x 0.2 x 0.2 m (issue 13's modal study, tools/study/modal_convergence.py),
+// A cantilever block 1 x 0.2 x 0.2 m (the modal convergence study, tools/study/modal_convergence.py,
+// docs/verification/modal-convergence.md),
 // clamped on its face x = 0 (physical surface "clamped"), meshed with n elements across and
 // 5 n along: hexahedra when hex = 1 (HEX20 with -order 2 and Mesh.SecondOrderIncomplete = 1),
 // else tetrahedra (TET10 with -order 2). For example:

@@ -1,4 +1,4 @@
-// Hertz impact (BENCHMARKS section 2): a steel sphere of radius R = 10 mm as an axisymmetric
+// Hertz impact (docs/verification/hertz.md): a steel sphere of radius R = 10 mm as an axisymmetric
 // half disc in the x-y plane (x = r >= 0, y the axis), centre C = (0, R), lowest point
 // O = (0, 0) touching the rigid plane y = 0 (given in the input as an obstacle). Quadratic
 // triangles (TRI6 with -order 2), of size h near O (default 0.05 mm, about 16 across the

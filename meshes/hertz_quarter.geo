@@ -1,4 +1,4 @@
-// Hertz impact in 3D (BENCHMARKS section 2): the quarter x >= 0, z >= 0 of the steel sphere of
+// Hertz impact in 3D (docs/verification/hertz.md): the quarter x >= 0, z >= 0 of the steel sphere of
 // radius R = 10 mm, centre C = (0, R, 0), lowest point O = (0, 0, 0) touching the rigid plane
 // y = 0 (given in input/hertz_3d.xml as an obstacle). The planes x = 0 (XSYM) and z = 0 (ZSYM)
 // are symmetry planes. The sphere is cut at its equator y = R into two volumes meshed

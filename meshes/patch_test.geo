@@ -1,4 +1,4 @@
-// The contact patch test (BENCHMARKS section 3, issue 14): two blocks 0.02 x 0.02 x 0.01 m
+// The contact patch test (docs/verification/patch-test.md): two blocks 0.02 x 0.02 x 0.01 m
 // stacked at z = 0, 1e-6 m apart. The upper block (UPPER, z in [g, g + 0.01]) is HEX8 with an m x m section (2
 // layers); the lower block (LOWER, z in [-0.01, 0]) is TET4 on a k x k grid of squares cut into
 // triangles (2 layers, each prism cut into three tetrahedra); with tet = 0 the lower block is

@@ -1,5 +1,5 @@
-// SDND100 (BENCHMARKS §5): the node P of the oscillator at the origin and one two-node beam
-// from the ground G = (0, 0, -1), across the plane of the motion (x-y), whose bending
+// SDND100 (docs/verification/sdnd100.md): the node P of the oscillator at the origin and one
+// two-node beam from the ground G = (0, 0, -1), across the plane of the motion (x-y), whose bending
 // stiffness with the rotations held (12 E I / L^3 in x and in y) and lumped mass stand for the
 // deck's isotropic discrete spring and point mass (see input/sdnd100.xml).
 // gmsh -1 -format msh41 sdnd100.geo -o sdnd100.msh

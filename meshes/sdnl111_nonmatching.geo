@@ -1,4 +1,4 @@
-// SDNL111's two bars on non-matching meshes (issue 14): bar 1 (POU1, master) in HEX8 with a
+// SDNL111's two bars on non-matching meshes: bar 1 (POU1, master) in HEX8 with a
 // 3 x 3 section, bar 2 (POU2, slave) in TET4 on a section of 2 x 2 squares cut into triangles
 // (each prism cut into three tetrahedra): no node of bar 2's contact face meets one of bar 1's
 // except the corners. Section 0.02 x 0.02, bar 1 from z = 1e-5 to 1.00001, bar 2 from z = -1

@@ -1,5 +1,5 @@
-// SDNL32 (BENCHMARKS §7): the articulated beam, 10 two-node Timoshenko elements along x with
-// the deck's node coordinates (node 7 at 0.462 m, off the regular spacing); node sets N1..N11.
+// SDNL32 (docs/verification/sdnl32.md): the articulated beam, 10 two-node Timoshenko elements
+// along x with the deck's node coordinates (node 7 at 0.462 m, off the regular spacing); node sets N1..N11.
 // gmsh -1 -format msh41 sdnl32.geo -o sdnl32.msh
 Point(1) = {0, 0, 0, 1};
 Point(2) = {0.0783, 0, 0, 1};

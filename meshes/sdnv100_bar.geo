@@ -1,4 +1,4 @@
-// SDNV100 (BENCHMARKS section 1): a steel bar 0.2 m long with a 0.02 x 0.02 m square section
+// SDNV100 (docs/verification/sdnv100.md): a steel bar 0.2 m long with a 0.02 x 0.02 m square section
 // along z, from z = 0 (its lower face FACEINF, which meets the rigid wall) to z = 0.2 (its
 // upper face FACESUP), meshed with n HEX8 along and one across (default n = 20, 10 mm: about
 // the deck's own mesh, 21 HEXA8 along). N5 is a corner of the lower face, N100 the corner

@@ -1,4 +1,4 @@
-// SDNV104 (issue 15, BENCHMARKS section 4): a 1 m x 1 m pad (plane strain, unit thickness) on a
+// SDNV104 (docs/verification/sdnv104.md): a 1 m x 1 m pad (plane strain, unit thickness) on a
 // frame 18 m long, along which it slides up to 15 m. The pad (PAD, 4 x 4 elements of 0.25 m)
 // sits with its lower edge PAD_BOTTOM (the slave) on the frame's upper edge FRAME_TOP (the
 // master, 36 edges of 0.5 m: the meshes do not match) at y = 0, from x = 0 to 1; the frame

@@ -1,5 +1,5 @@
-// The sliding scene of issue 14: a steel block (0.04 x 0.016 x 0.02 m, 6 x 3 x 3 HEX8) standing
-// on a longer foundation (0.2 x 0.02 x 0.01 m, 40 x 2 x 2 HEX8: 5 mm faces along x), the two
+// The sliding scene (input/sliding.xml, input/sliding_friction.xml): a steel block
+// (0.04 x 0.016 x 0.02 m, 6 x 3 x 3 HEX8) standing on a longer foundation (0.2 x 0.02 x 0.01 m, 40 x 2 x 2 HEX8: 5 mm faces along x), the two
 // meshes not matching (block elements 6.7 x 5.3 mm on its contact face). The block's lower face
 // (BLOCK_BOTTOM, the slave) touches the foundation's upper face (FOUNDATION_TOP, the master) at
 // z = 0, from x = 0.02 to 0.06 m; the foundation's lower face (FOUNDATION_BASE) is clamped.

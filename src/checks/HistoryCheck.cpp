@@ -16,7 +16,7 @@ const std::vector<CheckKind>& checkKinds() {
        &valueCheckParameters, &makeValueCheck},
       {"Bar Impact Exact Solution",
        "the whole history of point A against the d'Alembert solution of the two-bar impact "
-       "(BRIEF section 1): max and RMS error relative to the peak",
+       "(SDNL111): max and RMS error relative to the peak",
        &barImpactCheckParameters, &makeBarImpactCheck},
       {"Impact",
        "a statistic of a shock link's impacts (peak force, peak time, duration, impulse, impact "

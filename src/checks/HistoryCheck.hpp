@@ -1,9 +1,9 @@
 // The checks of a transient's history, one entry of the analysis' 'Checks' list each, of a
 // kind chosen by its 'Type': 'Value' (a value at a time against a reference, the default) or
 // 'Bar Impact Exact Solution' (the whole history against the d'Alembert solution of the
-// two-bar impact, BRIEF section 1). A check is resolved before the run (the columns it
-// reads are recorded, its times inside the run, its node sets in the mesh) and evaluated
-// after it into rows of checks.csv.
+// two-bar impact of SDNL111, docs/verification/benchmarks.md). A check is resolved before the
+// run (the columns it reads are recorded, its times inside the run, its node sets in the mesh)
+// and evaluated after it into rows of checks.csv.
 #pragma once
 #include <memory>
 #include <string>

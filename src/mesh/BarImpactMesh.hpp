@@ -1,4 +1,5 @@
-// Generator of the "two bars on one axis" impact scene (SDNL111, BRIEF §2).
+// Generator of the "two bars on one axis" impact scene of SDNL111 (`choc mesh`; the scene is
+// defined in docs/verification/benchmarks.md).
 //
 // s = coordinate along the axis. Bar 1 (block POU1, moving towards -s) runs from A at
 // s = gap (+ shiftA for node A alone, 1D) to B at s = gap + length1; bar 2 (block POU2,

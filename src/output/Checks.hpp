@@ -1,5 +1,5 @@
-// Declared checks (BRIEF §3): evaluation against a reference value, checks.csv, and the
-// table printed in the run log.
+// Declared checks (docs/user-guide/checks.md): evaluation against a reference value,
+// checks.csv, and the table printed in the run log.
 #pragma once
 #include <cstdio>
 #include <optional>

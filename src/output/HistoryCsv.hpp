@@ -1,4 +1,5 @@
-// <analysis>.history.csv (BRIEF §3): first column "time", then one column per quantity.
+// <analysis>.history.csv (docs/user-guide/running.md, "What a run writes"): first column
+// "time", then one column per quantity.
 // Rows go to "<path>.part"; finish() renames it to <path>, abandon() to the ".incomplete"
 // name, so a file with the final name is always a complete history of this run.
 #pragma once

@@ -1,4 +1,4 @@
-// Static correction of a modal basis (issue 16): the basis enriched by the structure's static
+// Static correction of a modal basis: the basis enriched by the structure's static
 // responses to unit forces at the shock links' nodes, along their shapes' normal directions
 // (planes: e; circles: e2 and e3), which carry the local flexibility a truncated basis misses at
 // a stop. Each response psi = (K + s M)^-1 f (s = 0, or 1 % of the lowest flexible eigenvalue

@@ -1,4 +1,5 @@
-// The d'Alembert exact solution of the SDNL111 two-bar impact (BRIEF §1): displacement,
+// The d'Alembert exact solution of the SDNL111 two-bar impact (docs/verification/benchmarks.md,
+// "The exact solution (d'Alembert)"): displacement,
 // velocity and contact force at end A of the moving bar AB, as closed forms of time.
 //
 // With tau = 2L/c and s = (t - t0)/tau (the time since first contact in wave transits):

@@ -245,17 +245,17 @@ add_test(NAME cli.modal_sdnl111a
                  ${CMAKE_SOURCE_DIR}/input/sdnl111a.xml ${CLI_WORK}/modal_sdnl111a)
 set_tests_properties(cli.parameters_documented cli.modal_sdnl111a PROPERTIES TIMEOUT 120 LABELS cli)
 
-# Contact on nodes without faces (issue 16: beam structures against an obstacle).
+# Contact on nodes without faces (beam structures against an obstacle).
 choc_cli_reference_error(contact_slave_side_and_node_set bad_contact_slave_both.xml
   "parameter 'Analyses/impact/Contact/Pairs/interface/Slave Side Set' = 'CNT_POU2': the pair also has a 'Slave Node Set'. give either 'Slave Side Set' or \\(against an 'Obstacle'\\) 'Slave Node Set'")
 choc_cli_reference_error(contact_node_set_with_master bad_contact_node_set_master.xml
   "parameter 'Analyses/impact/Contact/Pairs/interface/Slave Node Set' = 'FACE_POU2': a slave node set has no faces to pair with a master side set. give an 'Obstacle', or a 'Slave Side Set'")
 choc_cli_reference_error(contact_node_set_missing bad_contact_node_set_missing.xml
   "parameter 'Analyses/impact/Contact/Pairs/interface/Slave Node Set' = 'TIP': no node set of that name in the mesh. node sets: POU1, POU2, N1, A, B, C, D, CL_POU2, FACE_POU1, FACE_POU2")
-# A shock link of a direct transient with the modal transient's rigid law (issue 16).
+# A shock link of a direct transient with the modal transient's rigid law.
 choc_cli_reference_error(link_rigid_direct bad_link_rigid_direct.xml
   "parameter 'Analyses/impact/Shock Links/shock/Normal Law' = 'rigid': is the modal transient's forward-increment constraint, not available in a direct transient. use 'penalty' with a stiffness, or a contact pair with the Lagrange method")
-# Shock-link friction (issue 15): a rigid link with friction, a negative Coulomb coefficient, a
+# Shock-link friction: a rigid link with friction, a negative Coulomb coefficient, a
 # negative stick stiffness.
 choc_cli_input_error(link_rigid_friction check bad_link_rigid_friction.xml
   "parameter 'Analyses/shock/Shock Links/link/Normal Law' = 'rigid': carries no tangential force .the link has a tangential stiffness, damping or friction.. use the penalty law for a link with friction")
@@ -263,10 +263,10 @@ choc_cli_input_error(link_negative_friction check bad_link_negative_friction.xml
   "parameter 'Analyses/shock/Shock Links/link/Friction Coefficient' = '-0.1': out of range. valid: a number in .0, inf.")
 choc_cli_input_error(link_negative_stick check bad_link_negative_stick.xml
   "parameter 'Analyses/shock/Shock Links/link/Tangential Stiffness' = '-400000': out of range. valid: a number in .0, inf.")
-# A fixed obstacle's origin on a link between two nodes (issue 14, SDNV100 (f)).
+# A fixed obstacle's origin on a link between two nodes (SDNV100 (f)).
 choc_cli_input_error(link_origin_with_node2 check bad_link_origin_with_node2.xml
   "parameter 'Analyses/shock/Shock Links/link/Obstacle Origin' = '0 0 -0.002': places a fixed obstacle, but 'Node 2' = 'C' is given. leave 'Node 2' empty for a fixed obstacle at this origin, or leave 'Obstacle Origin' empty")
-# Explicit central differences (issue 17): a consistent mass, pressure unknowns, a step above
+# Explicit central differences: a consistent mass, pressure unknowns, a step above
 # the stable one.
 choc_cli_input_error(explicit_consistent_mass check bad_explicit_consistent_mass.xml
   "parameter 'Analyses/impact/Scheme' = 'central differences': needs a diagonal mass with every entry positive. set 'Mass' = 'lumped' in every block")
@@ -274,7 +274,7 @@ choc_cli_input_error(explicit_continuous check bad_explicit_continuous.xml
   "parameter 'Analyses/impact/Contact/Method' = 'Continuous': has pressure unknowns, which the explicit scheme .central differences. cannot solve for. use Lagrange .forward-increment multipliers. or Penalty with central differences")
 choc_cli_input_error(explicit_time_step check bad_explicit_time_step.xml
   "parameter 'Analyses/impact/Time Step' = '1e-05': 1e-05 s exceeds the stable step of the explicit scheme, 3.9[0-9]*e-06 s .the critical step 3.9[0-9]*e-06 s.. the highest frequency is at most [0-9]+ rad/s")
-# Contact friction (issue 15): a negative Coulomb coefficient or stick stiffness, friction in an
+# Contact friction: a negative Coulomb coefficient or stick stiffness, friction in an
 # explicit run or with CG.
 choc_cli_input_error(contact_negative_friction check bad_contact_negative_friction.xml
   "parameter 'Analyses/impact/Contact/Pairs/shock/Friction Coefficient' = '-0.3': out of range. valid: a number in .0, inf.")
@@ -284,7 +284,7 @@ choc_cli_input_error(friction_explicit check bad_friction_explicit.xml
   "parameter 'Analyses/impact/Contact/Pairs/shock/Friction Coefficient' = '0.3': friction is solved with the implicit schemes' Newton iterations, which central differences do not make. use an implicit scheme")
 choc_cli_input_error(friction_cg check bad_friction_cg.xml
   "parameter 'Analyses/impact/Contact/Pairs/shock/Friction Coefficient' = '0.3': the tangent of a sliding node is not symmetric, which CG cannot solve. use 'Linear Solver/Method' = Direct or GMRES")
-# Loads and springs (issue 15, SDNV104): each bad input is input/sdnv104_quad4.xml with one thing
+# Loads and springs (SDNV104): each bad input is input/sdnv104_quad4.xml with one thing
 # changed: a pressure on a side set the mesh lacks, a negative ramp time; a spring on a missing
 # node set, with a zero axis, an axis out of a 2D model's plane, a negative stiffness.
 choc_cli_input_error(pressure_side_set check bad_pressure_side_set.xml

@@ -1,4 +1,4 @@
-# Plane strain and axisymmetry against 3D (issue 13): SDNL111's bar wave on QUAD4 sections,
+# Plane strain and axisymmetry against 3D: SDNL111's bar wave on QUAD4 sections,
 # plane strain and axisymmetric, and on HEX8 bars, lateral motion blocked. The three discrete
 # systems reduce to the same 1D one (tensor-product shape functions; the section integrals of
 # stiffness and mass factor out alike, r-weighted in axisymmetry), so their histories of A must

@@ -1,6 +1,6 @@
 # SDNL111 C, D, E (direct implicit transient with contact): each input must run to the end
 # with every document row OK. E keeps the document's 0.03 % row at 4e-4 s, a known
-# inconsistency (BRIEF section 1): that row alone may be NOOK (exit 3); the script checks
+# inconsistency (docs/verification/sdnl111e.md): that row alone may be NOOK (exit 3); the script checks
 # that no other row is.
 foreach(m c d e)
   add_test(NAME sdnl111${m}

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Restart tests (issue 18): a run stopped and continued from its checkpoint must equal the
+"""Restart tests: a run stopped and continued from its checkpoint must equal the
 uninterrupted run, bit for bit on the same ranks and to solver tolerance on others.
 
   restart_case.py stops   CHOC INPUT OUT --analysis A --steps N... [--contact-column COL --contact-steps N...]

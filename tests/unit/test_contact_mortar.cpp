@@ -1,4 +1,4 @@
-// Mortar contact with dual multipliers (issue 14): the dual basis is biorthogonal and a
+// Mortar contact with dual multipliers: the dual basis is biorthogonal and a
 // partition of unity, the overlaps' integration points measure the overlap's area, and the
 // pairing's weights reproduce linear fields (which is what passes the patch test).
 #include <gtest/gtest.h>
@@ -137,7 +137,8 @@ TEST(ContactMortar, WeightsReproduceLinearFields) {
   EXPECT_THROW(pairMortar(a, {"ifc", "CNT_POU1", "CNT_POU2", 1e-6}, 0), std::invalid_argument);
 }
 
-// BENCHMARKS section 8: the pairing does not depend on the mesh's numbering. The scene with its
+// Numbering independence (docs/verification/properties.md): the pairing does not depend on the
+// mesh's numbering. The scene with its
 // nodes renumbered at random gives, node for node, the same weights on the same master nodes,
 // gaps and areas (the sums only change order: round-off).
 TEST(ContactMortar, PairingDoesNotDependOnTheNumbering) {

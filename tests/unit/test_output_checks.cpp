@@ -114,7 +114,7 @@ TEST(Checks, ChecksCsvHeaderRowsAndNaming) {
   auto b = spec(-1.55e-4, choc::Criterion::Relative, 3e-4);
   b.analysis = "e";
   b.quantity = "N1:DZ";
-  b.note = "known inconsistency: exact value is 0.27% away, see BRIEF";
+  b.note = "known inconsistency: exact value is 0.27% away, see docs/verification/sdnl111e.md";
   choc::writeChecksCsv(path, {choc::evaluateCheck(a, -1.9496835316262998e-4),
                               choc::evaluateCheck(b, -1.5541990876814815e-4)});
   EXPECT_FALSE(fs::exists(path + ".part"));

@@ -184,7 +184,7 @@ TEST(BarImpactExact, RigidWallBothEnds) {
   const BarImpactExact free(p);
   EXPECT_DOUBLE_EQ(contact.contactDuration(), 8e-5);
   EXPECT_DOUBLE_EQ(contact.contactForceMagnitude(), 1.6e6);
-  // The deck's rows (BENCHMARKS section 1).
+  // The deck's rows (docs/verification/sdnv100.md).
   EXPECT_NEAR(contact.displacementA(2e-5), -2e-3, 1e-15);
   EXPECT_NEAR(contact.displacementA(1e-4), -2e-3, 1e-15);
   EXPECT_NEAR(free.displacementA(4e-5), -4e-3, 1e-15);

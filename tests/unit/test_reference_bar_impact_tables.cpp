@@ -1,4 +1,5 @@
-// The exact solution against the SDNL111 document's tables and the BRIEF's numbers.
+// The exact solution against the SDNL111 document's tables and the wave speeds of the SDNL111
+// definition (docs/verification/benchmarks.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,8 +45,8 @@ TEST(BarImpactExact, WaveSpeedsMatchFormulasAndBrief) {
   const double cp = BarImpactExact::oedometricWaveSpeed(kE, 0.3, kRho);
   EXPECT_NEAR(c, bar1D(), 1e-9);
   EXPECT_NEAR(cp, oedometric(), 1e-9);
-  EXPECT_NEAR(c, 5063.7, 0.05);  // BRIEF: 5063.7
-  // BRIEF: "5875.3"; the formula gives 5875.097: 4 significant digits (5875) agree.
+  EXPECT_NEAR(c, 5063.7, 0.05);  // benchmarks.md: 5063.7
+  // benchmarks.md: "5875.3"; the formula gives 5875.097: 4 significant digits (5875) agree.
   EXPECT_NEAR(cp, 5875.0, 0.5);
   EXPECT_NEAR(cp, 5875.1, 0.01);
   // nu = 0: the oedometric speed is the bar speed.

@@ -237,8 +237,8 @@ TEST(BarFrequencies, ClosedFormBoundsHold) {
   }
   // The leading term is the known O(h^2) error: (g - 1) / (t^2/24) -> 1 as t -> 0.
   EXPECT_NEAR((discreteRatio(1e-2) - 1.0) / (1e-4 / 24.0), 1.0, 1e-4);
-  // Oedometric speed for nu = 0.3 (the brief's 5875.3 is a typo): sqrt(2e11 * 0.7 / (7800 *
-  // 1.3 * 0.4)) = 5875.097.
+  // Oedometric speed for nu = 0.3 (the 5875.3 quoted for SDNL111 in
+  // docs/verification/benchmarks.md is a typo): sqrt(2e11 * 0.7 / (7800 * 1.3 * 0.4)) = 5875.097.
   EXPECT_NEAR(oedometricSpeed(0.3), 5875.1, 0.005);
   EXPECT_NEAR(oedometricSpeed(0.0), waveSpeed1D(), 1e-9);
 }

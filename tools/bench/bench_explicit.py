@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Explicit benchmark (`make bench-explicit`, issue 17): input/scale-3d.xml's scene (300,300
+"""Explicit benchmark (`make bench-explicit`): input/scale-3d.xml's scene (300,300
 unknowns) by explicit central differences on 1 and 2 MPI ranks.
 
 usage: tools/bench/bench_explicit.py [--build DIR] [--end-time T] [--repeat N] [--contact penalty lagrange]

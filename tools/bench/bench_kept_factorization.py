@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Contact status changes on a kept factorisation (issue 17; 'Linear Solver/Update Budget',
+"""Contact status changes on a kept factorisation ('Linear Solver/Update Budget',
 src/solvers/DirectSolver.cpp): the scale scene's bars (tools/build/make-scale-mesh.sh) with
 Lagrange contact and Method = Direct (KLU2), 100 steps of 1e-6 s (two impacts of the bars,
 contact nodes opening and closing), at growing sizes, with 'Update Budget' = 0 (refactor at

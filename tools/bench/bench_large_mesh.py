@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Reads, partitions and assembles a large TET10 mesh made by gmsh on 2 MPI ranks, reporting
-the time and every rank's peak memory of each phase (issue 13). Not a test: `make bench-mesh`.
+the time and every rank's peak memory of each phase. Not a test: `make bench-mesh`.
 
 usage: tools/bench/bench_large_mesh.py [--build DIR] [--n 20] [--ranks 2] [--json PATH]
 n elements across meshes/cantilever_block.geo in TET10: n = 20 gives about 1.05 million

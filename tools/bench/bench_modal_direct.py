@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The same 3D scene run direct and modal (issue 16): SDNL111 C's HEX8 bars (lateral motion
+"""The same 3D scene run direct and modal: SDNL111 C's HEX8 bars (lateral motion
 blocked), 50, 400 and 800 elements per bar, by the direct implicit transient with Lagrange contact
 (input/sdnl111c.xml run c1_modified; input/sdnl111c_accurate.xml) and reduced to 40 modes with
 rigid shock links on the 4 contact nodes (input/sdnl111c_modal.xml, also on the 400-element

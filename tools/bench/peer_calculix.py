@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""choc against CalculiX on the same deck (`make bench-peer`, issue 17).
+"""choc against CalculiX on the same deck (`make bench-peer`).
 
 usage: tools/bench/peer_calculix.py [--build DIR] [--sizes 3x100,5x200,9x500] [--end-time T]
                                     [--repeat N] [--time-limit S] [--keep DIR] [--json PATH]

@@ -16,7 +16,8 @@ for input in input/sdnl111?.xml input/sdnl111a_rigid.xml input/sdnl111c_accurate
   grep -E "checks|NOOK|exact solution|unknowns;|done in|error" "results/$name.log" | grep -v "step " || true
   echo "   exit code $rc (log: results/$name.log)"
   if [ $rc -eq 3 ] && ! grep ",NOOK," "results/$name/checks.csv" | grep -vq "known inconsistency"; then
-    # Every failing row is a documented inconsistency of the document (BRIEF section 1).
+    # Every failing row is a documented inconsistency of the document
+    # (docs/verification/benchmarks.md, "The document's tables against the exact solution").
     echo "   the only NOOK rows are the document's known inconsistencies (see their note)"
   elif [ $rc -ne 0 ]; then
     status=1

@@ -1,4 +1,5 @@
-"""The d'Alembert exact solution of the SDNL111 two-bar impact (BRIEF section 1), in Python.
+"""The d'Alembert exact solution of the SDNL111 two-bar impact (docs/verification/benchmarks.md),
+in Python.
 
 An independent re-implementation of src/reference/BarImpactExact.cpp for the report and the
 plots: same closed forms, same parameter defaults, same floating-point operation order, so

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Frame invariance of a contact scene (BENCHMARKS section 8): SDNV100 or the sliding block
+"""Frame invariance of a contact scene (docs/verification/properties.md): SDNV100 or the sliding block
 turned as a rigid whole.
 
 usage: tools/oracles/frame_invariance.py [--scene sdnv100|sdnv100_springs|sliding] [--friction MU]
@@ -13,7 +13,7 @@ R (angle about axis, through the origin; the mesh made by gmsh from meshes/sdnv1
 the turned section and extrusion). The motion of N5 and N100 seen in the turned frame, R^T u,
 must equal the unturned motion to TOL times the peak displacement (default 1e-8), the wall
 force likewise, the cost (Newton iterations, factorisations: each analysis's summary.json)
-must agree within C (default 10%), and no run's energy balance may rise above E (default 1e-3, the issue's +0.1%) times E0
+must agree within C (default 10%), and no run's energy balance may rise above E (default 1e-3, the +0.1% of docs/verification/properties.md) times E0
 at the default contact mass. Exit 0 when it holds, 1 otherwise (naming what differs). `ctest -R frame_invariance`.
 
 --scene sdnv100_springs: input/sdnv100_shock_springs.xml (SDNV100 (f): 4 shock links on a fixed
@@ -294,7 +294,7 @@ def main():
             print(f"{name} {node}: max |R^T u_turned - u| = {diff:.2e} of the peak {peak:.3e} m")
             if not diff <= a.tolerance:
                 failures.append(f"{name} {node} differs by {diff:.2e} of the peak")
-        for label, d in (("as drawn", d0), ("turned", d1)):  # BENCHMARKS section 8: no growth
+        for label, d in (("as drawn", d0), ("turned", d1)):  # properties.md: no growth
             growth = d["energybalance"].max() / d["energytotal"][0]
             print(f"{name} {label}: largest energy balance {growth:+.2e} of E0")
             if not growth <= a.energy_tolerance:

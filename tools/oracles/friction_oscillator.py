@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The exact motion of SDND100's oscillator with an elastic-plastic Coulomb link (issue 15), an
+"""The exact motion of SDND100's oscillator with an elastic-plastic Coulomb link, an
 oracle for the shock links' friction independent of choc: mass m on a spring K, a friction
 force that is an elastic stick spring Kt, bounded by mu N (slip along the velocity), starting
 at rest from x0 with the stick spring unloaded. Piecewise analytic:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Hertz impact (BENCHMARKS section 2): a run of input/hertz.xml against Hertz's closed form.
+"""Hertz impact (docs/verification/hertz.md): a run of input/hertz.xml against Hertz's closed form.
 
 usage: tools/oracles/hertz.py RUN_DIR [--analysis NAME ...] [--tolerance T] [--rebound-tolerance V]
                       [--energy-tolerance E] [--fraction F] [--plot FILE.png]

@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""Explicit against implicit, error against cost (issue 17's study; part of `make study`).
+"""Explicit against implicit, error against cost (part of `make study`).
 
 Four scenes with a closed form, each run by both schemes on a series of meshes. For the bars
 the time step is tied to the mesh (Courant number about 1, where both schemes are most accurate
 for a bar's wave) and the error is over the whole history:
-  - SDNV100 (BENCHMARKS section 1): input/sdnv100_explicit.xml (central differences, lumped
+  - SDNV100 (docs/verification/sdnv100.md): input/sdnv100_explicit.xml (central differences, lumped
     mass, forward-increment Lagrange contact) and input/sdnv100.xml's analysis 'lagrange'
     (Newmark beta = 0.28, gamma = 0.55 as the deck, consistent mass with the massless contact
     face; and 'implicit, trapezoidal': beta = 1/4, gamma = 1/2, no numerical damping), n HEX8

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Hertz's impact in 3D (issue 14, README "Hertz's impact"): input/hertz_3d.xml (the quarter
+"""Hertz's impact in 3D (docs/verification/hertz.md): input/hertz_3d.xml (the quarter
 sphere by central differences) on meshes of size h near the first point of contact
 (meshes/hertz_quarter.geo), measured against Hertz by tools/oracles/hertz.py (option fraction
 0.25). Prints per mesh the unknowns, the critical step (both from the run's summary.json), the

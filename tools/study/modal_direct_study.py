@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Modal or direct (issue 16): the same scene by the modal transient on more and more modes
+"""Modal or direct: the same scene by the modal transient on more and more modes
 (central differences, sub-stepped when the basis asks for it) and by the direct implicit
 transient on all unknowns (average acceleration), each against the direct run at a small dt:
 the largest error of the probe relative to its peak, the error against d'Alembert where the

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""SDND100's friction (issue 15): the effect of the stick stiffness Kt and of dt on the deck's rows.
+"""SDND100's friction: the effect of the stick stiffness Kt and of dt on the deck's rows.
 Runs input/sdnd100.xml's analysis 'deck' (modal, central differences) with Kt = 4e5, 4e6, 4e7
 N/m, dt = 5e-4 and 5e-5 s (sub-stepped when the stick needs it), both friction laws, and prints
 per run: the error of the four rows against the deck's rigid-plastic values and against the

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""SDNV100 by explicit central differences (issue 14, README "SDNV100 at 0.5 % of the peak"):
+"""SDNV100 by explicit central differences (docs/verification/sdnv100-explicit.md):
 input/sdnv100_explicit.xml on meshes of n HEX8 along (meshes/sdnv100_bar.geo, one across), dt
 the largest step below COURANT x h / c that puts the contact instant 2e-5 s on a step (so the
 separation, 1e-4 s, is one too), and prints per mesh the whole-history max error and RMS of

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Curved rigid obstacles against the plane (issue 14): SDNV100's bar (input/sdnv100.xml) falls
+"""Curved rigid obstacles against the plane: SDNV100's bar (input/sdnv100.xml) falls
 onto a rigid sphere and onto a rigid cylinder (axis along x) of radius R = 1e4 m whose tops
 stand where the wall was (2 mm below the bar, under the middle of its face). Over the face such
 an obstacle lies below the plane by at most h = r^2 / (2R) at N5 (r = 0.01 sqrt 2 from the

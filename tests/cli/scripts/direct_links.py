@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Shock links in the direct transient (issue 16), against independent paths to the same physics:
+"""Shock links in the direct transient, against independent paths to the same physics:
   1. SDNL32's stop (input/sdnl32_direct.xml, the PLAN_Y link) and the same stop as a penalty
      contact pair of the tip node on a plane: the same spring at t_{n+1}, solved by the links'
      difference tangent on one side and the contact active set on the other. DY, VY of the tip
@@ -17,7 +17,7 @@
      measured 2.4e-5). The tip must hit both sides.
   5. SDNL111 A at dt = 2e-6 s, where a step has no solution with the dashpot (its force jumps
      at closure): solved without it for that step, said in the log, the check still passes.
-  6. A fixed obstacle's 'Obstacle Origin' (issue 14): SDND100's plane, DIST_1 = 0.5 m above P's
+  6. A fixed obstacle's 'Obstacle Origin': SDND100's plane, DIST_1 = 0.5 m above P's
      initial position, written instead as the plane through the origin 0 0 0.5 with DIST_1 = 0:
      the same gap, so every analysis (modal, direct implicit and explicit) gives the same
      history to round-off (1e-12 of each peak; measured: bit for bit).

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Hertz (BENCHMARKS section 2): runs input/hertz.xml and input/hertz_static.xml and measures
+# Hertz (docs/verification/hertz.md): runs input/hertz.xml and input/hertz_static.xml and measures
 # them against Hertz's closed form with tools/oracles/hertz.py (its exit status is the test's).
 # usage: hertz.sh CHOC SOURCE_DIR WORK_DIR
 set -e

@@ -1,8 +1,8 @@
 #!/bin/sh
-# Hertz in 3D (BENCHMARKS section 2): runs input/hertz_3d.xml (the quarter sphere) and measures
+# Hertz in 3D (docs/verification/hertz.md): runs input/hertz_3d.xml (the quarter sphere) and measures
 # it against Hertz's closed form with tools/oracles/hertz.py, the force, impulse and mass being a
 # quarter of the whole sphere's (its exit status is the test's). Then on 2 ranks: every history
-# equals the 1-rank one to 1e-8 of its peak (BENCHMARKS section 8), but the energy balance, a
+# equals the 1-rank one to 1e-8 of its peak (docs/verification/properties.md), but the energy balance, a
 # difference of energies of E0 = 0.1 J whose extreme is round-off (about -4e-8 J).
 # usage: hertz_3d.sh CHOC SOURCE_DIR WORK_DIR
 set -e

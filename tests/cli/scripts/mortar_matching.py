@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Mortar on matching meshes is node to face (issue 14): with the master covering each slave
+"""Mortar on matching meshes is node to face: with the master covering each slave
 edge exactly, the dual functions' integrals give M_jm = D_j delta_jm, so each slave node is
 constrained against its own master node, as node to face does. input/sdnl111c_axisymmetric.xml
 on QUAD4 (meshes/sdnl111_2d.geo at order 1: LINE2 contact edges, rings weighted by 2 pi r), run

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A rigid plane sliding under SDNV100's bar (issue 14): the wall of input/sdnv100.xml given a
+"""A rigid plane sliding under SDNV100's bar: the wall of input/sdnv100.xml given a
 tangential velocity of 1 m/s along x. The bar cannot move along x (only DZ is free), so every
 contact node slips by exactly v t relative to the wall (CONTACT_SLIP = 1.4e-4 m at 1.4e-4 s,
 and 0 off the contact face), and the normal contact is unchanged: the deck's 39 rows still

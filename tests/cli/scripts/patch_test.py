@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The contact patch test (BENCHMARKS section 3, issue 14): input/patch_test.xml, two blocks
+"""The contact patch test (docs/verification/patch-test.md): input/patch_test.xml, two blocks
 pressed by p = 1e7 Pa through a flat interface, lateral motion blocked: the exact state is a
 uniform stress, a contact pressure p at every point of the interface.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""SDNV104 (issue 15, BENCHMARKS section 4) over the whole history, QUAD4 and QUAD8
+"""SDNV104 (docs/verification/sdnv104.md) over the whole history, QUAD4 and QUAD8
 (input/sdnv104_quad4.xml, input/sdnv104_quad8.xml): the 7,000 kg pad, tied by springs
 k = 24,000 N/m, pressed by N = 70 kN and pushed by F = 200 kN (both ramped from 0 to full at
 0.07 s), slides with Coulomb friction mu = 0.3 along the frame.
@@ -7,9 +7,9 @@ k = 24,000 N/m, pressed by N = 70 kN and pushed by F = 200 kN (both ramped from 
 1. The motion: DX of the pad against the 1-DOF closed form, m x'' + k x = r(t) (F - s mu N)
    while sliding in direction s (the ramp's response, then half-cosines about (F -+ mu N) / k
    from each stop, slipping on while |F - k x| > mu N), at every step to 0.5 % of the peak
-   (the issue's bound for the rows).
+   (the bound of the inputs' rows; the deck asks 5 %).
 2. The friction work: mu N r(t) times the distance the pad's own history slid, at every step
-   after the ramp, to 0.5 % (the issue's bound).
+   after the ramp, to 0.5 % (the same bound).
 3. The law and the loads: the tangential force never above mu times the normal force (1e-9);
    equal to it while the pad moves faster than 0.1 m/s (1e-6); the normal force equal to
    N r(t) after 0.2 s to 0.5 % (the pad does not move vertically; its vibrations are damped).
@@ -18,7 +18,7 @@ k = 24,000 N/m, pressed by N = 70 kN and pushed by F = 200 kN (both ramped from 
 The same checks hold for QUAD4 with mortar contact, by Lagrange, Penalty and Continuous (the pad's LINE2 edges against the frame's,
 integrated again before each step as the pad slides 15 m): friction on mortar pairs acts on the
 slave node's motion relative to its dual function's average of the master nodes.
-5. Frame invariance (BENCHMARKS section 8), QUAD4: the scene turned by 0.7 rad about z (the
+5. Frame invariance (docs/verification/properties.md), QUAD4: the scene turned by 0.7 rad about z (the
    mesh by gmsh, the springs' direction with it; the pressures follow the faces) gives the same
    motion, R^T u, to 1e-8 of the peak; the same normal force and friction work (mu times it)
    to 1e-6 of their peaks: the normal force is the sum of 5 multipliers, each known to Newton's

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Large sliding without friction (issue 14): input/sliding.xml, a block (6 x 3 x 3 HEX8) pressed
+"""Large sliding without friction: input/sliding.xml, a block (6 x 3 x 3 HEX8) pressed
 by 1e7 Pa on a foundation a thousand times stiffer (40 x 2 x 2 HEX8, non-matching faces) and
 pushed at 10 m/s along it for 11 ms: 0.11 m, 22 of the foundation's 5 mm faces.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Coulomb friction in a contact pair (issue 15), on input/sliding_friction.xml (the block of
+"""Coulomb friction in a contact pair, on input/sliding_friction.xml (the block of
 input/sliding.xml leaving at 10 m/s with mu = 0.01, pressed by 6,400 N; it stops after 0.078 m at
 15.6 ms) and input/sliding.xml:
 
