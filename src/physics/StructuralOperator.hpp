@@ -24,11 +24,11 @@
 #include "physics/Loads.hpp"
 #include "physics/ProductCache.hpp"
 #include "solvers/LinearSolver.hpp"
-#include "timeint/SecondOrderOperator.hpp"
+#include "timeint/ExplicitOperator.hpp"
 
 namespace choc {
 
-class StructuralOperator : public SecondOrderOperator {
+class StructuralOperator : public ExplicitOperator {
  public:
   // loads, contact and links may be null. The solver is owned; the contact manager and the
   // links are not.

@@ -11,7 +11,7 @@
 
 namespace choc {
 
-ExplicitDriver::ExplicitDriver(SecondOrderOperator& op, RCP<const Vector> inverseMass,
+ExplicitDriver::ExplicitDriver(ExplicitOperator& op, RCP<const Vector> inverseMass,
                                TransientSettings settings, int substeps)
     : op_(op), inverseMass_(std::move(inverseMass)), s_(std::move(settings)),
       substeps_(substeps < 1 ? 1 : substeps) {

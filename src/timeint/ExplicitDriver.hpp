@@ -7,12 +7,13 @@
 // and v_n = v_{n-1/2} + dt/2 a_n for the output. The constraint status (penalty contact) is
 // re-evaluated at every u_n before its forces; exactly enforced contact (Lagrange) takes
 // forward-increment multipliers: a_n includes M^-1 B^T lambda_n such that u_{n+1} has no
-// negative gap (SecondOrderOperator::addExplicitContact). A nominal step longer than the critical step is
+// negative gap (ExplicitOperator::addExplicitContact). A nominal step longer than the critical step is
 // cut into `substeps` equal sub-steps (the caller decides, from its estimate of the highest
 // frequency). Observers see every nominal step's end state (sub-steps are not reported).
 #pragma once
 #include <vector>
 
+#include "timeint/ExplicitOperator.hpp"
 #include "timeint/TransientDriver.hpp"
 
 namespace choc {
@@ -20,7 +21,7 @@ namespace choc {
 class ExplicitDriver : public StepLoop {
  public:
   // inverseMass: 1 / M_ii on the operator's map (every entry finite and positive).
-  ExplicitDriver(SecondOrderOperator& op, RCP<const Vector> inverseMass, TransientSettings settings,
+  ExplicitDriver(ExplicitOperator& op, RCP<const Vector> inverseMass, TransientSettings settings,
                  int substeps);
   void addObserver(StepObserver* o) override { observers_.push_back(o); }
   // Throws NumericalError when the state stops being finite.
@@ -42,7 +43,7 @@ class ExplicitDriver : public StepLoop {
   void takeSubsteps(double target, double h);
   void requireFiniteState(long long n) const;
 
-  SecondOrderOperator& op_;
+  ExplicitOperator& op_;
   RCP<const Vector> inverseMass_;
   TransientSettings s_;
   int substeps_ = 1;

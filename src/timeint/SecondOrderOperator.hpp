@@ -70,14 +70,6 @@ class SecondOrderOperator {
   // Before the step of length dt to time t from the accepted state u (and before the initial
   // state, with t the start time and dt = 0): constraints that follow the motion are updated.
   virtual void beginStep(const Vector& /*u*/, double /*t*/, double /*dt*/) {}
-  // Explicit central differences with exactly enforced contact (forward-increment Lagrange
-  // multipliers; then addConstraintForces and updateConstraints leave contact out): given the
-  // predicted next position uStar (the free motion) and the factor h2 by which an acceleration
-  // moves it, addExplicitContact adds to a the contact accelerations M^-1 B^T lambda that leave
-  // no gap of uStar + h2 M^-1 B^T lambda negative.
-  virtual bool hasExplicitContact() const { return false; }
-  virtual void addExplicitContact(const Vector& /*uStar*/, const Vector& /*inverseMass*/,
-                                  double /*h2*/, Vector& /*a*/) {}
   // The constraints' state for a failure message, e.g. "pair 'slide': 28 of 28 nodes in
   // contact" ("" when there are none).
   virtual std::string constraintState() const { return ""; }
@@ -89,10 +81,6 @@ class SecondOrderOperator {
   virtual bool forcesVaryInTime() const { return true; }
   // A step was accepted at u (before saveState): state that accumulates over accepted steps.
   virtual void acceptStep(const Vector& /*u*/) {}
-  // Whether applyForces keeps its products (K u, K v, M v) for the energies of that state
-  // (on by default). An explicit run turns it off for the sub-steps no output follows: the
-  // copies would cost a tenth of such a sub-step.
-  virtual void keepProducts(bool /*on*/) {}
   // Is R(u) affine in u while the constraint status is frozen (linear elasticity, contact
   // without friction, no shock links)? Then one exact correction solves an active-set pass.
   // false (the default) is always safe.

@@ -22,7 +22,7 @@
 namespace choc {
 namespace {
 
-class Oscillator : public SecondOrderOperator {
+class Oscillator : public ExplicitOperator {
  public:
   Oscillator(double m, double c, double k) : m_(m), c_(c), k_(k) {
     RCP<const Comm> self = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
