@@ -56,7 +56,7 @@ StructuralOperator::StructuralOperator(std::shared_ptr<InternalForce> internal, 
 ContactSystem& StructuralOperator::system() {
   if (system_ && contact_ && contact_->topologyVersion() != systemTopology_) {
     system_.reset();  // a slave node changed master face: a new graph (and factorisation)
-    haveKey_ = false;
+    factored_.forget();
   }
   if (!system_) {
     systemTopology_ = contact_ ? contact_->topologyVersion() : 0;
@@ -143,7 +143,6 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
   if (restoreKept_) restoreKeptFactorization();
   ContactSystem& sys = system();
   internal_->tangent(u);  // K_'s values at u (a linear model: K, always version 0)
-  const long long tangent = internal_->tangentVersion();
   std::vector<char> status = sys.statusKey();
   // The links' tangent, with v following u (dv/du = cv / cd); none for W = M.
   const bool linkTangent = links_ && c.cd > 0.0;
@@ -151,7 +150,9 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
     const std::vector<char> lk = links_->tangentKey();
     status.insert(status.end(), lk.begin(), lk.end());
   }
-  if (!haveKey_ || !(keyCoefficients_ == c) || keyTangent_ != tangent || keyStatus_ != status) {
+  FactorizationKey key = keyOf(c, std::move(status));
+  const KeyChange change = factored_.compare(key);
+  if (change != KeyChange::None) {
     {
       TimerScope ts(timer_, "Transient: assembly");
       sys.fill(c.ca + c.cv * aM_, c.cd + c.cv * aK_,
@@ -159,14 +160,11 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
     }
     TimerScope ts(timer_, "Transient: linear solve");
     // throws NumericalError when singular
-    if (haveKey_ && keyCoefficients_ == c && keyTangent_ == tangent)
+    if (change == KeyChange::StatusOnly)
       solver_->updateMatrix(sys.matrix());  // a change of status: contact rows only
     else
       solver_->setMatrix(sys.matrix());
-    haveKey_ = true;
-    keyCoefficients_ = c;
-    keyTangent_ = tangent;
-    keyStatus_ = status;
+    factored_.record(std::move(key));
     st.refactored = true;
   }
   {
@@ -198,6 +196,15 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
   return st;
 }
 
+// The key of W = ca M + cv C + cd K_T with the given statuses, at the tangent's version.
+FactorizationKey StructuralOperator::keyOf(const EffectiveCoefficients& c, std::vector<char> status) const {
+  FactorizationKey k;
+  k.coefficients = {c.ca, c.cv, c.cd};
+  k.tangent = internal_->tangentVersion();
+  k.status = std::move(status);
+  return k;
+}
+
 // Initial acceleration with massless DOFs (redistributed contact mass). M = [M_mm 0; 0 0]
 // (z: the DOFs whose mass row is zero, the nodes of the contact surfaces). Rows m give a_m
 // from M_mm a_m = -r_m: the contact forces act on contact-surface DOFs only, so they do not
@@ -210,7 +217,7 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
 // contact-surface node is tied elastically to the massive nodes): a first solve with
 // b = (-r_m, 0) gives a_m, a second with b = (-r_m, -(K [a_m; 0])_z) gives (a_m, a_z). The
 // contact pressures keep their initial values (the reactions of the static rows, found by the
-// first step). The factorisation of A0 is dropped afterwards (haveKey_ = false).
+// first step). The factorisation of A0 is dropped afterwards (factored_.forget()).
 CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, const Vector& r,
                                                               Vector& a) {
   if (masslessGlobal_ == 0) return SecondOrderOperator::solveInitialAcceleration(u, r, a);
@@ -219,7 +226,7 @@ CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, c
   const size_t nLocal = rowMap->getNodeNumElements();
   RCP<CrsMatrix> A0 = initialAccelerationMatrix();
   TimerScope ts(timer_, "Transient: linear solve");
-  haveKey_ = false;  // the next correction refactors the effective matrix
+  factored_.forget();  // the next correction refactors the effective matrix
   solver_->setMatrix(A0);
   st.refactored = true;
   MultiVector b(rowMap, 1), x(rowMap, 1);
@@ -363,10 +370,10 @@ void StructuralOperator::archive(StateArchive& a) const {
   internal_->archive(a);
   if (contact_) contact_->archive(a);
   if (links_) links_->archive(a);
-  if (system_ && haveKey_ && solver_->mayKeepFactorization()) {
+  if (system_ && factored_.valid() && solver_->mayKeepFactorization()) {
     KeptFactorization k = kept_;
     k.last = system_->lastEntries();
-    k.keyStatus = keyStatus_;
+    k.keyStatus = factored_.key().status;
     k.solverState = solver_->keptState();
     k.archive(a, *K_->getComm());
   }
@@ -393,10 +400,7 @@ void StructuralOperator::restoreKeptFactorization() {
   sys.fillEntries(aM, aK, kept_.last);
   if (!kept_.solverState.empty() && kept_.solverState[0] != 0) solver_->updateMatrix(sys.matrix());
   solver_->restoreKeptState(kept_.solverState);
-  haveKey_ = true;
-  keyCoefficients_ = c;
-  keyTangent_ = internal_->tangentVersion();
-  keyStatus_ = kept_.keyStatus;
+  factored_.record(keyOf(c, kept_.keyStatus));
 }
 
 }  // namespace choc

@@ -23,6 +23,7 @@
 #include "physics/InternalForce.hpp"
 #include "physics/Loads.hpp"
 #include "physics/ProductCache.hpp"
+#include "solvers/FactorizationKey.hpp"
 #include "solvers/LinearSolver.hpp"
 #include "timeint/ExplicitOperator.hpp"
 
@@ -122,11 +123,9 @@ class StructuralOperator : public ExplicitOperator {
   RCP<MultiVector> rhs_, x_;
   std::vector<char> massless_;  // per local DOF: its row of M is zero
   long long masslessGlobal_ = 0;
-  // Cache key of the factored matrix.
-  bool haveKey_ = false;
-  EffectiveCoefficients keyCoefficients_;
-  long long keyTangent_ = 0;  // the tangent's version
-  std::vector<char> keyStatus_;
+  // What the factored matrix was built from (solvers/FactorizationKey.hpp).
+  FactorizationCache factored_;
+  FactorizationKey keyOf(const EffectiveCoefficients& c, std::vector<char> status) const;
   // The factored matrix's coupling entries and coefficients, while the solver may keep it
   // through changes of status; a checkpoint's, to rebuild at the first correction.
   KeptFactorization kept_;
