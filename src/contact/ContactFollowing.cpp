@@ -90,10 +90,10 @@ void ContactManager::followSurfaces(const Vector& u) {
       sp.masterNodes.clear();
       sp.weights.clear();
       sp.normal = Point3{0, 0, 0};
-      if (status_[s]) {  // it left its master surface: no force, no multiplier
-        status_[s] = 0;
-        lambda_[s] = 0.0;
-        ++version_;
+      if (set_.status[s]) {  // it left its master surface: no force, no multiplier
+        set_.status[s] = 0;
+        set_.lambda[s] = 0.0;
+        ++set_.version;
       }
     }
     ContactConstraint next = makeContactConstraint(c.reference, *dofs_, sp, true);
@@ -126,7 +126,7 @@ void ContactManager::commitStep(const Vector& u) {
   followed_->place(gather(followed_->dofs(), u), false);
   for (size_t s = 0; s < constraints_.size(); ++s) {
     const ContactConstraint& c = constraints_[s];
-    if (!status_[s] || !followed_->follows(c.geometry.pair)) continue;
+    if (!set_.status[s] || !followed_->follows(c.geometry.pair)) continue;
     const Vec3 d = tangentialOffset(c);
     slip_[s] += norm(Vec3{d[0] - slipStart_[s][0], d[1] - slipStart_[s][1], d[2] - slipStart_[s][2]});
   }

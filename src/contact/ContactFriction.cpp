@@ -131,8 +131,8 @@ void ContactManager::evaluateFriction(const std::vector<double>& x, const std::v
     f.status[s] = 0;
     f.force[s] = Vec3{0, 0, 0};
     const double mu = pairs_[constraints_[s].geometry.pair].friction;
-    if (!status_[s] || !(mu > 0)) continue;
-    const double fn = method_->force(g[s], lambda_[s], true);
+    if (!set_.status[s] || !(mu > 0)) continue;
+    const double fn = method_->force(g[s], set_.lambda[s], true);
     if (!(fn > 0)) continue;  // a tensile iterate: the node is about to leave
     const Vec3& n = constraints_[s].geometry.normal;
     const Vec3 r = relativeMotion(int(s), x, f.time);
@@ -211,7 +211,7 @@ std::vector<MatrixEntry> ContactManager::frictionTangent(GO multiplierBase) cons
         for (const auto& [dof, B] : constraints_[s].terms)
           out.push_back({a.dof, dof, mu * k * a.coeff * t[a.component] * B});
       if (method_->hasMultipliers())
-        out.push_back({a.dof, multiplierBase + GO(s), -mu * a.coeff * t[a.component] * scale_});
+        out.push_back({a.dof, multiplierBase + GO(s), -mu * a.coeff * t[a.component] * set_.scale});
     }
   }
   return out;

@@ -91,8 +91,8 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
     if (pair.friction > 0 && !friction_) enableFriction();
   indexTerms();
   buildSlipTerms(dofs);
-  status_.assign(constraints_.size(), 0);
-  lambda_.assign(constraints_.size(), 0.0);
+  set_.status.assign(constraints_.size(), 0);
+  set_.lambda.assign(constraints_.size(), 0.0);
   slip_.assign(constraints_.size(), 0.0);
   slipStart_.assign(constraints_.size(), Vec3{0, 0, 0});
   followed_ = std::make_unique<FollowedSurfaces>(mesh, dofs, pairs_);
@@ -165,12 +165,12 @@ std::vector<double> ContactManager::gapRates(const Vector& v) const {
 std::vector<double> ContactManager::forces(const Vector& u) const {
   const std::vector<double> g = gaps(u);
   std::vector<double> f(g.size());
-  for (size_t s = 0; s < g.size(); ++s) f[s] = method_->force(g[s], lambda_[s], status_[s]);
+  for (size_t s = 0; s < g.size(); ++s) f[s] = method_->force(g[s], set_.lambda[s], set_.status[s]);
   return f;
 }
 
 double ContactManager::rowResidual(int s, double gap) const {
-  return status_[s] ? -scale_ * gap : lambda_[s];
+  return set_.status[s] ? -set_.scale * gap : set_.lambda[s];
 }
 
 double ContactManager::addForces(const Vector& u, Vector& out) const {
@@ -180,7 +180,7 @@ double ContactManager::addForces(const Vector& u, Vector& out) const {
   const int rank = map_->getComm()->getRank();
   double local = 0.0;
   for (size_t s = 0; s < constraints_.size(); ++s) {
-    const double f = method_->force(g[s], lambda_[s], status_[s]);
+    const double f = method_->force(g[s], set_.lambda[s], set_.status[s]);
     if (f != 0.0)
       for (const auto& [dof, coeff] : constraints_[s].terms) {
         const LO l = map_->getLocalElement(dof);
@@ -197,9 +197,7 @@ double ContactManager::addForces(const Vector& u, Vector& out) const {
   return std::sqrt(global);
 }
 
-void ContactManager::applyCorrection(const std::vector<double>& d) {
-  for (size_t s = 0; s < lambda_.size(); ++s) lambda_[s] += scale_ * d[s];
-}
+void ContactManager::applyCorrection(const std::vector<double>& d) { set_.applyCorrection(d); }
 
 // Per constraint and component d: u_s,d - sum_i w_i u_i,d over every component (not only the
 // normal's), for the tangential slip.
@@ -296,10 +294,10 @@ void ContactManager::placeObstacles(const Vector& u, double t) {
 void ContactManager::initialize(const Vector& u) {
   const std::vector<double> g = gaps(u);
   for (size_t s = 0; s < g.size(); ++s) {
-    lambda_[s] = 0.0;
-    status_[s] = method_->isActive(g[s], 0.0, false);
+    set_.lambda[s] = 0.0;
+    set_.status[s] = method_->isActive(g[s], 0.0, false);
   }
-  ++version_;
+  ++set_.version;
   save();
 }
 
@@ -308,16 +306,16 @@ StatusUpdate ContactManager::updateStatus(const Vector& u) {
   StatusUpdate up;
   int changedLocal = 0;
   for (size_t s = 0; s < g.size(); ++s) {
-    const bool now = method_->isActive(g[s], lambda_[s], status_[s]);
-    if (now != bool(status_[s])) {
+    const bool now = method_->isActive(g[s], set_.lambda[s], set_.status[s]);
+    if (now != bool(set_.status[s])) {
       changedLocal = 1;
       (now ? up.entered : up.left)++;
       const std::string name = "pair '" + pairs_[constraints_[s].geometry.pair].name + "'";
       if (up.where.find(name) == std::string::npos)
         up.where += (up.where.empty() ? "" : ", ") + name + " (node " +
                     std::to_string(constraints_[s].geometry.slaveNode + 1) + ")";
-      status_[s] = now;
-      if (!now) lambda_[s] = 0.0;
+      set_.status[s] = now;
+      if (!now) set_.lambda[s] = 0.0;
     }
   }
   // Every rank computed the same statuses from the same gaps; agree anyway.
@@ -325,47 +323,36 @@ StatusUpdate ContactManager::updateStatus(const Vector& u) {
   Teuchos::reduceAll<int, int>(*map_->getComm(), Teuchos::REDUCE_MAX, changedLocal,
                                Teuchos::outArg(changed));
   up.changed = changed != 0;
-  if (up.changed) ++version_;
+  if (up.changed) ++set_.version;
   up.active = activeCount();
   return up;
 }
 
 void ContactManager::archive(StateArchive& a) const {
-  a.putVector("contact/status", savedStatus_);
-  a.putVector("contact/pressure", savedLambda_);
-  a.putDouble("contact/scale", scale_);
+  set_.archive(a);
   if (followed_) a.putVector("contact/slip", slip_);
   if (followed_) archivePairing(a);
   archiveFriction(a);
 }
 
 void ContactManager::unarchive(const StateArchive& a) {
-  status_ = a.getVector<char>("contact/status", constraints_.size());
-  lambda_ = a.getVector<double>("contact/pressure", constraints_.size());
-  scale_ = a.getDouble("contact/scale");
+  set_.unarchive(a, constraints_.size());
   if (followed_) slip_ = a.getVector<double>("contact/slip", constraints_.size());
   if (followed_) unarchivePairing(a);
   unarchiveFriction(a);
-  ++version_;
+  ++set_.version;
   save();
 }
 
-void ContactManager::save() {
-  savedStatus_ = status_;
-  savedLambda_ = lambda_;
-}
+void ContactManager::save() { set_.save(); }
 
-void ContactManager::restore() {
-  if (status_ != savedStatus_) ++version_;
-  status_ = savedStatus_;
-  lambda_ = savedLambda_;
-}
+void ContactManager::restore() { set_.restore(); }
 
 std::string ContactManager::activeSummary() const {
   std::vector<int> active(pairs_.size(), 0), all(pairs_.size(), 0);
   for (size_t s = 0; s < constraints_.size(); ++s) {
     ++all[constraints_[s].geometry.pair];
-    active[constraints_[s].geometry.pair] += status_[s] ? 1 : 0;
+    active[constraints_[s].geometry.pair] += set_.status[s] ? 1 : 0;
   }
   std::string out;
   for (size_t p = 0; p < pairs_.size(); ++p)
@@ -374,14 +361,12 @@ std::string ContactManager::activeSummary() const {
   return out;
 }
 
-int ContactManager::activeCount() const {
-  return static_cast<int>(std::count(status_.begin(), status_.end(), 1));
-}
+int ContactManager::activeCount() const { return set_.activeCount(); }
 
 double ContactManager::energy(const Vector& u) const {
   const std::vector<double> g = gaps(u);
   double e = 0.0;
-  for (size_t s = 0; s < g.size(); ++s) e += method_->energy(g[s], lambda_[s], status_[s]);
+  for (size_t s = 0; s < g.size(); ++s) e += method_->energy(g[s], set_.lambda[s], set_.status[s]);
   return e + stickEnergy();
 }
 

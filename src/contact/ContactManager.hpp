@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "contact/ContactActiveSet.hpp"
 #include "contact/ContactMethod.hpp"
 #include "contact/ContactPairing.hpp"
 #include "contact/FollowedSurfaces.hpp"
@@ -161,18 +162,18 @@ class ContactManager {
   void archive(StateArchive& a) const;
   void unarchive(const StateArchive& a);
 
-  const std::vector<char>& status() const { return status_; }
-  const std::vector<double>& pressures() const { return lambda_; }  // lambda_s [N]
+  const std::vector<char>& status() const { return set_.status; }
+  const std::vector<double>& pressures() const { return set_.lambda; }  // lambda_s [N]
   int activeCount() const;
   // Per pair, its slave nodes in contact: "pair 'slide': 28 of 28 nodes in contact, ...".
   std::string activeSummary() const;
   double energy(const Vector& u) const;
-  int statusVersion() const { return version_; }  // bumped whenever a status changes
+  int statusVersion() const { return set_.version; }  // bumped whenever a status changes
 
   // Scale of the multiplier rows (a typical diagonal of the effective matrix), so that the
   // saddle-point system is balanced; set once before the first solve.
-  void setScale(double s) { scale_ = s; }
-  double scale() const { return scale_; }
+  void setScale(double s) { set_.scale = s; }
+  double scale() const { return set_.scale; }
   RCP<const Comm> comm() const { return map_->getComm(); }
 
  private:
@@ -206,11 +207,8 @@ class ContactManager {
   std::vector<ContactConstraint> constraints_;
   std::vector<GO> contactDofs_;                // sorted distinct DOFs of all B_s
   std::vector<std::vector<std::pair<int, double>>> localTerms_;  // index into contactDofs_
-  std::vector<char> status_, savedStatus_;
-  std::vector<double> lambda_, savedLambda_;
-  double scale_ = 1.0;
+  ContactActiveSet set_;  // statuses, pressures, their accepted copies, scale, version
   int unpaired_ = 0;
-  int version_ = 0;
   int geometryVersion_ = 0, topologyVersion_ = 0;
   std::unique_ptr<FollowedSurfaces> followed_;  // null without 'Search' = current pairs
   const DofMap* dofs_ = nullptr;

@@ -50,11 +50,11 @@ void ContactManager::forwardIncrement(const Vector& uStar, const Vector& inverse
   bool changed = false;
   for (size_t s = 0; s < nS; ++s) {
     const char active = lam[s] > 0.0;
-    changed = changed || active != status_[s];
-    status_[s] = active;
-    lambda_[s] = lam[s];
+    changed = changed || active != set_.status[s];
+    set_.status[s] = active;
+    set_.lambda[s] = lam[s];
   }
-  if (changed) ++version_;
+  if (changed) ++set_.version;
   auto ad = a.getDataNonConst();
   auto wd = inverseMass.getData();
   for (size_t s = 0; s < nS; ++s) {

@@ -1,0 +1,25 @@
+#include "contact/ContactActiveSet.hpp"
+
+#include <algorithm>
+
+namespace choc {
+
+int ContactActiveSet::activeCount() const { return static_cast<int>(std::count(status.begin(), status.end(), 1)); }
+
+void ContactActiveSet::applyCorrection(const std::vector<double>& d) {
+  for (size_t s = 0; s < lambda.size(); ++s) lambda[s] += scale * d[s];
+}
+
+void ContactActiveSet::archive(StateArchive& a) const {
+  a.putVector("contact/status", savedStatus);
+  a.putVector("contact/pressure", savedLambda);
+  a.putDouble("contact/scale", scale);
+}
+
+void ContactActiveSet::unarchive(const StateArchive& a, size_t n) {
+  status = a.getVector<char>("contact/status", n);
+  lambda = a.getVector<double>("contact/pressure", n);
+  scale = a.getDouble("contact/scale");
+}
+
+}  // namespace choc

@@ -1,0 +1,40 @@
+// The active-set state of the contact constraints, one layer of contact (beside the geometry:
+// pairing, obstacles, followed surfaces; the constraint rows and gaps; the friction law; the
+// explicit forward increments): per constraint its status (1: in contact) and pressure
+// lambda_s [N, compression positive], the copies of the last accepted step (save at
+// acceptance, restore when a step is cut or fails), the scale of the multiplier rows, and a
+// version bumped whenever a status changes; and its checkpoint records ("contact/status",
+// "contact/pressure", "contact/scale": the accepted state).
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "restart/StateArchive.hpp"
+
+namespace choc {
+
+struct ContactActiveSet {
+  std::vector<char> status, savedStatus;
+  std::vector<double> lambda, savedLambda;
+  double scale = 1.0;
+  int version = 0;
+
+  void save() {
+    savedStatus = status;
+    savedLambda = lambda;
+  }
+  void restore() {
+    if (status != savedStatus) ++version;
+    status = savedStatus;
+    lambda = savedLambda;
+  }
+  int activeCount() const;
+  // lambda += scale * dScaled (the multiplier unknowns are lambda / scale).
+  void applyCorrection(const std::vector<double>& dScaled);
+  void archive(StateArchive& a) const;
+  // The records of n constraints; the caller bumps the version and saves once it has restored
+  // the rest of its state.
+  void unarchive(const StateArchive& a, size_t n);
+};
+
+}  // namespace choc
