@@ -30,7 +30,7 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 
 # The scale benchmark: input/scale-3d.xml (300,300 unknowns) on 1 and 2 MPI ranks, then smaller
-# sizes of the same scene (README "Scale"); generates meshes/scale_3d.exo when missing. Then the
+# sizes of the same scene (docs/performance/scale.md); generates meshes/scale_3d.exo when missing. Then the
 # same input with the linear solver 'auto' (CG + Jacobi, adaptive tolerance). Each as the median
 # of 3 runs per rank count, np = 1 and np = 2 alternating. Every benchmark writes its figures to
 # results/bench/<bench>.json (the performance pages of `make docs`).
@@ -50,7 +50,7 @@ bench-kept: build
 study-friction: build
 	$(PYTHON) tools/study/sdnd100_study.py --build $(BUILD)
 
-# SDNL32 by the modal transient on 4 to 31 modes and by the direct transient (README).
+# SDNL32 by the modal transient on 4 to 31 modes and by the direct transient (docs/verification/modal-and-direct.md).
 study-modal-direct: build
 	$(PYTHON) tools/study/modal_direct_study.py --build $(BUILD)
 
@@ -67,7 +67,7 @@ bench-peer: build
 	@tools/build/install-deps.sh --with-viz --with-peer
 	$(PYTHON) tools/bench/peer_calculix.py --build $(BUILD) $(PEER_ARGS)
 
-# The same 3D scene direct and reduced to 40 modes with shock links (README "Impact statistics").
+# The same 3D scene direct and reduced to 40 modes with shock links (docs/performance/modal-vs-direct.md).
 bench-modal: build
 	$(PYTHON) tools/bench/bench_modal_direct.py --build $(BUILD)
 

@@ -3,7 +3,7 @@
 // twice: y_i += a_ij x_j and y_j += a_ij x_i), plus the entries in the columns of other ranks'
 // unknowns as they are. A product streams about half the bytes of the CRS matrix (8 + 4 bytes
 // per stored entry), which is what bounds it on a machine whose cores share the memory bus.
-// Measured on the 300k-unknown explicit scene (README, "Explicit central differences"): a
+// Measured on the 300k-unknown explicit scene (docs/performance/explicit.md): a
 // sub-step 10 to 6.8 ms on one rank, 6.2 to 3.8 ms on two (np = 2 speed-up 1.45 to 1.78).
 //
 // build() returns null when K is not symmetric within round-off (|a_ij - a_ji| at most 1e-12

@@ -1,5 +1,5 @@
 // The in-memory mesh: what an Exodus II file holds that choc uses.
-// Every rank holds the whole mesh (the benchmark meshes are small; see README "Scale").
+// Every rank holds the whole mesh (the benchmark meshes are small; see docs/performance/scale.md).
 #pragma once
 #include <array>
 #include <string>

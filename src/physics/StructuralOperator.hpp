@@ -46,7 +46,7 @@ class StructuralOperator : public ExplicitOperator {
                                    const Vector& r, Vector& du) override;
   void relaxNextCorrection(double relative) override { nextLooser_ = relative; }
   // With massless DOFs (rows of M that are zero: redistributed contact mass) the initial
-  // acceleration is solved by blocks; see the .cpp. Otherwise the default (W = M).
+  // acceleration is solved by blocks (physics/MasslessInitialAcceleration.hpp). Otherwise the default (W = M).
   CorrectionStatus solveInitialAcceleration(const Vector& u, const Vector& r, Vector& a) override;
   ConstraintUpdate updateConstraints(const Vector& u) override;
   // A linear internal force and constant-in-u loads: linear unless friction (stick and slip
@@ -132,11 +132,6 @@ class StructuralOperator : public ExplicitOperator {
   bool restoreKept_ = false;
   int recordedFactorizations_ = -1;  // the solver's factorisations when kept_.factored was taken
   void restoreKeptFactorization();
-  // solveInitialAcceleration with massless DOFs: its matrix A0 (assembled from its rows) and
-  // its second right-hand side.
-  RCP<CrsMatrix> initialAccelerationMatrix() const;
-  std::vector<std::vector<std::pair<GO, double>>> initialAccelerationRows() const;
-  void masslessRightHandSide(MultiVector& x, MultiVector& b) const;
 };
 
 }  // namespace choc

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Memory bandwidth of this machine with 1 and 2 processes (README "Scale", np = 2 speed-up).
+"""Memory bandwidth of this machine with 1 and 2 processes (docs/performance/scale.md, np = 2 speed-up).
 
 A sparse matrix-vector product streams the matrix from memory: its speed is the memory
 bandwidth, and so is the speed-up of a run made of them. This probe measures the bandwidth of

@@ -80,8 +80,10 @@ def replace_block(text, start_marker, end_marker, new):
 
 
 def penalty_pair(stiffness, name, pair):
-    """A 'Contact' list: one penalty pair NAME whose parameters are the XML lines PAIR."""
-    return f'''      <ParameterList name="Contact">
+    """A 'Contact' list: one penalty pair NAME whose parameters are the XML lines PAIR, with the
+    standard mass (the link's node keeps its mass; the default 'auto' would make it massless)."""
+    return f'''      <Parameter name="Contact Mass" type="string" value="standard"/>
+      <ParameterList name="Contact">
         <Parameter name="Method" type="string" value="Penalty"/>
         <Parameter name="Penalty Stiffness" type="double" value="{stiffness}"/>
         <ParameterList name="Pairs">
