@@ -36,7 +36,12 @@ fi
 stamp "built"
 
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=0"
-export LSAN_OPTIONS="suppressions=$here/lsan.supp:print_suppressions=0"
+# use_tls=0: LeakSanitizer does not scan threads' dynamic TLS for roots. GCC 12's scan crashed
+# ("Tracer caught signal 11", "LeakSanitizer has encountered a fatal error") at the exit of
+# unit_contact, even with no test run, on a DTLS block of an Open MPI component unloaded by
+# MPI_Finalize, depending on the binary's layout. Fewer roots can only report more blocks as
+# leaked, never hide one (src/ has no thread_local); leak_report still fails on any of choc's.
+export LSAN_OPTIONS="suppressions=$here/lsan.supp:print_suppressions=0:use_tls=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export OMPI_MCA_btl="self,vader"  # no network probing under ASan
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
