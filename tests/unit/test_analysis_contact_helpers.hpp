@@ -10,6 +10,7 @@
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Core.hpp>
 
+#include "steel_bars_xml.hpp"
 #include "analysis/AnalysisRegistry.hpp"
 #include "physics/Model.hpp"
 #include "physics/ModelInput.hpp"
@@ -58,16 +59,7 @@ inline std::string deck(const std::string& mesh, const std::string& dirichlet,
   <ParameterList name="Mesh"><Parameter name="File" type="string" value=")" << mesh << R"("/></ParameterList>
   <ParameterList name="Model">
     <Parameter name="Active Components" type="string" value="DZ"/>
-    <ParameterList name="Materials"><ParameterList name="steel">
-      <Parameter name="Young's Modulus" type="double" value="2e11"/>
-      <Parameter name="Poisson's Ratio" type="double" value="0.3"/>
-      <Parameter name="Density" type="double" value="7800"/>
-    </ParameterList></ParameterList>
-    <ParameterList name="Blocks">
-      <ParameterList name="POU1"><Parameter name="Material" type="string" value="steel"/></ParameterList>
-      <ParameterList name="POU2"><Parameter name="Material" type="string" value="steel"/></ParameterList>
-    </ParameterList>
-    <ParameterList name="Dirichlet"><ParameterList name="clamp">
+)" << test::steelBarsMaterialAndBlocksXml() << R"(    <ParameterList name="Dirichlet"><ParameterList name="clamp">
       <Parameter name="Node Set" type="string" value=")" << dirichlet << R"("/>
       <Parameter name="Components" type="string" value="DZ"/>
     </ParameterList></ParameterList>

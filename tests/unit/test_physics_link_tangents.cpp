@@ -26,6 +26,7 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "steel_bars_xml.hpp"
 #include "contact/ShockLaw.hpp"
 #include "fd_tangent.hpp"
 #include "fem/Components.hpp"
@@ -71,16 +72,7 @@ Model& model() {
   <ParameterList name="Model">
     <Parameter name="Active Components" type="string" value="DX DY DZ"/>
     <Parameter name="Partition" type="string" value="numbering"/>
-    <ParameterList name="Materials"><ParameterList name="steel">
-      <Parameter name="Young's Modulus" type="double" value="2e11"/>
-      <Parameter name="Poisson's Ratio" type="double" value="0.3"/>
-      <Parameter name="Density" type="double" value="7800"/>
-    </ParameterList></ParameterList>
-    <ParameterList name="Blocks">
-      <ParameterList name="POU1"><Parameter name="Material" type="string" value="steel"/></ParameterList>
-      <ParameterList name="POU2"><Parameter name="Material" type="string" value="steel"/></ParameterList>
-    </ParameterList>
-  </ParameterList>
+)" << test::steelBarsMaterialAndBlocksXml() << R"(  </ParameterList>
   <ParameterList name="Analyses"/>
 </ParameterList>
 )";
