@@ -52,8 +52,9 @@ def sh_blocks(path):
 
 
 def rewrite(line, choc, private_tmp):
-    line = CHOC_RE.sub(lambda m: shlex.quote(choc), line)
-    return TMP_RE.sub(lambda m: private_tmp, line)
+    # /tmp first: CHOC itself may lie under /tmp (a checkout there) and must stay as it is.
+    line = TMP_RE.sub(lambda m: private_tmp, line)
+    return CHOC_RE.sub(lambda m: shlex.quote(choc), line)
 
 
 def script_for(blocks, choc, private_tmp):
