@@ -1,6 +1,6 @@
 #include "analysis/AnalysisRegistry.hpp"
 
-#include "analysis/ImplicitTransient.hpp"
+#include "analysis/DirectTransient.hpp"
 #include "analysis/ModalAnalysis.hpp"
 #include "analysis/ModalTransient.hpp"
 #include "checks/HistoryCheck.hpp"
@@ -21,8 +21,8 @@ std::unique_ptr<Analysis> make(const std::string& n, const Teuchos::ParameterLis
 const std::vector<AnalysisType>& analysisTypes() {
   static const std::vector<AnalysisType> types = {
       {"Transient", "direct implicit transient: Newmark family (HHT, generalized-alpha), contact",
-       &ImplicitTransient::parameters,
-       &make<ImplicitTransient>},
+       &DirectTransient::parameters,
+       &make<DirectTransient>},
       {"Modal", "natural modes by Anasazi shift-invert (K x = lambda M x)",
        &ModalAnalysis::parameters,
        &make<ModalAnalysis>},

@@ -14,6 +14,7 @@
 #include "physics/ModalProjection.hpp"
 #include "physics/StaticCorrection.hpp"
 #include "restart/StateVectors.hpp"
+#include "timeint/ModalStepper.hpp"
 #include "timeint/TimeGrid.hpp"
 
 namespace choc {
@@ -96,18 +97,9 @@ void ModalTransient::readTimeGrid() {
   s_.dt = params_.get<double>("Time Step");
   if (!(s_.endTime > s_.startTime))
     throwInput(inputFile_, path("End Time"), format("%.6g", s_.endTime), "must exceed the Start Time");
-  // The time grid of both transients (timeint/TimeGrid.hpp): steps of dt, the last one cut to
-  // the end time; a span within 1e-6 of whole steps is whole steps of dt.
-  const double ratio = (s_.endTime - s_.startTime) / s_.dt;
-  checkStepCount(ratio, 1, s_.output.limits, inputFile_, "Analyses/" + name_, s_.dt);
-  const double whole = std::round(ratio);
-  if (whole >= 1 && std::abs(ratio - whole) <= 1e-6 * std::max(1.0, ratio)) {
-    s_.steps = static_cast<long long>(whole);
-    s_.lastStep = s_.dt;
-  } else {
-    s_.steps = static_cast<long long>(nominalSteps(s_.startTime, s_.endTime, s_.dt));
-    s_.lastStep = s_.endTime - s_.startTime - double(s_.steps - 1) * s_.dt;
-  }
+  // The time grid of every transient (timeint/TimeGrid.hpp).
+  checkStepCount((s_.endTime - s_.startTime) / s_.dt, 1, s_.output.limits, inputFile_, "Analyses/" + name_, s_.dt);
+  s_.steps = TimeGrid(s_.startTime, s_.endTime, s_.dt).steps();
 }
 
 void ModalTransient::setup(SetupContext& ctx) {
@@ -174,7 +166,6 @@ void ModalTransient::run(RunContext& ctx) {
   describe(ctx.model, basis, g, links, residuals);
   const int substeps = stepsPerStep(g, links);
   ModalIntegrator integrator(s_.scheme, g.omega2, g.damping, links, s_.refinement);
-  integrator.initialize(state, s_.startTime);
   std::vector<long long> probeDofs;
   for (const auto& p : b_->probes) probeDofs.push_back(p.dof);
   ModalStepView view(state, integrator, links, basis, g.omega2,
@@ -188,11 +179,19 @@ void ModalTransient::run(RunContext& ctx) {
   plan.resume = resume;
   plan.checkpoint = checkpointPlan(ctx);
   const StateVectors vectors(ctx.model.dofs());
-  ModalCheckpoint cp{integrator, state, links, basis, *ctx.model.mass(), vectors};
-  plan.checkpoint.archiveRun = [&](StateArchive& a) { archiveState(cp, a); };
-  const long long first = resume ? resumeState(cp, *resume) + 1 : 1;  // the first step to take
+  const ModalCheckpoint cp{state, links, basis, *ctx.model.mass()};
+  ModalStepper stepper(integrator, state, s_.startTime, substeps,
+                       {[&](const StepInfo& i) {
+                          view.at(i.nominal, i.dt, i.last);
+                          outputs.step(view);
+                        },
+                        [&](double t) { outputs.substep(view, t); },
+                        [&](StateArchive& a, const StateVectors& v) { archiveState(cp, a, v); },
+                        [&](const StateArchive& a, const StateVectors& v) { resumeState(cp, a, v); }});
+  StepLoop loop(stepper, TimeGrid(s_.startTime, s_.endTime, s_.dt));
+  plan.checkpoint.archiveRun = [&](StateArchive& a) { loop.archive(a, vectors); };
   const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model);
-  integrate(integrator, state, view, outputs, substeps, first);
+  integrate(loop, outputs, view, resume, vectors, integrator);
   summarize(ctx.summary, basis, g, links, substeps, integrator.subStepsTaken());
   history.summarize(ctx.summary);
   evaluateChecks(b_->checks, history.history(), ctx.checks);
@@ -226,45 +225,41 @@ std::vector<std::pair<std::string, std::vector<double>*>> modalVectors(ModalStat
 
 }  // namespace
 
-// The integrator's records, the eigenvalues (which tell whether a restart recomputed the same
-// basis) and every modal vector expanded on the basis (physical fields in node order), from
-// which a restart on a basis computed on another number of ranks projects its coordinates.
-void ModalTransient::archiveState(ModalCheckpoint& c, StateArchive& a) const {
-  c.integrator.archive(c.state, a);
+// With the integrator's records (ModalStepper), the eigenvalues (which tell whether a restart
+// recomputed the same basis) and every modal vector expanded on the basis (physical fields in
+// node order), from which a restart on a basis computed on another number of ranks projects
+// its coordinates.
+void ModalTransient::archiveState(const ModalCheckpoint& c, StateArchive& a, const StateVectors& vectors) const {
   a.putVector("modal/eigenvalues", c.basis.eigenvalues);
   std::vector<double> cf = c.links.constraintForce() ? *c.links.constraintForce() : std::vector<double>();
   Vector x(c.mass.getRowMap());
   for (auto& [name, vec] : modalVectors(c.state, c.links.constraintForce() ? &cf : nullptr)) {
     expandOnBasis(*c.basis.vectors, *vec, x);
-    c.vectors.put(a, "modal/physical/" + name, x);
+    vectors.put(a, "modal/physical/" + name, x);
   }
 }
 
-// Restores the state; returns the step of the checkpoint.
-long long ModalTransient::resumeState(ModalCheckpoint& c, const StateArchive& a) const {
-  c.integrator.unarchive(c.state, a);
+// After the integrator's records are restored (ModalStepper): on another basis, the state
+// projected on this one.
+void ModalTransient::resumeState(const ModalCheckpoint& c, const StateArchive& a, const StateVectors& vectors) const {
   const std::vector<double> was = a.getVector<double>("modal/eigenvalues");
-  if (was != c.basis.eigenvalues) {
-    // Another basis of (nearly) the same space: q' = Phi'^T M (Phi q) for every modal vector.
-    double change = 0.0, largest = 0.0;
-    for (size_t k = 0; k < was.size() && k < c.basis.eigenvalues.size(); ++k) {
-      change = std::max(change, std::abs(was[k] - c.basis.eigenvalues[k]));
-      largest = std::max(largest, std::abs(was[k]));
-    }
-    change /= std::max(largest, 1e-300);
-    std::vector<double> cf;
-    Vector x(c.mass.getRowMap());
-    for (auto& [name, vec] : modalVectors(c.state, c.links.constraintForce() ? &cf : nullptr)) {
-      c.vectors.get(a, "modal/physical/" + name, x);
-      *vec = projectOnBasis(*c.basis.vectors, c.mass, x, "mass-weighted");
-    }
-    if (c.links.constraintForce()) c.links.setConstraintForce(cf);
-    log() << format("  the modal basis differs from the checkpoint's (eigenvalues changed by up to "
-                    "%.2e of the largest): the state is projected on this one\n", change);
+  if (was == c.basis.eigenvalues) return;
+  // Another basis of (nearly) the same space: q' = Phi'^T M (Phi q) for every modal vector.
+  double change = 0.0, largest = 0.0;
+  for (size_t k = 0; k < was.size() && k < c.basis.eigenvalues.size(); ++k) {
+    change = std::max(change, std::abs(was[k] - c.basis.eigenvalues[k]));
+    largest = std::max(largest, std::abs(was[k]));
   }
-  const long long step = a.getInt("point/nominal");
-  log() << format("  continuing from the checkpoint at t = %.6e s (step %lld)\n", c.state.t, step);
-  return step;
+  change /= std::max(largest, 1e-300);
+  std::vector<double> cf;
+  Vector x(c.mass.getRowMap());
+  for (auto& [name, vec] : modalVectors(c.state, c.links.constraintForce() ? &cf : nullptr)) {
+    vectors.get(a, "modal/physical/" + name, x);
+    *vec = projectOnBasis(*c.basis.vectors, c.mass, x, "mass-weighted");
+  }
+  if (c.links.constraintForce()) c.links.setConstraintForce(cf);
+  log() << format("  the modal basis differs from the checkpoint's (eigenvalues changed by up to "
+                  "%.2e of the largest): the state is projected on this one\n", change);
 }
 
 ModalTransient::Generalized ModalTransient::generalizedSystem(const ModalBasis& basis) const {
@@ -328,28 +323,24 @@ int ModalTransient::stepsPerStep(const Generalized& g, const ModalLinks& links) 
   return d.substeps;
 }
 
-void ModalTransient::integrate(ModalIntegrator& integrator, ModalState& state, ModalStepView& view,
-                               ObserverSet& outputs, int substeps, long long first) const {
+void ModalTransient::integrate(StepLoop& loop, ObserverSet& outputs, TransientView& view,
+                               const StateArchive* resume, const StateVectors& vectors,
+                               const ModalIntegrator& integrator) const {
+  if (resume)
+    log() << format("  continuing from the checkpoint at t = %.6e s (step %lld)\n",
+                    resume->getDouble("driver/time"), resume->getInt("driver/nominal"));
   const auto start = std::chrono::steady_clock::now();
+  const StateArchive none;
+  const StepLoop::Resume from{resume ? *resume : none, vectors};
+  long long first = 1;
   outputs.run(view, [&] {
-    if (first == 1) {
-      view.at(0, 0.0, false);
-      outputs.step(view);
-    }
-    // Impact statistics take every sub-step's state, not only the step ends.
-    const auto onSubstep = [&](double t) { outputs.substep(view, t); };
-    for (long long n = first; n <= s_.steps; ++n) {
-      const bool last = n == s_.steps, cut = last && s_.lastStep != s_.dt;
-      integrator.advance(state, cut ? s_.lastStep : s_.dt, substeps, onSubstep);
-      state.t = cut ? s_.endTime : s_.startTime + n * s_.dt;
-      view.at(n, cut ? s_.lastStep : s_.dt, last);
-      outputs.step(view);
-    }
+    first = resume ? resume->getInt("driver/nominal") + 1 : 1;
+    loop.run(resume ? &from : nullptr);
   });
-  const double loop = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const long long taken = s_.steps - first + 1;
   log() << format("  %lld steps, %lld sub-steps in %.4f s (%.2f us per step, output included)\n",
-                  taken, integrator.subStepsTaken(), loop, 1e6 * loop / std::max(1LL, taken));
+                  taken, integrator.subStepsTaken(), seconds, 1e6 * seconds / std::max(1LL, taken));
 }
 
 }  // namespace choc

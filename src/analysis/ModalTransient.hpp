@@ -12,6 +12,7 @@
 #include "physics/InitialConditions.hpp"
 #include "restart/StateVectors.hpp"
 #include "timeint/StabilityPolicy.hpp"
+#include "timeint/StepLoop.hpp"
 
 namespace choc {
 
@@ -31,8 +32,7 @@ class ModalTransient : public Analysis {
     double damping = 0, rigidFrequency = 0;
     std::vector<double> dampingList;  // empty: 'Modal Damping' for every mode
     double startTime = 0, endTime = 0, dt = 0;
-    double lastStep = 0;  // dt, or the last step cut to End Time
-    long long steps = 0;
+    long long steps = 0;  // of the time grid
     ModalScheme scheme = ModalScheme::SymplecticEuler;
     int refinement = 1;
     TransientOutputSettings output;
@@ -58,19 +58,17 @@ class ModalTransient : public Analysis {
   int stepsPerStep(const Generalized& g, const ModalLinks& links) const;
   void describe(const Model& model, const ModalBasis& basis, const Generalized& g,
                 const ModalLinks& links, const double residuals[2]) const;
-  // What a checkpoint of the run reads and restores.
+  // What a checkpoint of the run adds to the integrator's records, and restores.
   struct ModalCheckpoint {
-    ModalIntegrator& integrator;
     ModalState& state;
     ModalLinks& links;
     const ModalBasis& basis;
     const CrsMatrix& mass;
-    const StateVectors& vectors;
   };
-  void archiveState(ModalCheckpoint& c, StateArchive& a) const;
-  long long resumeState(ModalCheckpoint& c, const StateArchive& a) const;
-  void integrate(ModalIntegrator& integrator, ModalState& state, ModalStepView& view,
-                 ObserverSet& outputs, int substeps, long long first) const;
+  void archiveState(const ModalCheckpoint& c, StateArchive& a, const StateVectors& vectors) const;
+  void resumeState(const ModalCheckpoint& c, const StateArchive& a, const StateVectors& vectors) const;
+  void integrate(StepLoop& loop, ObserverSet& outputs, TransientView& view, const StateArchive* resume,
+                 const StateVectors& vectors, const ModalIntegrator& integrator) const;
 
   const ModalBasis& basisFor(RunContext& ctx);
 

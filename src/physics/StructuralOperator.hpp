@@ -1,6 +1,6 @@
 // The second-order operator of a structural model (its internal force and tangent: an
 // InternalForce) with Rayleigh damping, nodal loads, contact and shock links: what
-// ImplicitTransient gives its integrator.
+// DirectTransient gives its integrator.
 //   M a + C v + f_int(u) + f_c(u) + f_l(u, v) = f,   C = a_K K0 + a_M M.
 // Newton corrections solve with the effective matrix W = ca M + cv C + cd K_T(u) plus the
 // contact block (ContactSystem) and the links' tangent, factored by the linear solver only when

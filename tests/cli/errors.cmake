@@ -274,6 +274,9 @@ choc_cli_input_error(explicit_continuous check bad_explicit_continuous.xml
   "parameter 'Analyses/impact/Contact/Method' = 'Continuous': has pressure unknowns, which the explicit scheme .central differences. cannot solve for. use Lagrange .forward-increment multipliers. or Penalty with central differences")
 choc_cli_input_error(explicit_time_step check bad_explicit_time_step.xml
   "parameter 'Analyses/impact/Time Step' = '1e-05': 1e-05 s exceeds the stable step of the explicit scheme, 3.9[0-9]*e-06 s .the critical step 3.9[0-9]*e-06 s.. the highest frequency is at most [0-9]+ rad/s")
+# The direct transient's time grid starts at 'Start Time': an end time not after it is refused.
+choc_cli_input_error(transient_start_after_end check bad_transient_start_after_end.xml
+  "parameter 'Analyses/impact/End Time' = '1e-05': does not exceed the Start Time. use an end time after 'Start Time' = 2e-05")
 # Contact friction: a negative Coulomb coefficient or stick stiffness, friction in an
 # explicit run or with CG.
 choc_cli_input_error(contact_negative_friction check bad_contact_negative_friction.xml

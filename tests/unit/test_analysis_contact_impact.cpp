@@ -11,7 +11,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "analysis/ImplicitTransient.hpp"
+#include "analysis/DirectTransient.hpp"
 #include "physics/LinearElasticForce.hpp"
 #include "physics/StructuralOperator.hpp"
 #include "contact/ContactManager.hpp"
@@ -57,7 +57,7 @@ std::string transient(const std::string& name, const std::string& method, const 
 
 struct RunResult {
   HistoryTable h;
-  ImplicitTransient::Figures figures;
+  DirectTransient::Figures figures;
 };
 
 // Runs every analysis of the deck on `comm`; returns the history of `name`.
@@ -71,7 +71,7 @@ RunResult runDeck(const std::string& dir, const std::string& text, const std::st
   RunResult r;
   for (auto& a : analyses) {
     a->run(ctx);
-    if (a->name() == name) r.figures = dynamic_cast<ImplicitTransient&>(*a).figures();
+    if (a->name() == name) r.figures = dynamic_cast<DirectTransient&>(*a).figures();
   }
   comm->barrier();
   r.h = readHistoryCsv(dir + "/" + name + ".history.csv");

@@ -9,7 +9,7 @@
 #include <numeric>
 #include <random>
 
-#include "analysis/ImplicitTransient.hpp"
+#include "analysis/DirectTransient.hpp"
 #include "mesh/ExodusMeshWriter.hpp"
 #include "mesh/ExodusReader.hpp"
 #include "test_analysis_contact_helpers.hpp"

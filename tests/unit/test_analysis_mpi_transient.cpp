@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "analysis/ImplicitTransient.hpp"
+#include "analysis/DirectTransient.hpp"
 #include "test_analysis_contact_helpers.hpp"
 
 namespace choc {

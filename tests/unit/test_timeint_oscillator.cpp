@@ -16,8 +16,8 @@
 #include <Tpetra_Vector.hpp>
 
 #include "core/Errors.hpp"
-#include "timeint/ExplicitDriver.hpp"
-#include "timeint/TransientDriver.hpp"
+#include "timeint/CentralDifferenceStepper.hpp"
+#include "timeint/NewmarkStepper.hpp"
 
 namespace choc {
 namespace {
@@ -69,7 +69,7 @@ Recorder integrate(const NewmarkFamily& s, double omega, double xi, double dt, d
   ts.newton.incrementTolerance = 1e-10;
   Vector u(osc.map()), v(osc.map());
   Oscillator::set(u, 1.0);
-  TransientDriver d(osc, s, ts);
+  NewmarkStepper d(osc, s, ts);
   Recorder rec;
   d.addObserver(&rec);
   d.run(u, v);
@@ -240,7 +240,38 @@ class FailingOscillator : public Oscillator {
   }
 };
 
-TEST(TransientDriver, CutsDtOnFailureAndStopsWhenCutsRunOut) {
+// The grid's start time shifts the run (the oscillator does not depend on t): from u0 = 1 at
+// t0 = 0.5, the state at t0 + s is the state at s of the run from 0, to round-off of the times.
+TEST(NewmarkStepper, AStartTimeShiftsTheRun) {
+  Oscillator a(1.0, 0.1, 40.0), b(1.0, 0.1, 40.0);
+  TransientSettings ts;
+  ts.timeStep = 0.01;
+  ts.endTime = 1.0;
+  ts.newton.residualTolerance = 1e-12;
+  ts.newton.incrementTolerance = 1e-12;
+  Vector u(a.map()), v(a.map()), u2(b.map()), v2(b.map());
+  Oscillator::set(u, 1.0);
+  Oscillator::set(u2, 1.0);
+  NewmarkStepper da(a, NewmarkFamily::hht(-0.1), ts);
+  ts.startTime = 0.5;
+  ts.endTime = 1.5;
+  NewmarkStepper db(b, NewmarkFamily::hht(-0.1), ts);
+  Recorder ra, rb;
+  da.addObserver(&ra);
+  db.addObserver(&rb);
+  da.run(u, v);
+  db.run(u2, v2);
+  ASSERT_EQ(ra.t.size(), 101u);
+  ASSERT_EQ(rb.t.size(), ra.t.size());
+  EXPECT_EQ(rb.t.front(), 0.5);
+  EXPECT_EQ(rb.t.back(), 1.5);
+  for (size_t k = 0; k < ra.t.size(); ++k) {
+    EXPECT_NEAR(rb.t[k] - 0.5, ra.t[k], 1e-12) << k;
+    EXPECT_NEAR(rb.u[k], ra.u[k], 1e-9) << k;
+  }
+}
+
+TEST(NewmarkStepper, CutsDtOnFailureAndStopsWhenCutsRunOut) {
   FailingOscillator osc(1.0, 0.0, 1.0);
   osc.failAbove = 0.03;
   TransientSettings ts;
@@ -249,7 +280,7 @@ TEST(TransientDriver, CutsDtOnFailureAndStopsWhenCutsRunOut) {
   ts.maxCuts = 2;  // 0.1 -> 0.05 -> 0.025 < 0.03: accepted after two cuts
   Vector u(osc.map()), v(osc.map());
   Oscillator::set(u, 1.0);
-  TransientDriver d(osc, NewmarkFamily::averageAcceleration(), ts);
+  NewmarkStepper d(osc, NewmarkFamily::averageAcceleration(), ts);
   Recorder rec;
   d.addObserver(&rec);
   const TransientSummary sum = d.run(u, v);
@@ -260,7 +291,7 @@ TEST(TransientDriver, CutsDtOnFailureAndStopsWhenCutsRunOut) {
 
   FailingOscillator osc2(1.0, 0.0, 1.0);
   osc2.failAbove = 0.01;
-  TransientDriver d2(osc2, NewmarkFamily::averageAcceleration(), ts);
+  NewmarkStepper d2(osc2, NewmarkFamily::averageAcceleration(), ts);
   Recorder rec2;
   d2.addObserver(&rec2);
   Vector u2(osc2.map()), v2(osc2.map());
@@ -283,7 +314,7 @@ TEST(TransientDriver, CutsDtOnFailureAndStopsWhenCutsRunOut) {
 namespace choc {
 namespace {
 
-// Central differences (ExplicitDriver) on the undamped oscillator from u0 = 1 at rest: the
+// Central differences (CentralDifferenceStepper) on the undamped oscillator from u0 = 1 at rest: the
 // discrete solution is u_n = cos(w~ n h) with cos(w~ h) = 1 - (w h)^2 / 2 (the scheme's
 // defining recurrence u_{n+1} - 2 u_n + u_{n-1} = -(w h)^2 u_n, started by
 // u_1 = 1 - (w h)^2 / 2), for any h below 2 / w; above it the state grows without bound and
@@ -297,14 +328,14 @@ Recorder integrateExplicit(double omega, double dt, double end, int substeps) {
   Oscillator::set(u, 1.0);
   auto inverseMass = rcp(new Vector(osc.map()));
   inverseMass->putScalar(1.0);
-  ExplicitDriver d(osc, inverseMass, ts, substeps);
+  CentralDifferenceStepper d(osc, inverseMass, ts, substeps);
   Recorder rec;
   d.addObserver(&rec);
   d.run(u, v);
   return rec;
 }
 
-TEST(ExplicitDriver, CentralDifferencesFollowTheirDiscreteSolution) {
+TEST(CentralDifferenceStepper, CentralDifferencesFollowTheirDiscreteSolution) {
   const double omega = 100.0;
   for (double h : {1e-3, 1e-2, 1.9e-2}) {
     const Recorder r = integrateExplicit(omega, h, 200 * h, 1);
@@ -315,7 +346,7 @@ TEST(ExplicitDriver, CentralDifferencesFollowTheirDiscreteSolution) {
   }
 }
 
-TEST(ExplicitDriver, SubstepsAreStepsOfTheirOwnLength) {
+TEST(CentralDifferenceStepper, SubstepsAreStepsOfTheirOwnLength) {
   // 4 sub-steps of h / 4 reproduce the discrete solution at h / 4, seen every 4th step.
   const double omega = 100.0, h = 1e-2;
   const Recorder r = integrateExplicit(omega, h, 50 * h, 4);
@@ -323,7 +354,7 @@ TEST(ExplicitDriver, SubstepsAreStepsOfTheirOwnLength) {
   for (size_t n = 0; n < r.u.size(); ++n) ASSERT_NEAR(r.u[n], std::cos(wt * r.t[n]), 1e-10);
 }
 
-TEST(ExplicitDriver, AStepAboveTheStabilityLimitStopsTheRun) {
+TEST(CentralDifferenceStepper, AStepAboveTheStabilityLimitStopsTheRun) {
   // h = 2.1 / w: |u| grows by about 2 per step; within 2000 steps it overflows.
   EXPECT_THROW(integrateExplicit(100.0, 2.1e-2, 2000 * 2.1e-2, 1), NumericalError);
 }

@@ -12,6 +12,7 @@
 #include <Teuchos_StackedTimer.hpp>
 
 #include "analysis/Analysis.hpp"
+#include "analysis/ExplicitPlan.hpp"
 #include "checks/HistoryCheck.hpp"
 #include "contact/ContactParameters.hpp"
 #include "observers/Probes.hpp"
@@ -22,13 +23,14 @@
 #include "physics/StructuralOperator.hpp"
 #include "solvers/LinearSolver.hpp"
 #include "timeint/StabilityPolicy.hpp"
-#include "timeint/TransientDriver.hpp"
+#include "timeint/NewmarkFamily.hpp"
+#include "timeint/StructuralStepper.hpp"
 
 namespace choc {
 
-class ImplicitTransient : public Analysis {
+class DirectTransient : public Analysis {
  public:
-  ImplicitTransient(const std::string& name, const Teuchos::ParameterList& params,
+  DirectTransient(const std::string& name, const Teuchos::ParameterList& params,
                     const std::string& inputFile);
   static Teuchos::ParameterList parameters();
   void setup(SetupContext& ctx) override;
@@ -46,7 +48,7 @@ class ImplicitTransient : public Analysis {
  private:
   struct Settings {
     NewmarkFamily scheme = NewmarkFamily::averageAcceleration();
-    bool explicitScheme = false;  // 'central differences': ExplicitDriver, lumped mass
+    bool explicitScheme = false;  // 'central differences': CentralDifferenceStepper, lumped mass
     StabilityCheck stability = StabilityCheck::Refuse;
     TransientSettings time;
     double rayleighK = 0, rayleighM = 0;
@@ -67,14 +69,7 @@ class ImplicitTransient : public Analysis {
     std::vector<std::string> columns;
     std::vector<std::unique_ptr<HistoryCheck>> checks;
     InitialFields init;
-    // Explicit scheme: 1 / M_ii, the bound of the highest frequency, the critical step and the
-    // sub-steps per step.
-    RCP<Vector> inverseMass;
-    RCP<const Vector> massDiagonal;  // the lumped mass's diagonal (explicit runs)
-    FrequencyBound bound;  // the bounds of the highest frequency
-    double criticalStep = 0;
-    int substeps = 1;
-    std::string stabilityWarning;  // 'Stability Check' = warn above the stable step
+    std::unique_ptr<ExplicitPlan> explicitPlan;  // central differences only
   };
   void readScheme();
   void readTimeSettings();
@@ -82,7 +77,7 @@ class ImplicitTransient : public Analysis {
   void buildContact(Model& model);
   void buildSolver();
   void setupExplicit(const Model& model);
-  std::unique_ptr<StepLoop> stepLoop(StructuralOperator& op) const;
+  std::unique_ptr<StructuralStepper> stepper(StructuralOperator& op) const;
   void describe(Model& model, const StructuralOperator& op) const;
   void recordFigures(const TransientSummary& sum, const StructuralOperator& op,
                      const Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start);

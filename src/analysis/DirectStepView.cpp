@@ -1,4 +1,4 @@
-#include "analysis/ImplicitStepView.hpp"
+#include "analysis/DirectStepView.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Vector.hpp>
@@ -8,12 +8,12 @@
 
 namespace choc {
 
-ImplicitStepView::ImplicitStepView(const StructuralOperator& op, ContactReport* contact,
+DirectStepView::DirectStepView(const StructuralOperator& op, ContactReport* contact,
                                    const InteractionOutput* interactions, std::vector<Probe> probes,
                                    ObserverSet& outputs, Teuchos::StackedTimer* timer)
     : op_(op), contact_(contact), interactions_(interactions), probes_(std::move(probes)), outputs_(outputs), timer_(timer), loadWork_(op.loads()) {}
 
-void ImplicitStepView::stepAccepted(const StepInfo& info, const Vector& u, const Vector& v,
+void DirectStepView::stepAccepted(const StepInfo& info, const Vector& u, const Vector& v,
                                     const Vector& a) {
   TimerScope ts(timer_, "Transient: output");
   info_ = info;
@@ -25,13 +25,13 @@ void ImplicitStepView::stepAccepted(const StepInfo& info, const Vector& u, const
   outputs_.step(*this);
 }
 
-void ImplicitStepView::substepTaken(double time, const Vector& u, const Vector& v) {
+void DirectStepView::substepTaken(double time, const Vector& u, const Vector& v) {
   TimerScope ts(timer_, "Transient: output");
   if (contact_) contact_->update(u, v, time);
   outputs_.substep(*this, time);
 }
 
-void ImplicitStepView::differenceMassless(const Vector& u, const Vector& v, const Vector& a) {
+void DirectStepView::differenceMassless(const Vector& u, const Vector& v, const Vector& a) {
   if (op_.masslessDofs() == 0) return;
   if (!vOut_) {
     vOut_ = rcp(new Vector(v, Teuchos::Copy));
@@ -61,7 +61,7 @@ void ImplicitStepView::differenceMassless(const Vector& u, const Vector& v, cons
   a_ = aOut_.get();
 }
 
-void ImplicitStepView::archive(StateArchive& a, const StateVectors& vectors) const {
+void DirectStepView::archive(StateArchive& a, const StateVectors& vectors) const {
   a.putVector("view/integrals", std::vector<double>{dissipated_, lastPower_, obstacleWork_, lastObstaclePower_});
   a.putVector("view/loadWork", loadWork_.state());
   if (uPrev_) {
@@ -70,7 +70,7 @@ void ImplicitStepView::archive(StateArchive& a, const StateVectors& vectors) con
   }
 }
 
-void ImplicitStepView::unarchive(const StateArchive& a, const StateVectors& vectors, RCP<const Map> map) {
+void DirectStepView::unarchive(const StateArchive& a, const StateVectors& vectors, RCP<const Map> map) {
   const std::vector<double> w = a.getVector<double>("view/integrals", 4);
   dissipated_ = w[0];
   lastPower_ = w[1];
@@ -83,7 +83,7 @@ void ImplicitStepView::unarchive(const StateArchive& a, const StateVectors& vect
   vectors.get(a, "view/vPrevious", *vPrev_);
 }
 
-StepPoint ImplicitStepView::point() const {
+StepPoint DirectStepView::point() const {
   StepPoint p;
   p.step = info_.step;
   p.time = info_.time;
@@ -95,7 +95,7 @@ StepPoint ImplicitStepView::point() const {
 }
 
 // Owned values summed across ranks.
-std::vector<double> ImplicitStepView::probeValues() const {
+std::vector<double> DirectStepView::probeValues() const {
   std::vector<double> mine(probes_.size(), 0.0), vals(probes_.size(), 0.0);
   auto map = u_->getMap();
   for (size_t k = 0; k < probes_.size(); ++k) {
@@ -113,7 +113,7 @@ std::vector<double> ImplicitStepView::probeValues() const {
   return vals;
 }
 
-EnergyTerms ImplicitStepView::energies() {
+EnergyTerms DirectStepView::energies() {
   EnergyTerms e;
   e.kinetic = op_.kineticEnergy(*vScheme_);
   e.strain = op_.strainEnergy(*u_);
@@ -134,13 +134,13 @@ EnergyTerms ImplicitStepView::energies() {
   return e;
 }
 
-void ImplicitStepView::fields(Vector& u, Vector& v, Vector& a) const {
+void DirectStepView::fields(Vector& u, Vector& v, Vector& a) const {
   u.assign(*u_);
   v.assign(*v_);
   a.assign(*a_);
 }
 
-std::string ImplicitStepView::stepNote() const {
+std::string DirectStepView::stepNote() const {
   if (info_.step > 0 && info_.newton.activeSetIterations == 0) return "explicit";  // no solve
   return format("Newton %d, active-set passes %d", info_.newton.iterations,
                 info_.newton.activeSetIterations);

@@ -16,15 +16,15 @@
 #include "observers/TransientObserver.hpp"
 #include "physics/StructuralOperator.hpp"
 #include "restart/StateVectors.hpp"
-#include "timeint/TransientDriver.hpp"
+#include "timeint/StructuralStepper.hpp"
 
 namespace choc {
 
-class ImplicitStepView : public TransientView, public StepObserver {
+class DirectStepView : public TransientView, public StepObserver {
  public:
   // contact may be null; interactions: what the output reports (the contact report, the
   // links, both, or null); timer (may be null) times the output under "Transient: output".
-  ImplicitStepView(const StructuralOperator& op, ContactReport* contact,
+  DirectStepView(const StructuralOperator& op, ContactReport* contact,
                    const InteractionOutput* interactions, std::vector<Probe> probes,
                    ObserverSet& outputs, Teuchos::StackedTimer* timer);
 

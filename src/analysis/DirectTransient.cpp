@@ -1,4 +1,4 @@
-#include "analysis/ImplicitTransient.hpp"
+#include "analysis/DirectTransient.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -8,7 +8,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "analysis/ImplicitStepView.hpp"
+#include "analysis/DirectStepView.hpp"
 #include "contact/ContactReport.hpp"
 #include "core/Errors.hpp"
 #include "timeint/TimeGrid.hpp"
@@ -21,7 +21,8 @@
 #include "physics/CriticalStep.hpp"
 #include "physics/LinearElasticForce.hpp"
 #include "solvers/SolverChoice.hpp"
-#include "timeint/ExplicitDriver.hpp"
+#include "timeint/CentralDifferenceStepper.hpp"
+#include "timeint/NewmarkStepper.hpp"
 
 namespace choc {
 
@@ -49,14 +50,14 @@ void declareNewton(ParameterList& nw) {
 
 }  // namespace
 
-Teuchos::ParameterList ImplicitTransient::parameters() {
+Teuchos::ParameterList DirectTransient::parameters() {
   Teuchos::ParameterList p;
   declareRequiredChoice(p, "Type", {"Transient"}, "analysis type");
   std::vector<std::string> schemes = NewmarkFamily::presetNames();
   schemes.push_back("central differences");
   declareChoice(p, "Scheme", "modified average acceleration", schemes,
                 "Newmark-family preset (see src/timeint/NewmarkFamily.hpp), or 'central "
-                "differences': explicit, lumped mass, no linear solve (src/timeint/ExplicitDriver.hpp)");
+                "differences': explicit, lumped mass, no linear solve (src/timeint/CentralDifferenceStepper.hpp)");
   declareStabilityCheck(p);
   declareDouble(p, "Alpha", -0.1,
                 "alpha of 'modified average acceleration' and 'HHT', in [-1/3, 0]: "
@@ -65,6 +66,9 @@ Teuchos::ParameterList ImplicitTransient::parameters() {
   declareDouble(p, "Beta", 0.25, "beta of 'Newmark' (gamma/2 <= beta <= 1)");
   declareDouble(p, "Gamma", 0.5, "gamma of 'Newmark' (>= 1/2)");
   declareRequiredDouble(p, "Time Step", "dt [s]", Range::positive());
+  declareDouble(p, "Start Time", 0.0,
+                "time of the initial state [s] (loads' ramps and obstacles' motions are functions of "
+                "the time itself, from t = 0)", Range::nonNegative());
   declareRequiredDouble(p, "End Time", "end of the run [s]", Range::positive());
   ParameterList& ray = declareSublist(p, "Rayleigh Damping", "C = a K + b M");
   declareDouble(ray, "Stiffness Coefficient", 0.0, "a [s]", Range::nonNegative());
@@ -97,7 +101,7 @@ Teuchos::ParameterList ImplicitTransient::parameters() {
   return p;
 }
 
-ImplicitTransient::ImplicitTransient(const std::string& name, const Teuchos::ParameterList& params,
+DirectTransient::DirectTransient(const std::string& name, const Teuchos::ParameterList& params,
                                      const std::string& inputFile)
     : Analysis(name, params, inputFile) {
   readScheme();
@@ -108,7 +112,7 @@ ImplicitTransient::ImplicitTransient(const std::string& name, const Teuchos::Par
   s_.contact = readContactSettings(params_, inputFile_, "Analyses/" + name_);
   s_.time.newton.maxActiveSetIterations = s_.contact.maxActiveSetIterations;
   s_.output = readTransientOutput(params_);
-  checkStepCount(nominalSteps(0.0, s_.time.endTime, s_.time.timeStep), 1, s_.output.limits, inputFile_,
+  checkStepCount(nominalSteps(s_.time.startTime, s_.time.endTime, s_.time.timeStep), 1, s_.output.limits, inputFile_,
                  "Analyses/" + name_, s_.time.timeStep);
   if (s_.explicitScheme && s_.contact.hasPressureUnknowns())
     throwInput(inputFile_, path("Contact/Method"), s_.contact.methodName(),
@@ -136,7 +140,7 @@ ImplicitTransient::ImplicitTransient(const std::string& name, const Teuchos::Par
                "use Direct, GMRES or MINRES (or the Penalty method with CG)");
 }
 
-void ImplicitTransient::readScheme() {
+void DirectTransient::readScheme() {
   const std::string schemeName = params_.get<std::string>("Scheme");
   s_.stability = stabilityCheckFromName(params_.get<std::string>("Stability Check"));
   if (schemeName == "central differences") {
@@ -154,14 +158,18 @@ void ImplicitTransient::readScheme() {
   }
 }
 
-void ImplicitTransient::readTimeSettings() {
+void DirectTransient::readTimeSettings() {
   TransientSettings& ts = s_.time;
   ts.timeStep = params_.get<double>("Time Step");
+  ts.startTime = params_.get<double>("Start Time");
   ts.endTime = params_.get<double>("End Time");
+  if (!(ts.endTime > ts.startTime))
+    throwInput(inputFile_, path("End Time"), shortNumber(ts.endTime), "does not exceed the Start Time",
+               "use an end time after 'Start Time' = " + shortNumber(ts.startTime));
   ts.label = "analysis '" + name_ + "'";
-  if (ts.timeStep > ts.endTime)
+  if (ts.timeStep > ts.endTime - ts.startTime)
     throwInput(inputFile_, path("Time Step"), shortNumber(ts.timeStep), "longer than the run",
-               "use a time step below 'End Time' = " + shortNumber(ts.endTime));
+               "use a time step at most 'End Time' - 'Start Time' = " + shortNumber(ts.endTime - ts.startTime));
   const ParameterList& nw = params_.sublist("Newton");
   ts.newton.residualTolerance = nw.get<double>("Residual Tolerance");
   ts.newton.incrementTolerance = nw.get<double>("Increment Tolerance");
@@ -175,7 +183,7 @@ void ImplicitTransient::readTimeSettings() {
   ts.cutFactor = params_.sublist("Step Control").get<double>("Cut Factor");
 }
 
-void ImplicitTransient::setup(SetupContext& ctx) {
+void DirectTransient::setup(SetupContext& ctx) {
   Model& model = ctx.model;
   b_ = std::make_unique<Built>();
   b_->K = model.stiffness();
@@ -203,7 +211,7 @@ void ImplicitTransient::setup(SetupContext& ctx) {
   b_->columns = historyColumns(probeColumns, interactionColumns);
   const int dims = static_cast<int>(spatialComponents(model.mesh().dimension).size());
   const int contactFields = b_->contact ? static_cast<int>(ContactReport(*b_->contact, 0).nodalFieldNames().size()) : 0;
-  checkOutputSize({nominalSteps(0.0, s_.time.endTime, s_.time.timeStep), int(b_->columns.size()),
+  checkOutputSize({nominalSteps(s_.time.startTime, s_.time.endTime, s_.time.timeStep), int(b_->columns.size()),
                    s_.output.exodusInterval, model.mesh().numNodes(), 3 * dims + contactFields},
                   s_.output.limits, inputFile_, "Analyses/" + name_);
   b_->checks = makeChecks(params_, model, name_);
@@ -212,7 +220,7 @@ void ImplicitTransient::setup(SetupContext& ctx) {
 }
 
 // Nodal forces and pressures, each a load group (null when there are none).
-std::shared_ptr<const Loads> ImplicitTransient::assembleLoads(const Model& model) const {
+std::shared_ptr<const Loads> DirectTransient::assembleLoads(const Model& model) const {
   auto loads = std::make_shared<Loads>();
   const ParameterList& nf = params_.sublist("Nodal Forces");
   for (auto it = nf.begin(); it != nf.end(); ++it) {
@@ -252,7 +260,7 @@ std::shared_ptr<const Loads> ImplicitTransient::assembleLoads(const Model& model
 }
 
 // The contact pairs, and the mass with the contact surfaces massless when redistributed.
-void ImplicitTransient::buildContact(Model& model) {
+void DirectTransient::buildContact(Model& model) {
   b_->contact = makeContactManager(s_.contact, model.mesh(), model.dofs(), model.map(), inputFile_,
                                    model.kinematics() == Kinematics::Axisymmetric);
   if (!s_.contact.redistributeMass) return;
@@ -268,41 +276,16 @@ void ImplicitTransient::buildContact(Model& model) {
 }
 
 // Central differences: the lumped mass's inverse and the critical step, refused or sub-stepped.
-void ImplicitTransient::setupExplicit(const Model& model) {
-  RCP<Vector> m = lumpedMassDiagonal(*b_->M);
-  if (m.is_null())
-    throwInput(inputFile_, path("Scheme"), "central differences",
-               "needs a diagonal mass with every entry positive",
-               "set 'Mass' = 'lumped' in every block of Model/Blocks and 'Contact Mass' = 'standard'");
-  b_->massDiagonal = m;
-  b_->inverseMass = rcp(new Vector(m->getMap()));
-  b_->inverseMass->reciprocal(*m);
-  const double k = b_->contact ? b_->contact->method().stiffness() : 0.0;
+void DirectTransient::setupExplicit(const Model& model) {
   // The element bound holds for the mesh's own lumped mass (not for a redistributed one).
   const double meshBound = b_->masslessNodes == 0 ? model.eigenvalueBound()
                                                   : std::numeric_limits<double>::infinity();
-  b_->bound = omegaMaxBound(*b_->K, *m, b_->contact.get(), k, b_->links.get(), meshBound);
-  const double w = b_->bound.omegaMax;
-  const double xi = w > 0 ? 0.5 * (s_.rayleighK * w + s_.rayleighM / w) : 0.0;
-  b_->criticalStep = explicitCriticalStep(w, xi);
-  // Penalty contact and links switch on and off (timeint/StabilityPolicy.hpp).
-  const Switching switching = b_->contact && b_->contact->method().stiffness() > 0 ? Switching::PenaltyContact
-                              : b_->links                                          ? Switching::PenaltyLinks
-                                                                                   : Switching::None;
-  const double dt = s_.time.timeStep;
-  const StabilityDecision d = decideStability(dt, b_->criticalStep, switching, s_.stability);
-  if (d.refused)
-    throwInput(inputFile_, path("Time Step"), shortNumber(dt),
-               d.reason + "; the highest frequency is at most " + shortNumber(b_->bound.omegaMax) +
-                   " rad/s with the mesh, penalty contact and links",
-               "use a time step at most " + shortNumber(d.stableStep) + " s, or set 'Stability Check' to 'substep'");
-  if (d.warned) b_->stabilityWarning = d.reason;
-  checkStepCount(nominalSteps(0.0, s_.time.endTime, dt), d.substeps, s_.output.limits, inputFile_,
-                 "Analyses/" + name_, dt);
-  b_->substeps = d.substeps;
+  b_->explicitPlan = std::make_unique<ExplicitPlan>(planExplicit(
+      {*b_->K, *b_->M, b_->contact.get(), b_->links.get(), meshBound, s_.rayleighK, s_.rayleighM,
+       s_.time.timeStep, s_.time.endTime - s_.time.startTime, s_.stability, s_.output.limits, inputFile_, "Analyses/" + name_}));
 }
 
-void ImplicitTransient::buildSolver() {
+void DirectTransient::buildSolver() {
   Teuchos::ParameterList lp = params_.sublist("Linear Solver");
   if (lp.get<std::string>("Method") == "auto" && !s_.explicitScheme) {
     SolverRegime r;
@@ -331,17 +314,18 @@ void ImplicitTransient::buildSolver() {
   }
 }
 
-// The step loop of the scheme: Newmark family (Newton) or central differences (explicit).
-std::unique_ptr<StepLoop> ImplicitTransient::stepLoop(StructuralOperator& op) const {
+// The stepper of the scheme: Newmark family (Newton) or central differences (explicit).
+std::unique_ptr<StructuralStepper> DirectTransient::stepper(StructuralOperator& op) const {
   if (s_.explicitScheme) {
     op.storeStiffnessSymmetrically();  // one product with K per sub-step is the run's cost
-    op.useDiagonalMass(b_->massDiagonal);
-    return std::make_unique<ExplicitDriver>(op, b_->inverseMass, s_.time, b_->substeps);
+    op.useDiagonalMass(b_->explicitPlan->massDiagonal);
+    return std::make_unique<CentralDifferenceStepper>(op, b_->explicitPlan->inverseMass, s_.time,
+                                                      b_->explicitPlan->substeps);
   }
-  return std::make_unique<TransientDriver>(op, s_.scheme, s_.time);
+  return std::make_unique<NewmarkStepper>(op, s_.scheme, s_.time);
 }
 
-void ImplicitTransient::run(RunContext& ctx) {
+void DirectTransient::run(RunContext& ctx) {
   const auto wallStart = std::chrono::steady_clock::now();
   auto timer = rcp(new Teuchos::StackedTimer(("Transient '" + name_ + "'").c_str()));
   StructuralOperator op(std::make_shared<LinearElasticForce>(b_->K), b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->contact.get(),
@@ -353,16 +337,18 @@ void ImplicitTransient::run(RunContext& ctx) {
   std::unique_ptr<ContactReport> report;
   if (b_->contact) report = std::make_unique<ContactReport>(*b_->contact, ctx.model.mesh().numNodes());
   const InteractionList interactions({report.get(), b_->links.get()});
-  ImplicitStepView view(op, report.get(), interactions.simplest(), b_->probes, outputs, timer.get());
-  std::unique_ptr<StepLoop> driver = stepLoop(op);
-  driver->addObserver(&view);
+  DirectStepView view(op, report.get(), interactions.simplest(), b_->probes, outputs, timer.get());
+  std::unique_ptr<StructuralStepper> scheme = stepper(op);
+  scheme->addObserver(&view);
+  scheme->setInitialState(*b_->init.displacement, *b_->init.velocity);
+  StepLoop loop(*scheme, TimeGrid(s_.time.startTime, s_.time.endTime, s_.time.timeStep));
   const StateVectors vectors(ctx.model.dofs());
   OutputPlan plan{"transient '" + name_ + "'", ctx.outputDir + "/" + name_, b_->columns,
-                  0.0, s_.time.endTime, 1};
+                  s_.time.startTime, s_.time.endTime, 1};
   plan.resume = resume;
   plan.checkpoint = checkpointPlan(ctx);
   plan.checkpoint.archiveRun = [&](StateArchive& a) {
-    driver->archive(a, vectors);
+    loop.archive(a, vectors);
     view.archive(a, vectors);
   };
   const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model);
@@ -375,14 +361,14 @@ void ImplicitTransient::run(RunContext& ctx) {
   const StepLoop::Resume from{resume ? *resume : none, vectors};
   TransientSummary sum;
   outputs.run(view, [&] {
-    sum = driver->run(*b_->init.displacement, *b_->init.velocity, resume ? &from : nullptr);
+    sum = loop.run(resume ? &from : nullptr);
   });
   timer->stopBaseTimer();
   reportRun(ctx, sum, op, *timer, wallStart, history);
 }
 
 // The figures of the run: recorded, logged, summarised (<name>.summary.json); then the checks.
-void ImplicitTransient::reportRun(RunContext& ctx, const TransientSummary& sum, const StructuralOperator& op,
+void DirectTransient::reportRun(RunContext& ctx, const TransientSummary& sum, const StructuralOperator& op,
                                Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start,
                                const HistoryObserver& history) {
   recordFigures(sum, op, timer, start);
@@ -393,7 +379,7 @@ void ImplicitTransient::reportRun(RunContext& ctx, const TransientSummary& sum, 
   if (history.balance().failed()) ctx.checks.push_back(history.balance().checkResult(name_));
 }
 
-void ImplicitTransient::summarize(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
+void DirectTransient::summarize(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
                                   const Comm& comm) const {
   s.set("scheme", s_.explicitScheme ? std::string("central differences") : s_.scheme.name());
   s.set("time_step", s_.time.timeStep);
@@ -401,12 +387,12 @@ void ImplicitTransient::summarize(RunSummary& s, const TransientSummary& sum, co
   s.set("steps", sum.steps);
   s.set("smallest_step", sum.smallestStep);
   if (s_.explicitScheme) {
-    s.set("substeps_per_step", b_->substeps);
-    s.set("substep", s_.time.timeStep / b_->substeps);
-    s.set("critical_step", b_->criticalStep);
-    s.set("frequency_bound/omega_max", b_->bound.omegaMax);
-    s.set("frequency_bound/element", b_->bound.element);
-    s.set("frequency_bound/gershgorin", b_->bound.gershgorin);
+    s.set("substeps_per_step", b_->explicitPlan->substeps);
+    s.set("substep", s_.time.timeStep / b_->explicitPlan->substeps);
+    s.set("critical_step", b_->explicitPlan->criticalStep);
+    s.set("frequency_bound/omega_max", b_->explicitPlan->bound.omegaMax);
+    s.set("frequency_bound/element", b_->explicitPlan->bound.element);
+    s.set("frequency_bound/gershgorin", b_->explicitPlan->bound.gershgorin);
   } else {
     s.set("newton/iterations", sum.newtonIterations);
     s.set("newton/max_per_step", sum.maxNewtonPerStep);
@@ -436,7 +422,7 @@ void ImplicitTransient::summarize(RunSummary& s, const TransientSummary& sum, co
   }
 }
 
-void ImplicitTransient::describe(Model& model, const StructuralOperator& op) const {
+void DirectTransient::describe(Model& model, const StructuralOperator& op) const {
   const ContactManager* contact = b_->contact.get();
   log() << "  " << model.dofs().numGlobal() << " unknowns"
         << (contact && contact->method().hasMultipliers()
@@ -449,10 +435,13 @@ void ImplicitTransient::describe(Model& model, const StructuralOperator& op) con
     log() << format("  critical step %.4e s (highest frequency at most %.4e rad/s: mesh, penalty contact, "
                     "links; element bound %.4e, Gershgorin's %.4e); dt = %.4e s: %d sub-step(s) per "
                     "step\n",
-                    b_->criticalStep, b_->bound.omegaMax, b_->bound.element, b_->bound.gershgorin,
-                    s_.time.timeStep, b_->substeps);
-  if (!b_->stabilityWarning.empty()) log() << "  warning: " << b_->stabilityWarning << "\n";
-  log() << "  dt = " << s_.time.timeStep << " s to " << s_.time.endTime << " s; Rayleigh C = "
+                    b_->explicitPlan->criticalStep, b_->explicitPlan->bound.omegaMax, b_->explicitPlan->bound.element, b_->explicitPlan->bound.gershgorin,
+                    s_.time.timeStep, b_->explicitPlan->substeps);
+  if (b_->explicitPlan && !b_->explicitPlan->stabilityWarning.empty())
+    log() << "  warning: " << b_->explicitPlan->stabilityWarning << "\n";
+  log() << "  dt = " << s_.time.timeStep << " s"
+        << (s_.time.startTime != 0 ? " from " + shortNumber(s_.time.startTime) + " s" : std::string()) << " to "
+        << s_.time.endTime << " s; Rayleigh C = "
         << s_.rayleighK << " K + " << s_.rayleighM << " M; "
         << (s_.explicitScheme ? std::string("no linear solve") : "linear solver " + op.solver().description())
         << (s_.explicitScheme || b_->solverChoice.empty() ? std::string() : " (" + b_->solverChoice + ")")
@@ -491,7 +480,7 @@ void ImplicitTransient::describe(Model& model, const StructuralOperator& op) con
   }
 }
 
-void ImplicitTransient::recordFigures(const TransientSummary& sum, const StructuralOperator& op,
+void DirectTransient::recordFigures(const TransientSummary& sum, const StructuralOperator& op,
                                       const Teuchos::StackedTimer& timer,
                                       std::chrono::steady_clock::time_point start) {
   figures_.steps = sum.steps;
@@ -510,15 +499,15 @@ void ImplicitTransient::recordFigures(const TransientSummary& sum, const Structu
   figures_.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void ImplicitTransient::logFigures(const TransientSummary& sum, const Model& model,
+void DirectTransient::logFigures(const TransientSummary& sum, const Model& model,
                                    Teuchos::StackedTimer& timer) const {
   const Figures& f = figures_;
   if (s_.explicitScheme) {
-    const double each = s_.time.timeStep / b_->substeps;  // the last step may be cut to End Time
+    const double each = s_.time.timeStep / b_->explicitPlan->substeps;  // the last step may be cut to End Time
     const std::string last = sum.smallestStep < each * (1 - 1e-9)
                                  ? format("; the last step's %.3e s", sum.smallestStep) : std::string();
     log() << format("  %d steps of %d sub-step(s) (%.3e s each%s), no linear solve\n", sum.steps,
-                    b_->substeps, each, last.c_str());
+                    b_->explicitPlan->substeps, each, last.c_str());
   }
   else
     log() << format("  %d steps, %d Newton iterations (%.2f per step, at most %d), %d active-set "

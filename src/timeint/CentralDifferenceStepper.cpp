@@ -1,0 +1,81 @@
+#include "timeint/CentralDifferenceStepper.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include <Tpetra_Vector.hpp>
+
+#include "core/Errors.hpp"
+
+namespace choc {
+
+CentralDifferenceStepper::CentralDifferenceStepper(ExplicitOperator& op, RCP<const Vector> inverseMass,
+                                                   TransientSettings settings, int substeps)
+    : StructuralStepper(op, std::move(settings)), xop_(op), inverseMass_(std::move(inverseMass)),
+      substeps_(substeps < 1 ? 1 : substeps) {
+  auto map = op_.map();
+  for (RCP<Vector>* v : {&vHalf_, &r_, &uStar_}) *v = rcp(new Vector(map));
+}
+
+void CentralDifferenceStepper::acceleration(const Vector& u, const Vector& vStar, double t, double dt,
+                                            Vector& a, double h, double factor) {
+  op_.acceptStep(u);  // the previous sub-step ended at u
+  op_.beginStep(u, t, dt);
+  op_.updateConstraints(u);  // penalty status at u (the only constraints an explicit step takes)
+  op_.applyForces(u, vStar, t, *r_);
+  op_.addConstraintForces(u, vStar, *r_);  // adds into r: no vector of its own to clear and add
+  a.elementWiseMultiply(-1.0, *inverseMass_, *r_, 0.0);
+  if (xop_.hasExplicitContact()) {
+    uStar_->update(1.0, u, h, vStar, 0.0);
+    uStar_->update(factor * h * h, a, 1.0);
+    xop_.addExplicitContact(*uStar_, *inverseMass_, factor * h * h, a);
+  }
+  op_.saveState();  // the links' state advances with the step
+}
+
+// The initial state's acceleration (with the contact increments of the first sub-step).
+void CentralDifferenceStepper::start(double t0, double firstStep, TransientSummary& sum, StepInfo& info) {
+  sum.smallestStep = s_.timeStep / substeps_;
+  op_.beginStep(*u_, t0, 0.0);
+  op_.initializeConstraints(*u_);
+  acceleration(*u_, *v_, t0, 0.0, *a_, firstStep / substeps_, 0.5);
+  info.substep = firstStep / substeps_;
+}
+
+// Velocity Verlet (central differences with integer-step velocities): any step length. The
+// sub-steps of length h from t up to target; the observers see each but the last as a
+// sub-step.
+void CentralDifferenceStepper::takeSubsteps(double t, double target, double h) {
+  for (int k = 0; k < substeps_; ++k) {
+    vHalf_->update(1.0, *v_, 0.5 * h, *a_, 0.0);
+    u_->update(h, *vHalf_, 1.0);
+    t = k + 1 == substeps_ ? target : t + h;
+    xop_.keepProducts(k + 1 == substeps_);  // the step's end state: the energies follow
+    acceleration(*u_, *vHalf_, t, h, *a_, h, 1.0);
+    v_->update(1.0, *vHalf_, 0.5 * h, *a_, 0.0);
+    if (k + 1 < substeps_) notifySubstep(t);
+  }
+}
+
+void CentralDifferenceStepper::requireFiniteState(double t, long long n) const {
+  const double size = u_->normInf() + v_->normInf() + a_->normInf();  // collective
+  if (std::isfinite(size)) return;
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "the state is not finite at t = %.6e s (step %lld): ", t, n);
+  throw NumericalError(s_.label + ": " + buf +
+                       "the time step exceeds the stability limit of central differences "
+                       "(lower 'Time Step' or set 'Stability Check' = 'substep')");
+}
+
+Advance CentralDifferenceStepper::advance(const NominalStep& s, StepControl& /*c*/, TransientSummary& /*sum*/) {
+  const double h = (s.target - s.t) / substeps_;
+  takeSubsteps(s.t, s.target, h);
+  requireFiniteState(s.target, s.n);
+  Advance a;
+  a.time = s.target;
+  a.dt = s.target - s.t;
+  a.substep = h;
+  return a;
+}
+
+}  // namespace choc

@@ -1,0 +1,165 @@
+#include "timeint/NewmarkStepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <Tpetra_Vector.hpp>
+
+#include "core/Errors.hpp"
+
+namespace choc {
+
+NewmarkStepper::NewmarkStepper(SecondOrderOperator& op, NewmarkFamily scheme, TransientSettings settings)
+    : StructuralStepper(op, std::move(settings)), scheme_(std::move(scheme)) {
+  auto map = op_.map();
+  for (RCP<Vector>* v : {&Ma0_, &F0_, &Ma1_, &F1_, &u1_, &v1_, &a1_, &uTilde_, &vTilde_, &inertia_, &forces_,
+                         &fc_, &change_})
+    *v = rcp(new Vector(map));
+}
+
+NewtonOutcome NewmarkStepper::attempt(double t, double dt) {
+  const double beta = scheme_.beta(), gamma = scheme_.gamma();
+  const double af = scheme_.alphaF(), am = scheme_.alphaM();
+  const double t1 = t + dt;
+  op_.beginStep(*u_, t1, dt);
+  // Predictors: u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n, v~ = v_n + dt (1 - gamma) a_n.
+  uTilde_->update(1.0, *u_, dt, *v_, 0.0);
+  uTilde_->update(dt * dt * (0.5 - beta), *a_, 1.0);
+  vTilde_->update(1.0, *v_, dt * (1 - gamma), *a_, 0.0);
+  // Start Newton from a_{n+1} = a_n.
+  u1_->update(1.0, *uTilde_, beta * dt * dt, *a_, 0.0);
+  const EffectiveCoefficients c = scheme_.effectiveCoefficients(dt);
+  op_.applyMass(*u1_, *inertia_);
+  // Round-off floor of the residual: the largest terms it sums, ||c_a M u_{n+1}|| and, for a
+  // body carried far by a rigid motion (whose elastic force K u cancels terms of size |K||u|),
+  // || |K| |u_{n+1}| ||.
+  const double roundoff = std::max(c.ca * inertia_->norm2(), op_.elasticTermsNorm(*u1_));
+  auto residual = [&](const Vector& u, Vector& r) {
+    a1_->update(1.0 / (beta * dt * dt), u, -1.0 / (beta * dt * dt), *uTilde_, 0.0);
+    v1_->update(1.0, *vTilde_, gamma * dt, *a1_, 0.0);
+    // The unweighted M a_{n+1} and F_{n+1} are kept: the last residual of a converged step is
+    // evaluated at its u_{n+1}, so they become the next step's M a_n and F_n unrecomputed.
+    op_.applyMass(*a1_, *inertia_);
+    if (am != 0.0) {
+      Ma1_->assign(*inertia_);
+      inertia_->update(am, *Ma0_, 1 - am);
+    }
+    op_.applyForces(u, *v1_, t1, *forces_);
+    if (af != 0.0) {
+      F1_->assign(*forces_);
+      forces_->update(af, *F0_, 1 - af);
+    }
+    fc_->putScalar(0.0);
+    const double cons = op_.addConstraintForces(u, *v1_, *fc_);
+    ResidualNorms n;
+    n.reference = std::max({inertia_->norm2(), forces_->norm2(), fc_->norm2()});
+    r.update(1.0, *inertia_, 1.0, *forces_, 0.0);
+    r.update(1.0, *fc_, 1.0);
+    const double rn = r.norm2();
+    n.residual = std::sqrt(rn * rn + cons * cons);
+    n.constraintResidual = cons;
+    n.roundoff = roundoff;
+    change_->update(1.0, u, -1.0, *u_, 0.0);
+    n.incrementScale = change_->norm2();
+    n.solutionNorm = u.norm2();
+    return n;
+  };
+  NewtonOutcome out = solveNewtonActiveSet(op_, c, residual,
+                                           *u1_, s_.newton);
+  if (out.converged) {  // the state that goes with the converged u_{n+1}
+    a1_->update(1.0 / (beta * dt * dt), *u1_, -1.0 / (beta * dt * dt), *uTilde_, 0.0);
+    v1_->update(1.0, *vTilde_, gamma * dt, *a1_, 0.0);
+  }
+  return out;
+}
+
+// The initial acceleration from equilibrium: M a0 = -(F(u0, v0, t0) + f_c(u0)).
+void NewmarkStepper::start(double t0, double /*firstStep*/, TransientSummary& sum, StepInfo& /*info*/) {
+  op_.beginStep(*u_, t0, 0.0);
+  op_.initializeConstraints(*u_);
+  Vector r(op_.map());
+  op_.applyForces(*u_, *v_, t0, r);
+  fc_->putScalar(0.0);
+  op_.addConstraintForces(*u_, *v_, *fc_);
+  r.update(1.0, *fc_, 1.0);
+  const CorrectionStatus cs = op_.solveInitialAcceleration(*u_, r, *a_);
+  if (cs.refactored) ++sum.refactorizations;
+  if (!cs.ok)
+    throw NumericalError(s_.label + ": initial acceleration: linear solve failed: " + cs.message);
+  op_.saveState();
+  sum.smallestStep = s_.timeStep;
+  weightedTerms(t0);
+}
+
+void NewmarkStepper::weightedTerms(double t) {
+  if (scheme_.alphaM() != 0.0) op_.applyMass(*a_, *Ma0_);
+  if (scheme_.alphaF() != 0.0) op_.applyForces(*u_, *v_, t, *F0_);
+}
+
+void NewmarkStepper::unarchiveState(const StateArchive& a, const StateVectors& vectors) {
+  StructuralStepper::unarchiveState(a, vectors);
+  weightedTerms(a.getDouble("driver/time"));
+}
+
+void NewmarkStepper::countIterations(const NewtonOutcome& out, TransientSummary& sum) const {
+  sum.newtonIterations += out.iterations;
+  sum.activeSetIterations += out.activeSetIterations;
+  sum.refactorizations += out.refactorizations;
+  sum.krylovIterations += out.krylovIterations;
+}
+
+// A failed attempt: back to the accepted state; the run stops when no cut of dt is left.
+void NewmarkStepper::rejectAttempt(double t, double h, int cuts, const NewtonOutcome& out,
+                                   TransientSummary& sum) {
+  op_.restoreState();
+  ++sum.failedSteps;
+  if (cuts < s_.maxCuts) return;
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "step from t = %.6e s with dt = %.3e s failed after %d cut(s) of dt: ",
+                t, h, cuts);
+  throw NumericalError(s_.label + ": " + buf + out.message +
+                       (s_.maxCuts == 0 ? " (dt cutting is off: set 'Maximum Step Cuts')"
+                                        : " (raise 'Maximum Step Cuts' or lower 'Time Step')"));
+}
+
+// The converged attempt that reached t: n+1 becomes n.
+void NewmarkStepper::acceptAttempt(double t) {
+  std::swap(u_, u1_);
+  std::swap(v_, v1_);
+  std::swap(a_, a1_);
+  op_.acceptStep(*u_);
+  op_.saveState();
+  std::swap(Ma0_, Ma1_);  // M a and F of the converged u (zero-weighted when alpha is 0)
+  if (scheme_.alphaF() != 0.0 && op_.forcesVaryInTime())
+    op_.applyForces(*u_, *v_, t, *F0_);  // at t itself (t + h can differ by round-off)
+  else
+    std::swap(F0_, F1_);
+}
+
+// Attempts from s.t, cut on failure, until one converges. A whole nominal step uses dt
+// itself (not target - t, which differs by round-off and would change the effective matrix's
+// key); after a cut, the cut length goes on until the rest of the nominal step is shorter.
+Advance NewmarkStepper::advance(const NominalStep& s, StepControl& c, TransientSummary& sum) {
+  double& h = c.h;
+  for (;;) {
+    const bool finalSub = h >= s.target - s.t - 1e-9 * s.dt;
+    if (finalSub) h = std::abs(s.target - s.t - s.dt) <= 1e-9 * s.dt ? s.dt : s.target - s.t;
+    const NewtonOutcome out = attempt(s.t, h);
+    countIterations(out, sum);
+    if (!out.converged) {
+      rejectAttempt(s.t, h, c.cuts, out, sum);
+      ++c.cuts;
+      h *= s_.cutFactor;
+      continue;
+    }
+    Advance a;
+    a.time = finalSub ? s.target : s.t + h;
+    a.dt = h;
+    a.newton = out;
+    acceptAttempt(a.time);
+    return a;
+  }
+}
+
+}  // namespace choc

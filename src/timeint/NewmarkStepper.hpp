@@ -1,0 +1,37 @@
+// The Newmark-family stepper (implicit) over a SecondOrderOperator: initial acceleration from
+// equilibrium, one Newton/active-set solve per attempt, and the step control: a failed attempt
+// (Newton or active set) is retried with dt cut by 'cutFactor' up to 'maxCuts' times inside
+// the nominal step, then the run stops with a NumericalError naming the time and the reason.
+// An attempt that did not converge is never passed to the observers.
+#pragma once
+
+#include "timeint/NewmarkFamily.hpp"
+#include "timeint/StructuralStepper.hpp"
+
+namespace choc {
+
+class NewmarkStepper : public StructuralStepper {
+ public:
+  NewmarkStepper(SecondOrderOperator& op, NewmarkFamily scheme, TransientSettings settings);
+  const NewmarkFamily& scheme() const { return scheme_; }
+
+  void start(double t0, double firstStep, TransientSummary& sum, StepInfo& info) override;
+  Advance advance(const NominalStep& s, StepControl& c, TransientSummary& sum) override;
+  void unarchiveState(const StateArchive& a, const StateVectors& vectors) override;
+
+ private:
+  // One attempt from the accepted state at t to t + dt; returns the outcome, leaves u1, v1, a1.
+  NewtonOutcome attempt(double t, double dt);
+  // The weighted terms M a_n and F_n of the next step (alpha schemes).
+  void weightedTerms(double t);
+  void countIterations(const NewtonOutcome& out, TransientSummary& sum) const;
+  void rejectAttempt(double t, double h, int cuts, const NewtonOutcome& out, TransientSummary& sum);
+  void acceptAttempt(double t);
+
+  NewmarkFamily scheme_;
+  // Weighted terms at t_n and the trial state at t_{n+1} (the accepted one is u_, v_, a_).
+  RCP<Vector> Ma0_, F0_, Ma1_, F1_, u1_, v1_, a1_;
+  RCP<Vector> uTilde_, vTilde_, inertia_, forces_, fc_, change_;
+};
+
+}  // namespace choc

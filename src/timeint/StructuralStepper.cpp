@@ -1,0 +1,50 @@
+#include "timeint/StructuralStepper.hpp"
+
+#include <Tpetra_Vector.hpp>
+
+namespace choc {
+
+StructuralStepper::StructuralStepper(SecondOrderOperator& op, TransientSettings settings)
+    : op_(op), s_(std::move(settings)) {
+  auto map = op_.map();
+  for (RCP<Vector>* v : {&u_, &v_, &a_}) *v = rcp(new Vector(map));
+}
+
+void StructuralStepper::setInitialState(const Vector& u, const Vector& v) {
+  u_->assign(u);
+  v_->assign(v);
+}
+
+void StructuralStepper::notify(const StepInfo& info) {
+  for (StepObserver* o : observers_) o->stepAccepted(info, *u_, *v_, *a_);
+}
+
+void StructuralStepper::notifySubstep(double t) {
+  for (StepObserver* o : observers_) o->substepTaken(t, *u_, *v_);
+}
+
+void StructuralStepper::archiveState(StateArchive& a, const StateVectors& vectors) const {
+  vectors.put(a, "driver/u", *u_);
+  vectors.put(a, "driver/v", *v_);
+  vectors.put(a, "driver/a", *a_);
+  op_.archive(a);
+}
+
+void StructuralStepper::unarchiveState(const StateArchive& a, const StateVectors& vectors) {
+  vectors.get(a, "driver/u", *u_);
+  vectors.get(a, "driver/v", *v_);
+  vectors.get(a, "driver/a", *a_);
+  op_.unarchive(a);
+  op_.saveState();
+}
+
+TransientSummary StructuralStepper::run(Vector& u, Vector& v, const StepLoop::Resume* resume) {
+  if (!resume) setInitialState(u, v);
+  StepLoop loop(*this, TimeGrid(s_.startTime, s_.endTime, s_.timeStep));
+  const TransientSummary sum = loop.run(resume);
+  u.assign(*u_);
+  v.assign(*v_);
+  return sum;
+}
+
+}  // namespace choc
