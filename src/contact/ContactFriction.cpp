@@ -8,6 +8,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "contact/ContactManager.hpp"
+#include "contact/CoulombLaw.hpp"
 
 namespace choc {
 
@@ -25,10 +26,9 @@ struct ContactManager::Friction {
   double dissipated = 0.0;
   std::vector<double> pairWork;        // per pair: its part of dissipated
   double time = 0.0;                   // end of the current step
-  // The last evaluation.
-  mutable std::vector<Vec3> force, direction;
-  mutable std::vector<double> trialNorm, normalForce;
-  mutable std::vector<char> status;
+  // The last evaluation: the law's state per node (contact/CoulombLaw.hpp) and its normal force.
+  mutable std::vector<CoulombPoint> point;
+  mutable std::vector<double> normalForce;
   mutable long long evaluations = 0;
   // Within a step: each node's last slip direction and how often an iterate reversed it. An
   // iterate that slides against the node's last slip direction jumped over the stick band
@@ -40,15 +40,6 @@ struct ContactManager::Friction {
   mutable std::vector<Vec3> lastDirection;
   mutable std::vector<int> reversals;
 };
-
-namespace {
-
-Vec3 inPlane(const Vec3& v, const Vec3& n) {
-  const double vn = dot(v, n);
-  return Vec3{v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
-}
-
-}  // namespace
 
 ContactManager::~ContactManager() = default;
 
@@ -102,11 +93,8 @@ void ContactManager::indexFriction() {
     f.accepted.assign(n, Vec3{0, 0, 0});
     f.start.assign(n, Vec3{0, 0, 0});
     f.acceptedStatus.assign(n, 0);
-    f.force.assign(n, Vec3{0, 0, 0});
-    f.direction.assign(n, Vec3{0, 0, 0});
-    f.trialNorm.assign(n, 0.0);
+    f.point.assign(n, CoulombPoint{});
     f.normalForce.assign(n, 0.0);
-    f.status.assign(n, 0);
     f.lastDirection.assign(n, Vec3{0, 0, 0});
     f.reversals.assign(n, 0);
   }
@@ -128,36 +116,26 @@ void ContactManager::evaluateFriction(const std::vector<double>& x, const std::v
   Friction& f = *friction_;
   ++f.evaluations;
   for (size_t s = 0; s < constraints_.size(); ++s) {
-    f.status[s] = 0;
-    f.force[s] = Vec3{0, 0, 0};
+    CoulombPoint& p = f.point[s];
+    p.status = 0;
+    p.force = Vec3{0, 0, 0};
     const double mu = pairs_[constraints_[s].geometry.pair].friction;
     if (!set_.status[s] || !(mu > 0)) continue;
     const double fn = method_->force(g[s], set_.lambda[s], true);
     if (!(fn > 0)) continue;  // a tensile iterate: the node is about to leave
-    const Vec3& n = constraints_[s].geometry.normal;
     const Vec3 r = relativeMotion(int(s), x, f.time);
-    const Vec3 delta = inPlane(Vec3{r[0] - f.start[s][0], r[1] - f.start[s][1], r[2] - f.start[s][2]}, n);
-    const Vec3 old = inPlane(f.accepted[s], n);
-    const Vec3 trial{old[0] - f.kt * delta[0], old[1] - f.kt * delta[1], old[2] - f.kt * delta[2]};
-    const double size = norm(trial);
-    const bool reversed = size > mu * fn && dot(trial, f.lastDirection[s]) < 0.0 && f.reversals[s] < 2;
-    if (size <= mu * fn || reversed) {
-      f.status[s] = 1;
-      f.force[s] = trial;
-      if (reversed) {
-        ++f.reversals[s];
-        f.lastDirection[s] = Vec3{trial[0] / size, trial[1] / size, trial[2] / size};
-      }
-      continue;
+    const Vec3 direction = p.direction;
+    p = coulombTrial(f.accepted[s], r - f.start[s], constraints_[s].geometry.normal, f.kt);
+    p.direction = direction;
+    const bool reversed = p.trialNorm > mu * fn && dot(p.trial, f.lastDirection[s]) < 0.0 && f.reversals[s] < 2;
+    coulombReturn(p, mu, fn, reversed);
+    if (reversed) {
+      ++f.reversals[s];
+      f.lastDirection[s] = Vec3{p.trial[0] / p.trialNorm, p.trial[1] / p.trialNorm, p.trial[2] / p.trialNorm};
     }
-    f.status[s] = 2;
-    f.trialNorm[s] = size;
+    if (p.status != 2) continue;
     f.normalForce[s] = fn;
-    for (int d = 0; d < 3; ++d) {
-      f.direction[s][d] = trial[d] / size;
-      f.force[s][d] = mu * fn * f.direction[s][d];
-    }
-    f.lastDirection[s] = f.direction[s];
+    f.lastDirection[s] = p.direction;
   }
 }
 
@@ -166,17 +144,19 @@ void ContactManager::addFrictionForces(const std::vector<double>& x, const std::
   evaluateFriction(x, g);
   auto data = out.getDataNonConst();
   for (size_t s = 0; s < constraints_.size(); ++s) {
-    if (!friction_->status[s]) continue;
+    const CoulombPoint& p = friction_->point[s];
+    if (!p.status) continue;
     for (const auto& term : friction_->rel[s]) {
       const LO l = map_->getLocalElement(term.dof);
-      if (l != Teuchos::OrdinalTraits<LO>::invalid()) data[l] -= friction_->force[s][term.component] * term.coeff;
+      if (l != Teuchos::OrdinalTraits<LO>::invalid()) data[l] -= p.force[term.component] * term.coeff;
     }
   }
 }
 
 std::vector<char> ContactManager::frictionKey() const {
   if (!friction_) return {};
-  std::vector<char> key = friction_->status;
+  std::vector<char> key;
+  for (const CoulombPoint& p : friction_->point) key.push_back(char(p.status));
   if (std::find(key.begin(), key.end(), 2) != key.end()) {
     const char* b = reinterpret_cast<const char*>(&friction_->evaluations);
     key.insert(key.end(), b, b + sizeof friction_->evaluations);
@@ -193,17 +173,17 @@ std::vector<MatrixEntry> ContactManager::frictionTangent(GO multiplierBase) cons
   const Friction& f = *friction_;
   const double k = method_->stiffness();
   for (size_t s = 0; s < constraints_.size(); ++s) {
-    if (!f.status[s]) continue;
+    const CoulombPoint& p = f.point[s];
+    if (!p.status) continue;
     const Vec3& n = constraints_[s].geometry.normal;
-    const Vec3& t = f.direction[s];
+    const Vec3& t = p.direction;
     const double mu = pairs_[constraints_[s].geometry.pair].friction;
-    const bool slip = f.status[s] == 2;
-    const double scale = slip ? mu * f.normalForce[s] * f.kt / f.trialNorm[s] : f.kt;
+    const bool slip = p.status == 2;
+    const double scale = coulombTangentScale(p, f.kt, mu, f.normalForce[s]);
     for (const auto& a : f.rel[s]) {
       if (map_->getLocalElement(a.dof) == Teuchos::OrdinalTraits<LO>::invalid()) continue;
       for (const auto& b : f.rel[s]) {
-        double q = (a.component == b.component ? 1.0 : 0.0) - n[a.component] * n[b.component];
-        if (slip) q -= t[a.component] * t[b.component];
+        const double q = coulombProjector(p, n, a.component, b.component);
         if (q != 0.0) out.push_back({a.dof, b.dof, scale * a.coeff * b.coeff * q});
       }
       if (!slip) continue;
@@ -242,13 +222,13 @@ void ContactManager::commitFriction(const Vector& u) {
     const Vec3 r = relativeMotion(int(s), x, f.time);
     const Vec3 delta = inPlane(Vec3{r[0] - f.start[s][0], r[1] - f.start[s][1], r[2] - f.start[s][2]}, n);
     const Vec3& before = f.accepted[s];
-    const Vec3& after = f.force[s];
+    const Vec3& after = f.point[s].force;
     const double work = -0.5 * (dot(before, delta) + dot(after, delta));
     const double stored = f.kt > 0 ? (dot(after, after) - dot(before, before)) / (2.0 * f.kt) : 0.0;
     f.dissipated += work - stored;
     f.pairWork[constraints_[s].geometry.pair] += work - stored;
     f.accepted[s] = after;
-    f.acceptedStatus[s] = f.status[s];
+    f.acceptedStatus[s] = char(f.point[s].status);
   }
 }
 

@@ -26,16 +26,9 @@ StructuralOperator::StructuralOperator(std::shared_ptr<InternalForce> internal, 
                                        double rayleighK, double rayleighM, std::shared_ptr<const Loads> loads,
                                        ContactManager* contact, DirectLinks* links,
                                        std::unique_ptr<LinearSolver> solver, Teuchos::StackedTimer* timer)
-    : internal_(std::move(internal)), K_(initialTangent(*internal_)), M_(std::move(M)), aK_(rayleighK), aM_(rayleighM), loads_(std::move(loads)),
-      contact_(contact), links_(links), solver_(std::move(solver)), timer_(timer),
-      ku_(K_->getRowMap(), 1), vProducts_(K_->getRowMap(), 2) {
-
-  tmp_ = rcp(new Vector(K_->getRowMap()));
-  energyTmp_ = rcp(new Vector(K_->getRowMap()));
-  const MasslessRows rows = masslessRows(*M_);
-  massless_ = rows.mask;
-  masslessGlobal_ = rows.global;
-}
+    : internal_(std::move(internal)), K_(initialTangent(*internal_)), mass_(std::move(M), rayleighK, rayleighM, internal_),
+      loads_(std::move(loads)), contact_(contact), links_(links), solver_(std::move(solver)), timer_(timer),
+      ku_(K_->getRowMap(), 1) {}
 
 // The effective system is built at the first correction (an explicit run never builds it).
 ContactSystem& StructuralOperator::system() {
@@ -45,7 +38,7 @@ ContactSystem& StructuralOperator::system() {
   }
   if (!system_) {
     systemTopology_ = contact_ ? contact_->topologyVersion() : 0;
-    system_ = std::make_unique<ContactSystem>(K_, M_, contact_,
+    system_ = std::make_unique<ContactSystem>(K_, mass_.matrix(), contact_,
                                               links_ ? links_->couplings() : std::vector<std::vector<GO>>());
     rhs_ = rcp(new MultiVector(system_->map(), 1));
     x_ = rcp(new MultiVector(system_->map(), 1));
@@ -58,37 +51,13 @@ int StructuralOperator::unknowns() const {
   return int(K_->getRowMap()->getGlobalNumElements());
 }
 
-double StructuralOperator::kineticEnergy(const Vector& v) const {
-  if (vProducts_.holds(v, kMv)) return 0.5 * v.dot(vProducts_.product(kMv));
-  applyMassTo(v, *energyTmp_);
-  return 0.5 * v.dot(*energyTmp_);
-}
-
 double StructuralOperator::strainEnergy(const Vector& u) const {
   return internal_->strainEnergy(u, ku_.holds(u, 0) ? &ku_.product(0) : nullptr);
 }
 
-// v^T C v = aK v^T K v + aM v^T M v.
-double StructuralOperator::dampingPower(const Vector& v, double kinetic) const {
-  double power = aM_ * 2.0 * kinetic;
-  if (aK_ != 0.0) {
-    if (vProducts_.holds(v, kKv)) return power + aK_ * v.dot(vProducts_.product(kKv));
-    internal_->applyDampingStiffness(v, *energyTmp_);
-    power += aK_ * v.dot(*energyTmp_);
-  }
-  return power;
-}
-
-void StructuralOperator::useDiagonalMass(RCP<const Vector> m) { massDiagonal_ = std::move(m); }
-
-void StructuralOperator::applyMassTo(const Vector& x, Vector& out) const {
-  if (massDiagonal_.is_null()) M_->apply(x, out);
-  else out.elementWiseMultiply(1.0, *massDiagonal_, x, 0.0);
-}
-
 void StructuralOperator::applyMass(const Vector& a, Vector& out) {
   TimerScope ts(timer_, "Transient: assembly");
-  applyMassTo(a, out);
+  mass_.applyMass(a, out);
 }
 
 void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t, Vector& out) {
@@ -97,21 +66,8 @@ void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t,
   if (keepProducts_) {
     ku_.reset(u);
     ku_.write(0).assign(out);
-    vProducts_.reset(v);
   }
-  // K v and M v straight into the cache's buffers when kept.
-  if (aK_ != 0.0) {
-    Vector& Kv = keepProducts_ ? vProducts_.write(kKv) : *tmp_;
-    internal_->applyDampingStiffness(v, Kv);
-    out.update(aK_, Kv, 1.0);
-  }
-  if (aM_ != 0.0 && !keepProducts_ && !massDiagonal_.is_null()) {
-    out.elementWiseMultiply(aM_, *massDiagonal_, v, 1.0);  // out += aM m .* v in one pass
-  } else if (aM_ != 0.0) {
-    Vector& Mv = keepProducts_ ? vProducts_.write(kMv) : *tmp_;
-    applyMassTo(v, Mv);
-    out.update(aM_, Mv, 1.0);
-  }
+  mass_.addDampingForces(v, out, keepProducts_);
   if (loads_) loads_->subtractFrom(t, out);
 }
 
@@ -140,7 +96,7 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
   if (change != KeyChange::None) {
     {
       TimerScope ts(timer_, "Transient: assembly");
-      sys.fill(c.ca + c.cv * aM_, c.cd + c.cv * aK_,
+      sys.fill(mass_.massCoefficient(c), mass_.stiffnessCoefficient(c),
                     linkTangent ? links_->tangent(c.cv / c.cd) : std::vector<MatrixEntry>());
     }
     TimerScope ts(timer_, "Transient: linear solve");
@@ -194,9 +150,9 @@ FactorizationKey StructuralOperator::keyOf(const EffectiveCoefficients& c, std::
 // (physics/MasslessInitialAcceleration.hpp), the factorisation of A0 dropped afterwards.
 CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, const Vector& r,
                                                               Vector& a) {
-  if (masslessGlobal_ == 0) return SecondOrderOperator::solveInitialAcceleration(u, r, a);
+  if (mass_.masslessDofs() == 0) return SecondOrderOperator::solveInitialAcceleration(u, r, a);
   factored_.forget();  // the next correction refactors the effective matrix
-  return solveMasslessInitialAcceleration(*K_, *M_, massless_, *solver_, timer_, r, a);
+  return solveMasslessInitialAcceleration(*K_, *mass_.matrix(), mass_.masslessMask(), *solver_, timer_, r, a);
 }
 
 void StructuralOperator::beginStep(const Vector& u, double t, double dt) {
@@ -269,7 +225,7 @@ void StructuralOperator::restoreKeptFactorization() {
   restoreKept_ = false;
   ContactSystem& sys = system();
   const EffectiveCoefficients& c = kept_.coefficients;
-  const double aM = c.ca + c.cv * aM_, aK = c.cd + c.cv * aK_;
+  const double aM = mass_.massCoefficient(c), aK = mass_.stiffnessCoefficient(c);
   TimerScope ts(timer_, "Transient: linear solve");
   sys.fillEntries(aM, aK, kept_.factored);  // rows another rank owns are skipped
   solver_->setMatrix(sys.matrix());

@@ -1,6 +1,6 @@
 // The second-order operator of a structural model (its internal force and tangent: an
-// InternalForce) with Rayleigh damping, nodal loads, contact and shock links: what
-// DirectTransient gives its integrator.
+// InternalForce; its mass and Rayleigh damping: MassDamping; its loads: Loads) with contact and
+// shock links: what DirectTransient gives its steppers.
 //   M a + C v + f_int(u) + f_c(u) + f_l(u, v) = f,   C = a_K K0 + a_M M.
 // Newton corrections solve with the effective matrix W = ca M + cv C + cd K_T(u) plus the
 // contact block (ContactSystem) and the links' tangent, factored by the linear solver only when
@@ -21,6 +21,7 @@
 #include "physics/KeptFactorization.hpp"
 #include "physics/DirectLinks.hpp"
 #include "physics/InternalForce.hpp"
+#include "physics/MassDamping.hpp"
 #include "physics/Loads.hpp"
 #include "physics/ProductCache.hpp"
 #include "solvers/FactorizationKey.hpp"
@@ -68,7 +69,7 @@ class StructuralOperator : public ExplicitOperator {
   void storeStiffnessSymmetrically() { internal_->preferSymmetricProducts(); }
   // M is the diagonal m (a lumped mass: explicit runs): its products element by element, and
   // applyForces' damping term aM m .* v added in the same pass.
-  void useDiagonalMass(RCP<const Vector> m);
+  void useDiagonalMass(RCP<const Vector> m) { mass_.useDiagonal(std::move(m)); }
   bool hasExplicitContact() const override { return contact_ && forwardIncrement_; }
   void addExplicitContact(const Vector& uStar, const Vector& inverseMass, double h2, Vector& a) override;
   std::string constraintState() const override { return contact_ ? contact_->activeSummary() : ""; }
@@ -81,30 +82,27 @@ class StructuralOperator : public ExplicitOperator {
   const DirectLinks* links() const { return links_; }
   // Energies of a state, for the output: 1/2 v.M v, the stored elastic energy, the contact springs' energy,
   // the damping power v.C v (given the kinetic energy).
-  double kineticEnergy(const Vector& v) const;
+  double kineticEnergy(const Vector& v) const { return mass_.kineticEnergy(v); }
   double strainEnergy(const Vector& u) const;
   double contactEnergy(const Vector& u) const { return contact_ ? contact_->energy(u) : 0.0; }
   // Work of the contact pairs' friction dissipated since the start [J].
   double frictionDissipation() const { return contact_ ? contact_->frictionDissipation() : 0.0; }
-  double dampingPower(const Vector& v, double kinetic) const;
+  double dampingPower(const Vector& v, double kinetic) const { return mass_.dampingPower(v, kinetic); }
   const Loads* loads() const { return loads_.get(); }  // null: none
 
   int factorizations() const { return solver_->factorizations(); }
   int keptFactorizations() const { return solver_->updates(); }
   const LinearSolver& solver() const { return *solver_; }
   int unknowns() const;  // global rows of the solved system (DOFs + pressure unknowns)
-  long long masslessDofs() const { return masslessGlobal_; }  // DOFs whose mass row is zero
-  const std::vector<char>& masslessMask() const { return massless_; }  // per local DOF
+  long long masslessDofs() const { return mass_.masslessDofs(); }  // DOFs whose mass row is zero
+  const std::vector<char>& masslessMask() const { return mass_.masslessMask(); }  // per local DOF
 
  private:
   ContactSystem& system();
   std::shared_ptr<InternalForce> internal_;
   // The tangent's matrix object (one graph for the run; its values the model's current ones).
   RCP<const CrsMatrix> K_;
-  RCP<const CrsMatrix> M_;
-  RCP<const Vector> massDiagonal_;  // useDiagonalMass(); null: M's own product
-  void applyMassTo(const Vector& x, Vector& out) const;
-  double aK_, aM_;
+  MassDamping mass_;  // M and C (physics/MassDamping.hpp)
   std::shared_ptr<const Loads> loads_;
   ContactManager* contact_;
   DirectLinks* links_;
@@ -113,16 +111,12 @@ class StructuralOperator : public ExplicitOperator {
   std::unique_ptr<ContactSystem> system_;
   int systemTopology_ = 0;
   bool forwardIncrement_ = false;  // the contact manager's topologyVersion() the graph was built for
-  RCP<Vector> tmp_, energyTmp_;
-  // K u, K v and M v of the last applyForces: the energies of the state a step ended at (whose
-  // forces the step's last residual computed) cost no second product with K or M.
-  ProductCache ku_, vProducts_;  // K u; K v and M v (one copy of v)
-  static constexpr int kKv = 0, kMv = 1;
+  // K u of the last applyForces (K v and M v: mass_): the energies of the state a step ended at
+  // (whose forces the step's last residual computed) cost no second product with K or M.
+  ProductCache ku_;
   bool keepProducts_ = true;
   double nextLooser_ = 0.0;  // relaxNextCorrection's tolerance, for one correction
   RCP<MultiVector> rhs_, x_;
-  std::vector<char> massless_;  // per local DOF: its row of M is zero
-  long long masslessGlobal_ = 0;
   // What the factored matrix was built from (solvers/FactorizationKey.hpp).
   FactorizationCache factored_;
   FactorizationKey keyOf(const EffectiveCoefficients& c, std::vector<char> status) const;

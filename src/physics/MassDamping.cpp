@@ -1,0 +1,58 @@
+#include "physics/MassDamping.hpp"
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "physics/MasslessInitialAcceleration.hpp"
+
+namespace choc {
+
+MassDamping::MassDamping(RCP<const CrsMatrix> M, double aK, double aM, std::shared_ptr<InternalForce> internal)
+    : internal_(std::move(internal)), M_(std::move(M)), aK_(aK), aM_(aM), vProducts_(M_->getRowMap(), 2) {
+  tmp_ = rcp(new Vector(M_->getRowMap()));
+  energyTmp_ = rcp(new Vector(M_->getRowMap()));
+  const MasslessRows rows = masslessRows(*M_);
+  massless_ = rows.mask;
+  masslessGlobal_ = rows.global;
+}
+
+void MassDamping::applyMass(const Vector& x, Vector& out) const {
+  if (diagonal_.is_null()) M_->apply(x, out);
+  else out.elementWiseMultiply(1.0, *diagonal_, x, 0.0);
+}
+
+void MassDamping::addDampingForces(const Vector& v, Vector& out, bool keep) {
+  if (keep) vProducts_.reset(v);
+  // K0 v and M v straight into the cache's buffers when kept.
+  if (aK_ != 0.0) {
+    Vector& Kv = keep ? vProducts_.write(kKv) : *tmp_;
+    internal_->applyDampingStiffness(v, Kv);
+    out.update(aK_, Kv, 1.0);
+  }
+  if (aM_ != 0.0 && !keep && !diagonal_.is_null()) {
+    out.elementWiseMultiply(aM_, *diagonal_, v, 1.0);  // out += aM m .* v in one pass
+  } else if (aM_ != 0.0) {
+    Vector& Mv = keep ? vProducts_.write(kMv) : *tmp_;
+    applyMass(v, Mv);
+    out.update(aM_, Mv, 1.0);
+  }
+}
+
+double MassDamping::kineticEnergy(const Vector& v) const {
+  if (vProducts_.holds(v, kMv)) return 0.5 * v.dot(vProducts_.product(kMv));
+  applyMass(v, *energyTmp_);
+  return 0.5 * v.dot(*energyTmp_);
+}
+
+// v^T C v = aK v^T K0 v + aM v^T M v.
+double MassDamping::dampingPower(const Vector& v, double kinetic) const {
+  double power = aM_ * 2.0 * kinetic;
+  if (aK_ != 0.0) {
+    if (vProducts_.holds(v, kKv)) return power + aK_ * v.dot(vProducts_.product(kKv));
+    internal_->applyDampingStiffness(v, *energyTmp_);
+    power += aK_ * v.dot(*energyTmp_);
+  }
+  return power;
+}
+
+}  // namespace choc

@@ -1,0 +1,49 @@
+// The structural model's inertia and Rayleigh damping, C = aK K0 + aM M (K0: the internal
+// force's damping stiffness, InternalForce::applyDampingStiffness): the mass products, the
+// damping forces C v, the effective matrix's coefficients of M and K, the kinetic energy and
+// the damping power. The mass is the assembled M, or its diagonal m for an explicit run
+// (useDiagonal), whose products are element by element. Rows of M that are zero (redistributed
+// contact mass) are listed: those DOFs have no inertia. The products K0 v and M v of the last
+// velocity the forces were computed with are kept when asked (the energies of the state a step
+// ended at cost no second product).
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "core/TpetraTypes.hpp"
+#include "physics/InternalForce.hpp"
+#include "physics/ProductCache.hpp"
+#include "timeint/SecondOrderOperator.hpp"
+
+namespace choc {
+
+class MassDamping {
+ public:
+  MassDamping(RCP<const CrsMatrix> M, double aK, double aM, std::shared_ptr<InternalForce> internal);
+  RCP<const CrsMatrix> matrix() const { return M_; }
+  void useDiagonal(RCP<const Vector> m) { diagonal_ = std::move(m); }
+  // out = M x.
+  void applyMass(const Vector& x, Vector& out) const;
+  // out += C v; with `keep`, K0 v and M v are kept for the energies of v.
+  void addDampingForces(const Vector& v, Vector& out, bool keep);
+  double kineticEnergy(const Vector& v) const;                // 1/2 v.M v
+  double dampingPower(const Vector& v, double kinetic) const;  // v.C v, given 1/2 v.M v
+  // W = ca M + cv C + cd K = (ca + cv aM) M + (cd + cv aK) K: its coefficients of M and K.
+  double massCoefficient(const EffectiveCoefficients& c) const { return c.ca + c.cv * aM_; }
+  double stiffnessCoefficient(const EffectiveCoefficients& c) const { return c.cd + c.cv * aK_; }
+  const std::vector<char>& masslessMask() const { return massless_; }  // per local DOF
+  long long masslessDofs() const { return masslessGlobal_; }
+
+ private:
+  std::shared_ptr<InternalForce> internal_;
+  RCP<const CrsMatrix> M_;
+  RCP<const Vector> diagonal_;  // useDiagonal(); null: M's own product
+  double aK_, aM_;
+  ProductCache vProducts_;  // K0 v and M v (one copy of v)
+  static constexpr int kKv = 0, kMv = 1;
+  RCP<Vector> tmp_, energyTmp_;
+  std::vector<char> massless_;
+  long long masslessGlobal_ = 0;
+};
+
+}  // namespace choc
