@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-kept bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction docs clean
+.PHONY: all deps configure build run test study bench bench-kept bench-direct bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction docs clean
 
 all: build
 
@@ -41,6 +41,11 @@ bench: build
 	$(PYTHON) tools/bench/bench_explicit.py --build $(BUILD) --end-time 2e-5
 	$(PYTHON) tools/bench/bench_explicit.py --build $(BUILD) --end-time 2e-5 --mesh 18 560 --ranks 2 --contact lagrange
 	$(PYTHON) tools/bench/bench_kept_factorization.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_direct_packages.py --build $(BUILD)
+
+# The direct packages on a contact scene: KLU2 on rank 0 against MUMPS on every rank, 1 and 2 ranks.
+bench-direct: build
+	$(PYTHON) tools/bench/bench_direct_packages.py --build $(BUILD)
 
 # Contact status changes on a kept factorisation (Update Budget) against refactoring at each.
 bench-kept: build

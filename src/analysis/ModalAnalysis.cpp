@@ -16,6 +16,7 @@
 #include "core/Files.hpp"
 #include "output/HistoryCsv.hpp"
 #include "input/ParameterSpec.hpp"
+#include "solvers/FactorizationBackend.hpp"
 #include "output/ExodusResults.hpp"
 #include "core/Format.hpp"
 #include "core/Log.hpp"
@@ -42,8 +43,8 @@ Teuchos::ParameterList ModalAnalysis::parameters() {
                 "max(|lambda|,|sigma|) ||M phi||) of any mode",
                 Range::positive());
   declareInt(p, "Maximum Restarts", 200, "Block Krylov-Schur restarts", Range::atLeast(0));
-  declareChoice(p, "Direct Package", "KLU2", {"KLU2", "Basker", "SuperLU", "Umfpack"},
-                "Amesos2 package factorising K - sigma M");
+  declareChoice(p, "Direct Package", "KLU2", amesos2Packages(),
+                "Amesos2 package factorising K - sigma M (the packages this build has)");
   declareBool(p, "Write Exodus", true, "write <name>.exo with one step per mode");
   return p;
 }

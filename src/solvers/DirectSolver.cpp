@@ -3,75 +3,32 @@
 #include <cmath>
 #include <cstdio>
 
-#include <Amesos2.hpp>
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
-#include <Tpetra_Import.hpp>
 #include <Tpetra_MultiVector.hpp>
 
 #include "core/Errors.hpp"
-#include "core/CollectiveFailure.hpp"
+#include "core/DidYouMean.hpp"
 #include "core/Memory.hpp"
+#include "solvers/FactorizationBackend.hpp"
 #include "solvers/PreconditionedGmres.hpp"
 
 namespace choc {
 
 namespace {
 
-std::string firstLine(const std::string& s) {
-  auto p = s.find('\n');
-  return p == std::string::npos ? s : s.substr(0, p);
-}
-
-// Amesos2 on a matrix whose communicator is MPI_COMM_SELF. (Debian's Trilinos 13.2 KLU2
-// returns wrong solutions whenever the communicator has more than one rank, even with every
-// row on rank 0 — see tests/unit/test_solvers_mpi_direct.cpp — so choc gathers the system to
-// rank 0 itself and factors it there, which is what Amesos2 does internally for KLU2.)
-class SerialFactorization {
+// A factorisation (any backend) kept across solves, refined, and kept through changes of
+// contact status while it pays.
+class KeptDirectSolver : public LinearSolver {
  public:
-  explicit SerialFactorization(std::string package) : package_(std::move(package)) {}
-  void factor(RCP<const CrsMatrix> A) {
-    if (solver_.is_null() || A.get() != A_.get()) {
-      solver_ = Amesos2::create<CrsMatrix, MultiVector>(package_, A);
-      solver_->symbolicFactorization();
-    }
-    A_ = A;
-    solver_->numericFactorization();
-  }
-  void solve(const MultiVector& b, MultiVector& x) {
-    solver_->solve(Teuchos::ptr(&x), Teuchos::ptr(&b));
-  }
-  RCP<const CrsMatrix> matrix() const { return A_; }
+  KeptDirectSolver(std::unique_ptr<FactorizationBackend> backend, double tol, int budget)
+      : backend_(std::move(backend)), tol_(tol), budget_(budget) {}
 
- private:
-  std::string package_;
-  RCP<const CrsMatrix> A_;
-  RCP<Amesos2::Solver<CrsMatrix, MultiVector>> solver_;
-};
-
-class Amesos2Solver : public LinearSolver {
- public:
-  Amesos2Solver(std::string package, double tol, int budget)
-      : package_(package), tol_(tol), budget_(budget), serial_(package) {}
-
-  // On more than one rank only rank 0 factors: its failure is shared (CollectiveFailure.hpp)
-  // so that every rank throws, none waits in the next solve.
+  // The backend's failure is the same on every rank (none waits in the next solve).
   void setMatrix(RCP<const CrsMatrix> A) override {
     stale_ = false;
     spent_ = 0;
-    std::string failure;
-    try {
-      A_ = A;
-      if (A->getComm()->getSize() == 1) {
-        serial_.factor(A);
-      } else {
-        gatherToRoot(*A);
-        if (A->getComm()->getRank() == 0) serial_.factor(rootSerial_);
-      }
-    } catch (const std::exception& e) {
-      failure = describeFailure(e);
-    }
-    failure = collectiveFailure(*A->getComm(), failure);
+    A_ = A;
+    const std::string failure = backend_->factor(A);
     if (!failure.empty()) reportFactorizationFailure(*A, failure);
     ++factorizations_;
   }
@@ -80,7 +37,7 @@ class Amesos2Solver : public LinearSolver {
   // a singular matrix as for its own allocations: when an allocation of the size of its
   // factors' first estimate (8 times the matrix's entries) fails now, it is memory.
   [[noreturn]] void reportFactorizationFailure(const CrsMatrix& A, const std::string& failure) {
-    const std::string what = "direct solver " + package_ + ": factorisation of " +
+    const std::string what = "direct solver " + backend_->name() + ": factorisation of " +
                              std::to_string(A.getGlobalNumRows()) + " unknowns";
     rethrowIfOutOfMemory(failure, what);
     const double factors = 8.0 * double(A.getGlobalNumEntries()) * (sizeof(double) + sizeof(int));
@@ -150,7 +107,7 @@ class Amesos2Solver : public LinearSolver {
     return st;
   }
 
-  std::string description() const override { return "Amesos2 " + package_; }
+  std::string description() const override { return backend_->name(); }
 
  private:
   static constexpr int kRefinements = 2;
@@ -194,95 +151,26 @@ class Amesos2Solver : public LinearSolver {
     return st;
   }
 
-  // One solve with the factorisation (gathered to rank 0 on several ranks); the failure's
-  // first line, or "".
-  std::string solveOnce(const MultiVector& b, MultiVector& x) {
-    std::string failure;
-    if (A_->getComm()->getSize() == 1) {
-      try {
-        serial_.solve(b, x);
-      } catch (const std::exception& e) {
-        failure = describeFailure(e);
-      }
-      rethrowIfOutOfMemory(failure, "direct solver " + package_ + ": solve");
-      return failure;
-    }
-    MultiVector bRoot(rootMap_, b.getNumVectors()), xRoot(rootMap_, b.getNumVectors());
-    bRoot.doImport(b, *importer_, Tpetra::INSERT);
-    if (A_->getComm()->getRank() == 0) {
-      try {
-        MultiVector bs(serialMap_, b.getNumVectors()), xs(serialMap_, b.getNumVectors());
-        copyLocal(bRoot, bs);
-        serial_.solve(bs, xs);
-        copyLocal(xs, xRoot);
-      } catch (const std::exception& e) {
-        failure = describeFailure(e);
-      }
-    }
-    x.doExport(xRoot, *importer_, Tpetra::INSERT);
-    failure = collectiveFailure(*A_->getComm(), failure);
-    rethrowIfOutOfMemory(failure, "direct solver " + package_ + ": solve");
-    return failure;
-  }
+  std::string solveOnce(const MultiVector& b, MultiVector& x) { return backend_->solve(b, x); }
 
-  static void copyLocal(const MultiVector& from, MultiVector& to) {
-    for (size_t j = 0; j < from.getNumVectors(); ++j) {
-      auto src = from.getData(j);
-      auto dst = to.getDataNonConst(j);
-      for (size_t i = 0; i < from.getLocalLength(); ++i) dst[i] = src[i];
-    }
-  }
-
-  // Copies A to rank 0, then into a matrix on MPI_COMM_SELF there.
-  void gatherToRoot(const CrsMatrix& A) {
-    auto comm = A.getComm();
-    const Tpetra::global_size_t n = A.getGlobalNumRows();
-    if (rootMap_.is_null() || rootMap_->getGlobalNumElements() != n) {
-      rootMap_ = rcp(new Map(n, comm->getRank() == 0 ? size_t(n) : 0, 0, comm));
-      importer_ = rcp(new Tpetra::Import<LO, GO>(A.getRowMap(), rootMap_));
-      RCP<const Comm> self = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
-      if (comm->getRank() == 0) serialMap_ = rcp(new Map(n, size_t(n), 0, self));
-    }
-    CrsMatrix root(rootMap_, 0);
-    root.doImport(A, *importer_, Tpetra::INSERT);
-    root.fillComplete(rootMap_, rootMap_);
-    if (comm->getRank() != 0) return;
-    std::vector<size_t> counts(n);
-    for (size_t i = 0; i < n; ++i) counts[i] = root.getNumEntriesInGlobalRow(GO(i));
-    auto S = rcp(new CrsMatrix(serialMap_, Teuchos::ArrayView<const size_t>(counts)));
-    Teuchos::Array<GO> cols;
-    Teuchos::Array<double> vals;
-    for (size_t i = 0; i < n; ++i) {
-      cols.resize(counts[i]);
-      vals.resize(counts[i]);
-      size_t got = 0;
-      root.getGlobalRowCopy(GO(i), cols(), vals(), got);
-      S->insertGlobalValues(GO(i), cols(0, got), vals(0, got));
-    }
-    S->fillComplete(serialMap_, serialMap_);
-    rootSerial_ = S;
-  }
-
-  std::string package_;
+  std::unique_ptr<FactorizationBackend> backend_;
   double tol_;
   int budget_;          // extra solves a matrix may cost on a kept factorisation; -1: by size, budget()
   bool stale_ = false;  // A_ is not the factored matrix
   int spent_ = 0;       // extra preconditioned solves spent on the current matrix
   bool counted_ = false;  // the current matrix was solved on the kept factorisation
-  SerialFactorization serial_;
   RCP<const CrsMatrix> A_;
-  RCP<const Map> rootMap_, serialMap_;
-  RCP<Tpetra::Import<LO, GO>> importer_;
-  RCP<const CrsMatrix> rootSerial_;
 };
 
 }  // namespace
 
 std::unique_ptr<LinearSolver> makeDirectSolver(const std::string& package, double tol, int budget) {
-  if (!Amesos2::query(package))
-    throw InputError("Linear Solver: direct package '" + package +
-                     "' is not available in this Trilinos build; use KLU2");
-  return std::make_unique<Amesos2Solver>(package, tol, budget);
+  if (package == "MUMPS" && mumpsAvailable())
+    return std::make_unique<KeptDirectSolver>(makeMumpsBackend(), tol, budget);
+  if (package == "MUMPS" || !amesos2Available(package))
+    throw InputError("Linear Solver: direct package '" + package + "' is not available in this build; use " +
+                     joinNames(directPackages()));
+  return std::make_unique<KeptDirectSolver>(makeAmesos2RootBackend(package), tol, budget);
 }
 
 }  // namespace choc

@@ -1,4 +1,5 @@
-// Amesos2 sparse direct solver (KLU2 by default): symbolic once per structure, numeric per
+// The sparse direct solver: a factorisation backend (solvers/FactorizationBackend.hpp: Amesos2
+// KLU2 on rank 0 by default, or MUMPS on every rank), symbolic once per structure, numeric per
 // setMatrix(); after updateMatrix() the numeric factorisation may be kept (GMRES on it).
 #pragma once
 #include "solvers/LinearSolver.hpp"
@@ -7,6 +8,7 @@ namespace choc {
 
 // budget: preconditioned solves a kept factorisation may spend after updateMatrix() before a
 // refactorisation (0: always refactor; -1: by the size, see DirectSolver.cpp).
+// Throws InputError for a package this build does not have.
 std::unique_ptr<LinearSolver> makeDirectSolver(const std::string& package, double residualTolerance,
                                                int budget = -1);
 

@@ -5,6 +5,7 @@
 
 #include "input/ParameterSpec.hpp"
 #include "solvers/DirectSolver.hpp"
+#include "solvers/FactorizationBackend.hpp"
 #include "solvers/IterativeSolver.hpp"
 
 namespace choc {
@@ -19,8 +20,11 @@ Teuchos::ParameterList linearSolverParameters() {
                 "to mass <= 100), Direct up to 100,000 unknowns, beyond CG + Jacobi up to a ratio "
                 "of 10,000 and CG + Additive Schwarz above; the log states the choice "
                 "(src/solvers/SolverChoice.hpp)");
-  declareChoice(p, "Direct Package", "KLU2", {"KLU2", "Basker", "SuperLU", "Umfpack"},
-                "Amesos2 package for Method = Direct");
+  declareChoice(p, "Direct Package", "KLU2", directPackages(),
+                "sparse direct solver of Method = Direct (the packages this build has): KLU2 and "
+                "the other Amesos2 packages factor the system gathered on rank 0; MUMPS factors it "
+                "on every rank (distributed rows, its own ordering), see "
+                "src/solvers/FactorizationBackend.hpp");
   declareInt(p, "Update Budget", -1,
              "Method = Direct: after a change of contact status alone (same time step and "
              "coefficients) the factorisation is kept and the changed matrix solved by GMRES "

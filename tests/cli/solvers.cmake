@@ -14,3 +14,9 @@ add_test(NAME cli.kept_factorization
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/kept_factorization.py
                  $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/kept_factorization)
 set_tests_properties(cli.kept_factorization PROPERTIES TIMEOUT 180 PROCESSORS 2 LABELS cli)
+# MUMPS on every rank: the scale scene's bars with Lagrange contact (1 and 2 ranks) and the
+# sliding block with Coulomb friction give KLU2's histories to 1e-7 of their peaks.
+add_test(NAME cli.mumps_contact
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/mumps_contact.py
+                 $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/mumps_contact)
+set_tests_properties(cli.mumps_contact PROPERTIES TIMEOUT 300 PROCESSORS 2 LABELS cli)

@@ -1,6 +1,7 @@
 // Linear solvers on an assembled clamped bar, on any number of ranks: the solution of
 // K u = f (unit end load) is the exact static one, u(x) = F x / (E A) (linear elements are
-// nodally exact for this problem), for the direct and the Krylov solvers.
+// nodally exact for this problem), for the direct (KLU2 gathered on rank 0, MUMPS on every
+// rank) and the Krylov solvers.
 #include <gtest/gtest.h>
 
 #include <Teuchos_DefaultComm.hpp>
@@ -12,6 +13,7 @@
 #include "fem/FieldGather.hpp"
 #include "input/Validation.hpp"
 #include "mesh/BarImpactMesh.hpp"
+#include "solvers/FactorizationBackend.hpp"
 #include "solvers/LinearSolver.hpp"
 
 namespace choc {
@@ -43,7 +45,7 @@ struct ClampedBar {
   }
 };
 
-void solveAndCheck(const std::string& method) {
+void solveAndCheck(const std::string& method, const std::string& package = "KLU2") {
   ClampedBar bar;
   auto K = bar.assembler->stiffness();
   MultiVector f(K->getRangeMap(), 1), u(K->getDomainMap(), 1);
@@ -53,6 +55,7 @@ void solveAndCheck(const std::string& method) {
   if (K->getRowMap()->isNodeGlobalElement(dC)) f.replaceGlobalValue(dC, 0, F);
   Teuchos::ParameterList p = linearSolverParameters();
   p.set("Method", method);
+  p.set("Direct Package", package);
   p.set("Tolerance", 1e-12);
   auto solver = makeLinearSolver(p);
   solver->setMatrix(K);
@@ -70,6 +73,11 @@ void solveAndCheck(const std::string& method) {
 }
 
 TEST(MpiLinearSolver, DirectKlu2MatchesExactStaticSolution) { solveAndCheck("Direct"); }
+// MUMPS factors on every rank (tools/build/install-deps.sh installs libmumps-dev).
+TEST(MpiLinearSolver, DirectMumpsMatchesExactStaticSolution) {
+  ASSERT_TRUE(mumpsAvailable()) << "this build has no MUMPS (CMake found no libmumps-dev)";
+  solveAndCheck("Direct", "MUMPS");
+}
 TEST(MpiLinearSolver, CgMatchesExactStaticSolution) { solveAndCheck("CG"); }
 TEST(MpiLinearSolver, GmresMatchesExactStaticSolution) { solveAndCheck("GMRES"); }
 

@@ -3,7 +3,7 @@
 # Usage: tools/build/install-deps.sh [--with-viz] [--with-peer]
 #   --with-peer: CalculiX (calculix-ccx) for `make bench-peer` only, never for the tests
 set -euo pipefail
-pkgs=(build-essential cmake trilinos-all-dev libptscotch-dev libscotch-dev
+pkgs=(build-essential cmake trilinos-all-dev libptscotch-dev libscotch-dev libmumps-dev
       libexodusii-dev libnetcdf-dev openmpi-bin libopenmpi-dev libgtest-dev
       gmsh libgmsh-dev
       python3 python3-numpy python3-matplotlib python3-netcdf4
