@@ -20,6 +20,7 @@
 #include "output/InteractionList.hpp"
 #include "physics/CriticalStep.hpp"
 #include "physics/LinearElasticForce.hpp"
+#include "solvers/FactorizationBackend.hpp"
 #include "solvers/SolverChoice.hpp"
 #include "timeint/CentralDifferenceStepper.hpp"
 #include "timeint/NewmarkStepper.hpp"
@@ -191,8 +192,9 @@ void DirectTransient::setup(SetupContext& ctx) {
   b_->loads = assembleLoads(model);
   buildContact(model);
   if (b_->contact && b_->contact->hasFriction()) {
+    const int dimension = int(spatialComponents(model.mesh().dimension).size());
     const double kt = s_.contact.tangentialStiffness > 0 ? s_.contact.tangentialStiffness
-                                                          : largestDiagonal(*b_->K);
+                                                          : largestNodalDiagonal(*b_->K, model.dofs(), dimension);
     b_->contact->setTangentialStiffness(kt);
   }
   std::vector<ShockLink> links = readShockLinks(params_, model, "Analyses/" + name_);
@@ -290,6 +292,7 @@ void DirectTransient::buildSolver() {
   if (lp.get<std::string>("Method") == "auto" && !s_.explicitScheme) {
     SolverRegime r;
     r.unknowns = (long long)b_->K->getGlobalNumRows();
+    if (mumpsAvailable()) r.distributedDirect = "MUMPS";
     if (b_->contact && b_->contact->method().hasMultipliers())
       r.notSymmetricBecause = "contact method '" + s_.contact.methodName() + "' has multipliers";
     else if (b_->contact && b_->contact->hasFriction())
@@ -305,6 +308,7 @@ void DirectTransient::buildSolver() {
     const SolverChoice choice = chooseLinearSolver(r);
     lp.set("Method", choice.method);
     if (!choice.preconditioner.empty()) lp.set("Preconditioner", choice.preconditioner);
+    if (!choice.package.empty()) lp.set("Direct Package", choice.package);
     b_->solverChoice = "'auto': " + choice.reason;
   }
   try {
@@ -467,7 +471,7 @@ void DirectTransient::describe(Model& model, const StructuralOperator& op) const
     if (contact->hasFriction())
       log() << format("; Coulomb friction, stick stiffness k_t = %.4g N/m per node%s",
                       contact->tangentialStiffness(),
-                      s_.contact.tangentialStiffness > 0 ? "" : " (the largest diagonal entry of K)");
+                      s_.contact.tangentialStiffness > 0 ? "" : " (the stiffest node's mean diagonal of K)");
     log() << "\n";
   }
   if (b_->links) {

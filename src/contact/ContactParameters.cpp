@@ -37,8 +37,9 @@ void declareMethodParameters(ParameterList& ct) {
              "Newton solves per step while the active set changes", Range::atLeast(1));
   declareDouble(ct, "Tangential Stiffness", 0.0,
                 "k_t [N/m] per slave node of the pairs with friction: the stick spring (a sticking "
-                "node's elastic slip is F_t / k_t); 0: the largest diagonal entry of the "
-                "stiffness matrix", Range::nonNegative());
+                "node's elastic slip is F_t / k_t); 0: the stiffness of the stiffest node, the "
+                "largest mean of a node's diagonal entries of K over its components (the trace of "
+                "its diagonal block over the dimension: the same in any frame)", Range::nonNegative());
 }
 
 // The obstacle in place of a pair's master side set.

@@ -34,19 +34,22 @@ std::string withCommas(long long n) {
 
 SolverChoice chooseLinearSolver(const SolverRegime& r) {
   const std::string size = withCommas(r.unknowns) + " unknowns";
-  if (r.unknowns <= kAlwaysDirectUpTo) return {"Direct", "", size + ", at most " + withCommas(kAlwaysDirectUpTo)};
-  if (!r.symmetricPositive())
-    return {"Direct", "", size + "; the matrix is not symmetric positive definite (" + r.notSymmetricBecause + ")"};
+  if (r.unknowns <= kAlwaysDirectUpTo) return {"Direct", "", "", size + ", at most " + withCommas(kAlwaysDirectUpTo)};
+  if (!r.symmetricPositive()) {
+    const std::string why = size + "; the matrix is not symmetric positive definite (" + r.notSymmetricBecause + ")";
+    if (r.distributedDirect.empty()) return {"Direct", "", "", why};
+    return {"Direct", "", r.distributedDirect, why + "; " + r.distributedDirect + " factors it on every rank"};
+  }
   const std::string theta = format("%.3g", r.stiffnessToMass);
   const std::string limit = std::to_string(int(kJacobiUpTo));
   if (r.stiffnessToMass <= kJacobiUpTo)
-    return {"CG", "Jacobi", size + ", symmetric, mass-dominated: stiffness/mass " + theta + " <= " + limit};
+    return {"CG", "Jacobi", "", size + ", symmetric, mass-dominated: stiffness/mass " + theta + " <= " + limit};
   const std::string stiff = size + ", symmetric, stiffness-dominated: stiffness/mass " + theta + " > " + limit;
-  if (r.unknowns <= kDirectUpTo) return {"Direct", "", stiff + ", at most " + withCommas(kDirectUpTo) + " unknowns"};
+  if (r.unknowns <= kDirectUpTo) return {"Direct", "", "", stiff + ", at most " + withCommas(kDirectUpTo) + " unknowns"};
   const std::string large = stiff + ", more than " + withCommas(kDirectUpTo) + " unknowns, stiffness/mass ";
   const std::string largeLimit = withCommas((long long)kLargeJacobiUpTo);
-  if (r.stiffnessToMass <= kLargeJacobiUpTo) return {"CG", "Jacobi", large + "<= " + largeLimit};
-  return {"CG", "Additive Schwarz", large + "> " + largeLimit};
+  if (r.stiffnessToMass <= kLargeJacobiUpTo) return {"CG", "Jacobi", "", large + "<= " + largeLimit};
+  return {"CG", "Additive Schwarz", "", large + "> " + largeLimit};
 }
 
 double stiffnessToMassRatio(const CrsMatrix& K, const CrsMatrix& M, double mCoef, double kCoef) {

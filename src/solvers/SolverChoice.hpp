@@ -2,7 +2,11 @@
 // preconditioner picked by the problem's size and regime, the reason stated in the log.
 //   - up to kAlwaysDirectUpTo unknowns: Direct (Amesos2 KLU2), cheap at that size;
 //   - a matrix that is not symmetric positive definite (contact multipliers, friction, links):
-//     Direct, whatever the size (Jacobi has no diagonal to invert on a multiplier row);
+//     Direct, whatever the size (Jacobi has no diagonal to invert on a multiplier row), with
+//     the distributed package (MUMPS, when the build has it) above kAlwaysDirectUpTo: it factors
+//     on every rank where KLU2 gathers the system to rank 0 (measured on the scale scene's bars
+//     with Lagrange contact, docs/performance/direct-packages.md: at 43,308 unknowns MUMPS takes
+//     0.95 of KLU2's time on one rank and 0.61 on two, where KLU2 gains nothing);
 //   - symmetric and mass-dominated (theta <= kJacobiUpTo, theta the largest ratio of a row's
 //     stiffness to its mass in the Newton matrix): CG + Jacobi, whose iterations are bounded by
 //     the condition number of D^-1 W, at most about 1 + theta;
@@ -34,11 +38,13 @@ struct SolverRegime {
   std::string notSymmetricBecause;    // empty: symmetric positive definite; else why not, e.g.
                                       // "contact method 'Lagrange' has multipliers"
   double stiffnessToMass = std::numeric_limits<double>::infinity();  // theta
+  std::string distributedDirect;      // the direct package that factors on every rank ("": none)
   bool symmetricPositive() const { return notSymmetricBecause.empty(); }
 };
 
 struct SolverChoice {
   std::string method, preconditioner;  // 'Linear Solver' values; preconditioner "" for Direct
+  std::string package;                 // Direct's package ("": the input's 'Direct Package')
   std::string reason;                  // one clause for the log
 };
 

@@ -34,6 +34,23 @@ TEST(SolverChoice, MatricesThatAreNotSpdAreDirectAtAnySize) {
   EXPECT_NE(c.reason.find("multipliers"), std::string::npos) << c.reason;
 }
 
+TEST(SolverChoice, MatricesThatAreNotSpdTakeTheDistributedPackageAboveTheSmallSize) {
+  SolverRegime small = regime(kAlwaysDirectUpTo, 1.0, "contact friction");
+  small.distributedDirect = "MUMPS";
+  EXPECT_EQ(chooseLinearSolver(small).package, "");  // the input's (KLU2)
+  SolverRegime large = regime(kAlwaysDirectUpTo + 1, 1.0, "contact friction");
+  EXPECT_EQ(chooseLinearSolver(large).package, "");  // no distributed package in this build
+  large.distributedDirect = "MUMPS";
+  const SolverChoice c = chooseLinearSolver(large);
+  EXPECT_EQ(c.method, "Direct");
+  EXPECT_EQ(c.package, "MUMPS");
+  EXPECT_NE(c.reason.find("MUMPS factors it on every rank"), std::string::npos) << c.reason;
+  // A symmetric positive definite matrix keeps its rules (no package chosen).
+  SolverRegime spd = regime(50000, 1e6);
+  spd.distributedDirect = "MUMPS";
+  EXPECT_EQ(chooseLinearSolver(spd).package, "");
+}
+
 TEST(SolverChoice, StiffnessDominatedIsDirectThenJacobiThenSchwarz) {
   EXPECT_EQ(chooseLinearSolver(regime(50000, kJacobiUpTo)).preconditioner, "Jacobi");
   EXPECT_EQ(chooseLinearSolver(regime(50000, 1.01 * kJacobiUpTo)).method, "Direct");

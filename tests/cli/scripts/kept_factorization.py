@@ -15,7 +15,7 @@ import subprocess
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-from scale_bars import bars_3_100  # noqa: E402
+from scale_bars import bars_3_100, run_deck  # noqa: E402
 
 choc, src, work, mesh = bars_3_100()
 sys.path.insert(0, os.path.join(src, "tools", "bench"))
@@ -27,16 +27,7 @@ assert 'Update Budget' in refactor and 'Update Budget' not in base
 
 
 def run(name, text, ranks=1):
-    path = os.path.join(work, name + ".xml")
-    with open(path, "w") as f:
-        f.write(text)
-    cmd = [choc, "run", path, "-o", os.path.join(work, name)]
-    if ranks > 1:
-        cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + cmd
-    p = subprocess.run(cmd, capture_output=True, text=True)
-    if p.returncode != 0:
-        sys.exit(f"{name}: choc exited {p.returncode}:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
-    return p.stdout
+    return run_deck(choc, work, name, text, ranks)
 
 
 def figures(log):
