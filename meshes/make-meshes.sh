@@ -47,3 +47,6 @@ gmsh -3 -order 2 -format msh41 "$here/hertz_quarter.geo" -o "$here/hertz_quarter
 # The copper bar probe (penalty contact with the non-dissipative schemes): the cylinder R = 3.2 mm,
 # L = 32.4 mm in HEX8, an O-grid disk (16 segments on the circle) extruded in 24 layers.
 gmsh -3 -format msh41 "$here/copper_bar.geo" -o "$here/copper_bar.msh" > /dev/null
+# The compact block of the direct solvers' benchmark: a 0.1 m steel cube in 10 x 10 x 10 HEX8
+# (tools/bench/bench_block_drop.py makes the larger ones with -setnumber n).
+gmsh -3 -format msh41 "$here/compact_block.geo" -o "$here/compact_block.msh" > /dev/null

@@ -311,8 +311,12 @@ void DirectTransient::buildSolver() {
     if (!choice.package.empty()) lp.set("Direct Package", choice.package);
     b_->solverChoice = "'auto': " + choice.reason;
   }
+  // K, M and the contact rows of Lagrange and penalty contact are symmetric; friction's and the
+  // links' tangents and the continuous method's pressure rows are not.
+  const bool symmetric = !(b_->contact && (b_->contact->hasFriction() || s_.contact.hasPressureUnknowns())) &&
+                         !b_->links;
   try {
-    b_->solver = makeLinearSolver(lp);
+    b_->solver = makeLinearSolver(lp, symmetric);
   } catch (const InputError& e) {
     throwInput(inputFile_, path("Linear Solver"), "", e.what());
   }

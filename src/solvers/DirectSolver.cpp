@@ -164,9 +164,10 @@ class KeptDirectSolver : public LinearSolver {
 
 }  // namespace
 
-std::unique_ptr<LinearSolver> makeDirectSolver(const std::string& package, double tol, int budget) {
+std::unique_ptr<LinearSolver> makeDirectSolver(const std::string& package, double tol, int budget,
+                                               bool symmetric) {
   if (package == "MUMPS" && mumpsAvailable())
-    return std::make_unique<KeptDirectSolver>(makeMumpsBackend(), tol, budget);
+    return std::make_unique<KeptDirectSolver>(makeMumpsBackend(symmetric), tol, budget);
   if (package == "MUMPS" || !amesos2Available(package))
     throw InputError("Linear Solver: direct package '" + package + "' is not available in this build; use " +
                      joinNames(directPackages()));

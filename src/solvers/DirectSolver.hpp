@@ -9,7 +9,8 @@ namespace choc {
 // budget: preconditioned solves a kept factorisation may spend after updateMatrix() before a
 // refactorisation (0: always refactor; -1: by the size, see DirectSolver.cpp).
 // Throws InputError for a package this build does not have.
+// symmetric: every matrix set will be symmetric (a package may factor half of it).
 std::unique_ptr<LinearSolver> makeDirectSolver(const std::string& package, double residualTolerance,
-                                               int budget = -1);
+                                               int budget = -1, bool symmetric = false);
 
 }  // namespace choc

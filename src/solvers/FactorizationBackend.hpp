@@ -29,8 +29,9 @@ class FactorizationBackend {
 // Amesos2's `package` on rank 0 (query with amesos2Available first).
 std::unique_ptr<FactorizationBackend> makeAmesos2RootBackend(const std::string& package);
 bool amesos2Available(const std::string& package);
-// MUMPS on every rank of A's communicator; null when this build has no MUMPS.
-std::unique_ptr<FactorizationBackend> makeMumpsBackend();
+// MUMPS on every rank of A's communicator; null when this build has no MUMPS. `symmetric`: every
+// matrix set will be symmetric (LDL^T on half of it where each rank's block confirms it).
+std::unique_ptr<FactorizationBackend> makeMumpsBackend(bool symmetric = false);
 bool mumpsAvailable();
 // The Amesos2 packages this build has (KLU2 first).
 std::vector<std::string> amesos2Packages();

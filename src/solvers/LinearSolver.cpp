@@ -48,12 +48,12 @@ Teuchos::ParameterList linearSolverParameters() {
   return p;
 }
 
-std::unique_ptr<LinearSolver> makeLinearSolver(const Teuchos::ParameterList& params) {
+std::unique_ptr<LinearSolver> makeLinearSolver(const Teuchos::ParameterList& params, bool symmetric) {
   const std::string method = params.get<std::string>("Method");
   if (method == "Direct" || method == "auto")  // 'auto' unresolved (no regime known): Direct
     return makeDirectSolver(params.get<std::string>("Direct Package"),
                             std::max(params.get<double>("Tolerance"), 1e-8),
-                            params.get<int>("Update Budget"));
+                            params.get<int>("Update Budget"), symmetric);
   return makeIterativeSolver(params);
 }
 

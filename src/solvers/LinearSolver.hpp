@@ -55,8 +55,9 @@ class LinearSolver {
 
 // The valid "Linear Solver" sublist.
 Teuchos::ParameterList linearSolverParameters();
-// Builds from a validated "Linear Solver" sublist.
-std::unique_ptr<LinearSolver> makeLinearSolver(const Teuchos::ParameterList& params);
+// Builds from a validated "Linear Solver" sublist. symmetric: the caller knows every matrix it
+// will set is symmetric (a direct package may then factor half of it).
+std::unique_ptr<LinearSolver> makeLinearSolver(const Teuchos::ParameterList& params, bool symmetric = false);
 
 // ||b - A x|| / ||b|| for each column, returns the largest (0 when b = 0 and x = 0).
 double relativeResidual(const CrsMatrix& A, const MultiVector& b, const MultiVector& x);

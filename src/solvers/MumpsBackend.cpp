@@ -1,6 +1,6 @@
 // The MUMPS backend (see FactorizationBackend.hpp): distributed assembled input (ICNTL(18) = 3),
 // the analysis once per graph, the factorisation per matrix, a centralised right-hand side and
-// solution on rank 0. Errors are MUMPS' global ones (INFOG(1), the same on every rank): a
+// solution on rank 0; symmetric matrices by LDL^T on their lower triangle. Errors are MUMPS' global ones (INFOG(1), the same on every rank): a
 // workspace too small is retried with twice the relaxation (ICNTL(14)), up to 4 times.
 #include "solvers/FactorizationBackend.hpp"
 
@@ -15,6 +15,7 @@
 
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
+#include "fem/SymmetricProduct.hpp"
 #endif
 
 namespace choc {
@@ -22,16 +23,17 @@ namespace choc {
 #ifdef CHOC_HAVE_MUMPS
 namespace {
 
-class MumpsBackend : public FactorizationBackend {
+// One MUMPS instance: general (LU) or symmetric (LDL^T with pivoting, given the lower triangle).
+class MumpsInstance {
  public:
-  MumpsBackend() = default;
-  MumpsBackend(const MumpsBackend&) = delete;
-  MumpsBackend& operator=(const MumpsBackend&) = delete;
-  ~MumpsBackend() override { finish(); }
+  explicit MumpsInstance(bool symmetric) : symmetric_(symmetric) {}
+  MumpsInstance(const MumpsInstance&) = delete;
+  MumpsInstance& operator=(const MumpsInstance&) = delete;
+  ~MumpsInstance() { finish(); }
 
-  std::string factor(RCP<const CrsMatrix> A) override {
+  std::string factor(const RCP<const CrsMatrix>& A) {
     start(*A);
-    const bool newGraph = A.get() != A_.get() || A->getNodeNumEntries() != values_.size();
+    const bool newGraph = A.get() != A_.get() || A->getNodeNumEntries() != entries_;
     A_ = A;
     load(*A, newGraph);
     if (newGraph || !analysed_) {
@@ -49,10 +51,11 @@ class MumpsBackend : public FactorizationBackend {
     return f;
   }
 
-  std::string solve(const MultiVector& b, MultiVector& x) override {
+  // x = A^-1 b, the right-hand side gathered on rank 0 (MUMPS' centralised right-hand side).
+  std::string solve(const MultiVector& b, MultiVector& x) {
     const auto comm = A_->getComm();
     const Tpetra::global_size_t n = A_->getGlobalNumRows();
-    if (importerSource_.get() != A_->getRowMap().get()) {  // the right-hand side gathered on rank 0
+    if (importerSource_.get() != A_->getRowMap().get()) {
       rootMap_ = rcp(new Map(n, comm->getRank() == 0 ? size_t(n) : 0, 0, comm));
       importer_ = rcp(new Tpetra::Import<LO, GO>(A_->getRowMap(), rootMap_));
       importerSource_ = A_->getRowMap();
@@ -72,15 +75,13 @@ class MumpsBackend : public FactorizationBackend {
     return "";
   }
 
-  std::string name() const override { return "MUMPS"; }
-
  private:
   void start(const CrsMatrix& A) {
     if (initialized_) return;
     auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(A.getComm(), true);
     id_.comm_fortran = MUMPS_INT(MPI_Comm_c2f(*mpi->getRawMpiComm()));
-    id_.par = 1;  // rank 0 works too
-    id_.sym = 0;  // general: friction's tangent is not symmetric
+    id_.par = 1;                    // rank 0 works too
+    id_.sym = symmetric_ ? 2 : 0;   // 2: symmetric, not necessarily definite (a saddle point)
     id_.job = -1;
     dmumps_c(&id_);
     if (id_.infog[0] < 0)
@@ -101,24 +102,30 @@ class MumpsBackend : public FactorizationBackend {
     initialized_ = false;
   }
 
-  // The local rows of A as (row, column, value) triples, 1-based global indices; the
-  // indices only when the graph is new.
+  // The local rows of A as (row, column, value) triples, 1-based global indices (the lower
+  // triangle of a symmetric matrix); the indices only when the graph is new.
   void load(const CrsMatrix& A, bool newGraph) {
     const auto L = A.getLocalMatrixHost();
     const auto rowMap = A.getRowMap(), colMap = A.getColMap();
-    const size_t nRows = rowMap->getNodeNumElements(), nnz = L.values.extent(0);
+    const size_t nRows = rowMap->getNodeNumElements();
+    entries_ = A.getNodeNumEntries();
     if (newGraph) {
-      irn_.resize(nnz);
-      jcn_.resize(nnz);
+      irn_.clear();
+      jcn_.clear();
+      taken_.clear();
       for (size_t i = 0; i < nRows; ++i)
         for (size_t k = L.graph.row_map(i); k < L.graph.row_map(i + 1); ++k) {
-          irn_[k] = MUMPS_INT(rowMap->getGlobalElement(LO(i)) + 1);
-          jcn_[k] = MUMPS_INT(colMap->getGlobalElement(L.graph.entries(k)) + 1);
+          const GO row = rowMap->getGlobalElement(LO(i)), col = colMap->getGlobalElement(L.graph.entries(k));
+          if (symmetric_ && col > row) continue;
+          irn_.push_back(MUMPS_INT(row + 1));
+          jcn_.push_back(MUMPS_INT(col + 1));
+          taken_.push_back(k);
         }
     }
-    values_.assign(L.values.data(), L.values.data() + nnz);
+    values_.resize(taken_.size());
+    for (size_t e = 0; e < taken_.size(); ++e) values_[e] = L.values(taken_[e]);
     id_.n = MUMPS_INT(A.getGlobalNumRows());
-    id_.nnz_loc = MUMPS_INT8(nnz);
+    id_.nnz_loc = MUMPS_INT8(values_.size());
     id_.irn_loc = irn_.data();
     id_.jcn_loc = jcn_.data();
     id_.a_loc = values_.data();
@@ -140,22 +147,55 @@ class MumpsBackend : public FactorizationBackend {
     return format("MUMPS %s failed: INFOG(1) = %d, INFOG(2) = %d", phase, code, detail);
   }
 
+  bool symmetric_;
   DMUMPS_STRUC_C id_{};
   bool initialized_ = false, analysed_ = false;
   RCP<const CrsMatrix> A_;
+  size_t entries_ = 0;
   std::vector<MUMPS_INT> irn_, jcn_;
+  std::vector<size_t> taken_;  // the local entries given to MUMPS (all, or the lower triangle)
   std::vector<double> values_;
   RCP<const Map> rootMap_;
   RCP<Tpetra::Import<LO, GO>> importer_;
   RCP<const Map> importerSource_;  // the row map importer_ was built from
 };
 
+// A matrix the caller says is symmetric (the contact saddle point without friction or links)
+// and that is symmetric within round-off in each rank's block (fem/SymmetricProduct's test, which
+// does not see the other ranks' columns: hence the caller's word) is factored by the symmetric
+// instance, LDL^T on its lower triangle (half the entries, about half the work); any other by
+// the general one. Each keeps its own analysis of the graph.
+class MumpsBackend : public FactorizationBackend {
+ public:
+  explicit MumpsBackend(bool symmetricHint) : symmetricHint_(symmetricHint) {}
+  std::string factor(RCP<const CrsMatrix> A) override {
+    const bool symmetric = symmetricHint_ && SymmetricProduct::build(*A) != nullptr;  // collective
+    current_ = symmetric ? &symmetric_ : &general_;
+    factored_ = true;
+    return current_->factor(A);
+  }
+  std::string solve(const MultiVector& b, MultiVector& x) override { return current_->solve(b, x); }
+  // "MUMPS", then the factorisation last made: "MUMPS (LU)" or "MUMPS (LDL^T)".
+  std::string name() const override {
+    if (!factored_) return "MUMPS";
+    return current_ == &symmetric_ ? "MUMPS (LDL^T)" : "MUMPS (LU)";
+  }
+
+ private:
+  bool symmetricHint_;
+  bool factored_ = false;
+  MumpsInstance general_{false}, symmetric_{true};
+  MumpsInstance* current_ = &general_;
+};
+
 }  // namespace
 
-std::unique_ptr<FactorizationBackend> makeMumpsBackend() { return std::make_unique<MumpsBackend>(); }
+std::unique_ptr<FactorizationBackend> makeMumpsBackend(bool symmetric) {
+  return std::make_unique<MumpsBackend>(symmetric);
+}
 bool mumpsAvailable() { return true; }
 #else
-std::unique_ptr<FactorizationBackend> makeMumpsBackend() { return nullptr; }
+std::unique_ptr<FactorizationBackend> makeMumpsBackend(bool) { return nullptr; }
 bool mumpsAvailable() { return false; }
 #endif
 

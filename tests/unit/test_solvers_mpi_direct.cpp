@@ -45,7 +45,7 @@ struct ClampedBar {
   }
 };
 
-void solveAndCheck(const std::string& method, const std::string& package = "KLU2") {
+void solveAndCheck(const std::string& method, const std::string& package = "KLU2", bool symmetric = false) {
   ClampedBar bar;
   auto K = bar.assembler->stiffness();
   MultiVector f(K->getRangeMap(), 1), u(K->getDomainMap(), 1);
@@ -57,11 +57,12 @@ void solveAndCheck(const std::string& method, const std::string& package = "KLU2
   p.set("Method", method);
   p.set("Direct Package", package);
   p.set("Tolerance", 1e-12);
-  auto solver = makeLinearSolver(p);
+  auto solver = makeLinearSolver(p, symmetric);
   solver->setMatrix(K);
   LinearSolveStatus st = solver->solve(f, u);
   ASSERT_TRUE(st.converged) << st.message;
   EXPECT_LT(st.relativeResidual, 1e-10);
+  if (package == "MUMPS") EXPECT_EQ(solver->description(), symmetric ? "MUMPS (LDL^T)" : "MUMPS (LU)");
   auto all = gatherAll(u, 0, *bar.dofs);
   // Bar 2 from C (x=0) to D (x=-1): load +F at C, u(x) = F (x + 1) / (E A).
   for (int n : bar.mesh.findNodeSet("POU2")->nodes) {
@@ -77,6 +78,11 @@ TEST(MpiLinearSolver, DirectKlu2MatchesExactStaticSolution) { solveAndCheck("Dir
 TEST(MpiLinearSolver, DirectMumpsMatchesExactStaticSolution) {
   ASSERT_TRUE(mumpsAvailable()) << "this build has no MUMPS (CMake found no libmumps-dev)";
   solveAndCheck("Direct", "MUMPS");
+}
+// The same matrix said to be symmetric: LDL^T on its lower triangle.
+TEST(MpiLinearSolver, DirectMumpsSymmetricMatchesExactStaticSolution) {
+  ASSERT_TRUE(mumpsAvailable()) << "this build has no MUMPS (CMake found no libmumps-dev)";
+  solveAndCheck("Direct", "MUMPS", true);
 }
 TEST(MpiLinearSolver, CgMatchesExactStaticSolution) { solveAndCheck("CG"); }
 TEST(MpiLinearSolver, GmresMatchesExactStaticSolution) { solveAndCheck("GMRES"); }

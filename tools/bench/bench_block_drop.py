@@ -1,0 +1,92 @@
+#!/usr/bin/env python3
+"""A compact 3D body on the direct solvers: input/compact_block.xml (a 0.1 m steel cube dropped
+flat on a rigid plane at 1 m/s, its lower face in contact from the first step, 10 steps of 1 us)
+on n x n x n HEX8 (meshes/compact_block.geo), with
+  - Lagrange contact and Method = Direct, Direct Package = KLU2 (the system gathered on rank 0);
+  - Lagrange contact and Method = Direct, Direct Package = MUMPS (every rank);
+  - Penalty contact (penalty stiffness 1e11 N/m per node) with 'auto' (the reference of a
+    symmetric positive definite system: CG + Jacobi at this step),
+on 1 and 2 ranks. Reports per size, run and rank count the medians over --repeat runs of the time
+per step, the analysis and linear-solve times, the factorisations, the largest process's memory
+and that memory per unknown, and the largest difference of corner:DZ from the first run's, of its
+peak. Writes results/bench/bench_block_drop.json.
+
+    bench_block_drop.py [--build build] [--repeat 3] [--sizes 16 20] [--ranks 1 2]"""
+import argparse
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "lib"))
+import chocrun  # noqa: E402
+
+TABLE = [["n", "n", "d"], ["unknowns", "unknowns", ",d"], ["run", "run", ""], ["ranks", "ranks", "d"],
+         ["step_s", "time per step [s]", ".3f"], ["solve_s", "linear solve [s]", ".2f"],
+         ["factorizations", "factorisations", "d"], ["peak_rss_mib", "peak memory [MiB]", ".0f"],
+         ["kib_per_unknown", "memory per unknown [KiB]", ".1f"],
+         ["max_difference", "corner:DZ vs the first run, of its peak", ".1e"]]
+RUNS = {"Lagrange, KLU2": ("Lagrange", "Direct", "KLU2"), "Lagrange, MUMPS": ("Lagrange", "Direct", "MUMPS"),
+        "Penalty, auto": ("Penalty", "auto", None)}
+
+
+def deck(mesh, method, solver, package):
+    d = chocrun.load_deck(chocrun.input_path("compact_block.xml"))
+    an = "Analyses/drop"
+    chocrun.set_param(d, "Mesh/File", mesh)
+    chocrun.set_param(d, f"{an}/Contact/Method", method)
+    if method == "Penalty":
+        chocrun.set_param(d, f"{an}/Contact/Penalty Stiffness", 1e11, type="double", create=True)
+    chocrun.set_param(d, f"{an}/Linear Solver/Method", solver, create=True)
+    if package:
+        chocrun.set_param(d, f"{an}/Linear Solver/Direct Package", package, create=True)
+    return d
+
+
+def measure(choc, path, out, ranks):
+    r = chocrun.run(choc, path, out, ranks=ranks)
+    s = chocrun.require_completed(chocrun.read_summary(out, "drop"))
+    v = lambda key: chocrun.summary_value(s, key)  # noqa: E731
+    steps = max(1, v("steps"))
+    return {"unknowns": v("unknowns"), "step_s": v("timers/analysis/max") / steps,
+            "solve_s": v("timers/linear_solve/max"), "factorizations": v("factorizations"),
+            "peak_rss_mib": r.maxrss_mib, "kib_per_unknown": 1024.0 * r.maxrss_mib / max(1, v("unknowns")),
+            "choc_commit": v("choc/commit")}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default=os.path.join(chocrun.TOP, "build"))
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--sizes", nargs="+", type=int, default=[16, 20])
+    ap.add_argument("--ranks", nargs="+", type=int, default=[1, 2])
+    ap.add_argument("--out", default=os.path.join(chocrun.TOP, "results", "bench-block-drop"))
+    ap.add_argument("--json", default=None, help="the figures' file (default results/bench/<bench>.json)")
+    a = ap.parse_args()
+    choc = chocrun.choc_path(a.build)
+    os.makedirs(a.out, exist_ok=True)
+    rows = []
+    for n in a.sizes:
+        mesh = os.path.join(a.out, f"block_{n}.msh")
+        subprocess.run(["gmsh", "-3", "-format", "msh41", "-setnumber", "n", str(n),
+                        os.path.join(chocrun.TOP, "meshes", "compact_block.geo"), "-o", mesh],
+                       check=True, stdout=subprocess.DEVNULL)
+        reference = None
+        for label, (method, solver, package) in RUNS.items():
+            path = chocrun.write_deck(deck(mesh, method, solver, package),
+                                      os.path.join(a.out, f"block_{n}_{method}_{package or solver}.xml"))
+            for ranks in a.ranks:
+                out = os.path.join(a.out, f"block_{n}_{method}_{package or solver}_np{ranks}")
+                rec = chocrun.median_record([measure(choc, path, out, ranks) for _ in range(a.repeat)])
+                history = chocrun.read_history(out, "drop")
+                reference = reference if reference is not None else history
+                rec["max_difference"] = max(chocrun.history_difference(reference, history, ["corner:DZ"]).values())
+                rec.update({"n": n, "run": label, "ranks": ranks})
+                rows.append(rec)
+    tables = [{"title": f"A compact block on a rigid plane (medians of {a.repeat} runs)", "columns": TABLE}]
+    chocrun.print_tables(rows, tables)
+    chocrun.write_bench_json("bench_block_drop", "A compact block dropped on a rigid plane", rows, tables, vars(a),
+                             a.json, choc_commit=rows[0]["choc_commit"] if rows else None)
+
+
+if __name__ == "__main__":
+    main()
