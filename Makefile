@@ -42,10 +42,13 @@ bench: build
 	$(PYTHON) tools/bench/bench_explicit.py --build $(BUILD) --end-time 2e-5 --mesh 18 560 --ranks 2 --contact lagrange
 	$(PYTHON) tools/bench/bench_kept_factorization.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_direct_packages.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_block_drop.py --build $(BUILD)
 
-# The direct packages on a contact scene: KLU2 on rank 0 against MUMPS on every rank, 1 and 2 ranks.
+# The direct packages on contact scenes: KLU2 on rank 0 against MUMPS on every rank, 1 and 2
+# ranks; the scale scene's bars, then a compact block (against penalty contact too).
 bench-direct: build
 	$(PYTHON) tools/bench/bench_direct_packages.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_block_drop.py --build $(BUILD)
 
 # Contact status changes on a kept factorisation (Update Budget) against refactoring at each.
 bench-kept: build

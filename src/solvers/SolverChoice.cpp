@@ -45,7 +45,11 @@ SolverChoice chooseLinearSolver(const SolverRegime& r) {
   if (r.stiffnessToMass <= kJacobiUpTo)
     return {"CG", "Jacobi", "", size + ", symmetric, mass-dominated: stiffness/mass " + theta + " <= " + limit};
   const std::string stiff = size + ", symmetric, stiffness-dominated: stiffness/mass " + theta + " > " + limit;
-  if (r.unknowns <= kDirectUpTo) return {"Direct", "", "", stiff + ", at most " + withCommas(kDirectUpTo) + " unknowns"};
+  if (r.unknowns <= kDirectUpTo) {
+    const std::string why = stiff + ", at most " + withCommas(kDirectUpTo) + " unknowns";
+    if (r.distributedDirect.empty()) return {"Direct", "", "", why};
+    return {"Direct", "", r.distributedDirect, why + "; " + r.distributedDirect + " factors it on every rank"};
+  }
   const std::string large = stiff + ", more than " + withCommas(kDirectUpTo) + " unknowns, stiffness/mass ";
   const std::string largeLimit = withCommas((long long)kLargeJacobiUpTo);
   if (r.stiffnessToMass <= kLargeJacobiUpTo) return {"CG", "Jacobi", "", large + "<= " + largeLimit};

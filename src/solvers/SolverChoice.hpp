@@ -10,8 +10,10 @@
 //   - symmetric and mass-dominated (theta <= kJacobiUpTo, theta the largest ratio of a row's
 //     stiffness to its mass in the Newton matrix): CG + Jacobi, whose iterations are bounded by
 //     the condition number of D^-1 W, at most about 1 + theta;
-//   - symmetric and stiffness-dominated: Direct up to kDirectUpTo unknowns; beyond, CG + Jacobi
-//     while theta <= kLargeJacobiUpTo, then CG + Additive Schwarz (ILU(0) per rank).
+//   - symmetric and stiffness-dominated: Direct up to kDirectUpTo unknowns (MUMPS when the build
+//     has it: on a compact body it factors 8 times faster than KLU2, docs/performance/
+//     direct-packages.md); beyond, CG + Jacobi while theta <= kLargeJacobiUpTo, then CG +
+//     Additive Schwarz (ILU(0) per rank).
 // Measured on the scale scene's bars (docs/performance/linear-solver-auto.md): at dt = 1e-6 s (theta 1.6 to 22)
 // CG + Jacobi takes 0.4, 0.28, 0.22 and 0.11 of Direct's time at 9,648, 22,575, 43,308 and
 // 134,592 unknowns and 0.55 of CG + Additive Schwarz's at 300,300; at dt = 1e-5 s (43,308

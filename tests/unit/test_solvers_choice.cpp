@@ -45,10 +45,16 @@ TEST(SolverChoice, MatricesThatAreNotSpdTakeTheDistributedPackageAboveTheSmallSi
   EXPECT_EQ(c.method, "Direct");
   EXPECT_EQ(c.package, "MUMPS");
   EXPECT_NE(c.reason.find("MUMPS factors it on every rank"), std::string::npos) << c.reason;
-  // A symmetric positive definite matrix keeps its rules (no package chosen).
+  // A symmetric positive definite matrix keeps its rules; its direct solves are the distributed
+  // package's too, its iterative ones have none.
   SolverRegime spd = regime(50000, 1e6);
   spd.distributedDirect = "MUMPS";
-  EXPECT_EQ(chooseLinearSolver(spd).package, "");
+  EXPECT_EQ(chooseLinearSolver(spd).method, "Direct");
+  EXPECT_EQ(chooseLinearSolver(spd).package, "MUMPS");
+  SolverRegime mass = regime(50000, 1.0);
+  mass.distributedDirect = "MUMPS";
+  EXPECT_EQ(chooseLinearSolver(mass).method, "CG");
+  EXPECT_EQ(chooseLinearSolver(mass).package, "");
 }
 
 TEST(SolverChoice, StiffnessDominatedIsDirectThenJacobiThenSchwarz) {
