@@ -12,7 +12,6 @@ and that memory per unknown, and the largest difference of corner:DZ from the fi
 peak. Writes results/bench/bench_block_drop.json.
 
     bench_block_drop.py [--build build] [--repeat 3] [--sizes 16 20] [--ranks 1 2]"""
-import argparse
 import os
 import subprocess
 import sys
@@ -54,13 +53,9 @@ def measure(choc, path, out, ranks):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--build", default=os.path.join(chocrun.TOP, "build"))
-    ap.add_argument("--repeat", type=int, default=3)
+    ap = chocrun.bench_arguments(__doc__, "bench-block-drop")
     ap.add_argument("--sizes", nargs="+", type=int, default=[16, 20])
     ap.add_argument("--ranks", nargs="+", type=int, default=[1, 2])
-    ap.add_argument("--out", default=os.path.join(chocrun.TOP, "results", "bench-block-drop"))
-    ap.add_argument("--json", default=None, help="the figures' file (default results/bench/<bench>.json)")
     a = ap.parse_args()
     choc = chocrun.choc_path(a.build)
     os.makedirs(a.out, exist_ok=True)
@@ -83,9 +78,7 @@ def main():
                 rec.update({"n": n, "run": label, "ranks": ranks})
                 rows.append(rec)
     tables = [{"title": f"A compact block on a rigid plane (medians of {a.repeat} runs)", "columns": TABLE}]
-    chocrun.print_tables(rows, tables)
-    chocrun.write_bench_json("bench_block_drop", "A compact block dropped on a rigid plane", rows, tables, vars(a),
-                             a.json, choc_commit=rows[0]["choc_commit"] if rows else None)
+    chocrun.report_bench("bench_block_drop", "A compact block dropped on a rigid plane", rows, tables, a)
 
 
 if __name__ == "__main__":

@@ -9,7 +9,6 @@ largest difference of the histories from KLU2's on one rank, of each peak. Write
 results/bench/bench_direct_packages.json.
 
     bench_direct_packages.py [--build build] [--repeat 3] [--sizes 3x100 5x200] [--ranks 1 2]"""
-import argparse
 import os
 import sys
 
@@ -33,13 +32,9 @@ def measure(choc, path, out, analysis, ranks):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--build", default=os.path.join(chocrun.TOP, "build"))
-    ap.add_argument("--repeat", type=int, default=3)
+    ap = chocrun.bench_arguments(__doc__, "bench-direct-packages")
     ap.add_argument("--sizes", nargs="+", default=["3x100", "5x200"])
     ap.add_argument("--ranks", nargs="+", type=int, default=[1, 2])
-    ap.add_argument("--out", default=os.path.join(chocrun.TOP, "results", "bench-direct-packages"))
-    ap.add_argument("--json", default=None, help="the figures' file (default results/bench/<bench>.json)")
     a = ap.parse_args()
     choc = chocrun.choc_path(a.build)
     os.makedirs(a.out, exist_ok=True)
@@ -63,9 +58,7 @@ def main():
                 rec.update({"size": size, "package": package, "ranks": ranks})
                 rows.append(rec)
     tables = [{"title": f"KLU2 on rank 0 against MUMPS on every rank (medians of {a.repeat} runs)", "columns": TABLE}]
-    chocrun.print_tables(rows, tables)
-    chocrun.write_bench_json("bench_direct_packages", "Direct packages on a contact scene", rows, tables, vars(a),
-                             a.json, choc_commit=rows[0]["choc_commit"] if rows else None)
+    chocrun.report_bench("bench_direct_packages", "Direct packages on a contact scene", rows, tables, a)
 
 
 if __name__ == "__main__":

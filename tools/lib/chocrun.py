@@ -724,3 +724,22 @@ def print_tables(runs, tables):
         print("\n".join(markdown_table(runs, t["columns"], t.get("where"))))
         if t.get("note"):
             print(t["note"])
+
+
+def bench_arguments(doc, results_dir, repeat=3):
+    """The arguments every benchmark takes: --build, --repeat, --out (results/<results_dir>),
+    --json; the caller adds its own and parses."""
+    import argparse
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default=os.path.join(TOP, "build"))
+    ap.add_argument("--repeat", type=int, default=repeat)
+    ap.add_argument("--out", default=os.path.join(TOP, "results", results_dir))
+    ap.add_argument("--json", default=None, help="the figures' file (default results/bench/<bench>.json)")
+    return ap
+
+
+def report_bench(name, title, rows, tables, args):
+    """Prints the benchmark's tables and writes its figures (write_bench_json)."""
+    print_tables(rows, tables)
+    write_bench_json(name, title, rows, tables, vars(args), args.json,
+                     choc_commit=rows[0]["choc_commit"] if rows else None)
