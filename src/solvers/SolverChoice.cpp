@@ -33,23 +33,21 @@ std::string withCommas(long long n) {
 }  // namespace
 
 SolverChoice chooseLinearSolver(const SolverRegime& r) {
-  const std::string size = withCommas(r.unknowns) + " unknowns";
-  if (r.unknowns <= kAlwaysDirectUpTo) return {"Direct", "", "", size + ", at most " + withCommas(kAlwaysDirectUpTo)};
-  if (!r.symmetricPositive()) {
-    const std::string why = size + "; the matrix is not symmetric positive definite (" + r.notSymmetricBecause + ")";
+  // Direct, with the distributed package when the build has one (above kAlwaysDirectUpTo).
+  const auto direct = [&r](const std::string& why) -> SolverChoice {
     if (r.distributedDirect.empty()) return {"Direct", "", "", why};
     return {"Direct", "", r.distributedDirect, why + "; " + r.distributedDirect + " factors it on every rank"};
-  }
+  };
+  const std::string size = withCommas(r.unknowns) + " unknowns";
+  if (r.unknowns <= kAlwaysDirectUpTo) return {"Direct", "", "", size + ", at most " + withCommas(kAlwaysDirectUpTo)};
+  if (!r.symmetricPositive())
+    return direct(size + "; the matrix is not symmetric positive definite (" + r.notSymmetricBecause + ")");
   const std::string theta = format("%.3g", r.stiffnessToMass);
   const std::string limit = std::to_string(int(kJacobiUpTo));
   if (r.stiffnessToMass <= kJacobiUpTo)
     return {"CG", "Jacobi", "", size + ", symmetric, mass-dominated: stiffness/mass " + theta + " <= " + limit};
   const std::string stiff = size + ", symmetric, stiffness-dominated: stiffness/mass " + theta + " > " + limit;
-  if (r.unknowns <= kDirectUpTo) {
-    const std::string why = stiff + ", at most " + withCommas(kDirectUpTo) + " unknowns";
-    if (r.distributedDirect.empty()) return {"Direct", "", "", why};
-    return {"Direct", "", r.distributedDirect, why + "; " + r.distributedDirect + " factors it on every rank"};
-  }
+  if (r.unknowns <= kDirectUpTo) return direct(stiff + ", at most " + withCommas(kDirectUpTo) + " unknowns");
   const std::string large = stiff + ", more than " + withCommas(kDirectUpTo) + " unknowns, stiffness/mass ";
   const std::string largeLimit = withCommas((long long)kLargeJacobiUpTo);
   if (r.stiffnessToMass <= kLargeJacobiUpTo) return {"CG", "Jacobi", "", large + "<= " + largeLimit};
