@@ -1,5 +1,7 @@
 #include "analysis/DirectTransient.hpp"
 
+#include "fem/NodalBlocks.hpp"
+
 #include <algorithm>
 #include <limits>
 #include <sstream>
@@ -16,6 +18,7 @@
 #include "core/Log.hpp"
 #include "fem/Components.hpp"
 #include "fem/MatrixOps.hpp"
+#include "fem/NodalBlocks.hpp"
 #include "input/ParameterSpec.hpp"
 #include "output/InteractionList.hpp"
 #include "physics/CriticalStep.hpp"
@@ -139,6 +142,13 @@ DirectTransient::DirectTransient(const std::string& name, const Teuchos::Paramet
     throwInput(inputFile_, path("Linear Solver/Method"), "CG",
                "the saddle-point system of contact method '" + s_.contact.methodName() + "' is indefinite",
                "use Direct, GMRES or MINRES (or the Penalty method with CG)");
+  const Teuchos::ParameterList& lp = params_.sublist("Linear Solver");
+  if (!s_.explicitScheme && s_.contact.hasMultipliers() && lp.get<std::string>("Preconditioner") == "Multigrid" &&
+      lp.get<std::string>("Method") != "Direct")
+    throwInput(inputFile_, path("Linear Solver/Preconditioner"), "Multigrid",
+               "the Newton matrix of contact method '" + s_.contact.methodName() +
+                   "' has multiplier rows, which multigrid for elasticity does not aggregate",
+               "use the Penalty method with Multigrid, or Method = Direct or auto");
 }
 
 void DirectTransient::readScheme() {
@@ -199,7 +209,7 @@ void DirectTransient::setup(SetupContext& ctx) {
   }
   std::vector<ShockLink> links = readShockLinks(params_, model, "Analyses/" + name_);
   if (!links.empty()) b_->links = std::make_unique<DirectLinks>(std::move(links), model, model.map());
-  buildSolver();  // an explicit run never uses it (no effective matrix is built)
+  buildSolver(model);  // an explicit run never uses it (no effective matrix is built)
   if (s_.explicitScheme) setupExplicit(model);
   b_->probes = parseProbes(s_.output.history, model, path("History"));
   std::vector<std::string> probeColumns;
@@ -287,7 +297,7 @@ void DirectTransient::setupExplicit(const Model& model) {
        s_.time.timeStep, s_.time.endTime - s_.time.startTime, s_.stability, s_.output.limits, inputFile_, "Analyses/" + name_}));
 }
 
-void DirectTransient::buildSolver() {
+void DirectTransient::buildSolver(const Model& model) {
   Teuchos::ParameterList lp = params_.sublist("Linear Solver");
   if (lp.get<std::string>("Method") == "auto" && !s_.explicitScheme) {
     SolverRegime r;
@@ -315,8 +325,12 @@ void DirectTransient::buildSolver() {
   // links' tangents and the continuous method's pressure rows are not.
   const bool symmetric = !(b_->contact && (b_->contact->hasFriction() || s_.contact.hasPressureUnknowns())) &&
                          !b_->links;
+  std::shared_ptr<const NodalBlocks> blocks;
+  if (lp.get<std::string>("Preconditioner") == "Multigrid" && lp.get<std::string>("Method") != "Direct" &&
+      !s_.explicitScheme)  // (multiplier rows were refused with the input)
+    blocks = std::make_shared<const NodalBlocks>(nodalBlocks(model.dofs(), model.mesh().coords));
   try {
-    b_->solver = makeLinearSolver(lp, symmetric);
+    b_->solver = makeLinearSolver(lp, symmetric, std::move(blocks));
   } catch (const InputError& e) {
     throwInput(inputFile_, path("Linear Solver"), "", e.what());
   }

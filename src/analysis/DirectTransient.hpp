@@ -75,7 +75,7 @@ class DirectTransient : public Analysis {
   void readTimeSettings();
   std::shared_ptr<const Loads> assembleLoads(const Model& model) const;
   void buildContact(Model& model);
-  void buildSolver();
+  void buildSolver(const Model& model);
   void setupExplicit(const Model& model);
   std::unique_ptr<StructuralStepper> stepper(StructuralOperator& op) const;
   void describe(Model& model, const StructuralOperator& op) const;

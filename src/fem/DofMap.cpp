@@ -61,4 +61,10 @@ int DofMap::ownerOfNode(int node) const {
   return static_cast<int>(it - rankNodeBegin_.begin()) - 1;
 }
 
+std::vector<int> DofMap::order() const {
+  std::vector<int> o(pos_.size());
+  for (int node = 0; node < static_cast<int>(pos_.size()); ++node) o[pos_[node]] = node;
+  return o;
+}
+
 }  // namespace choc

@@ -32,6 +32,11 @@ class DofMap {
   long long dof(int node, int comp) const;
   // Owner rank of a node.
   int ownerOfNode(int node) const;
+  // The node order: order()[p] is the node at position p; this rank owns the positions
+  // [ownedPositionBegin(), ownedPositionEnd()).
+  std::vector<int> order() const;
+  int ownedPositionBegin() const { return nodeBegin_; }
+  int ownedPositionEnd() const { return nodeEnd_; }
 
  private:
   std::vector<std::uint8_t> mask_;

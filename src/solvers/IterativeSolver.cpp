@@ -12,6 +12,7 @@
 
 #include "core/Errors.hpp"
 #include "core/Memory.hpp"
+#include "solvers/ElasticityMultigrid.hpp"
 #include "solvers/SymmetricOperator.hpp"
 
 namespace choc {
@@ -23,8 +24,9 @@ using Preconditioner = Ifpack2::Preconditioner<double, LO, GO>;
 
 class BelosSolver : public LinearSolver {
  public:
-  explicit BelosSolver(const Teuchos::ParameterList& p)
-      : method_(p.get<std::string>("Method")),
+  BelosSolver(const Teuchos::ParameterList& p, std::shared_ptr<const NodalBlocks> blocks)
+      : blocks_(std::move(blocks)),
+        method_(p.get<std::string>("Method")),
         precType_(p.get<std::string>("Preconditioner")),
         tol_(p.get<double>("Tolerance")),
         maxIters_(p.get<int>("Maximum Iterations")),
@@ -33,7 +35,10 @@ class BelosSolver : public LinearSolver {
   void setMatrix(RCP<const CrsMatrix> A) override {
     A_ = A;
     prec_ = Teuchos::null;
-    if (precType_ != "None") {
+    if (precType_ == "Multigrid") {
+      if (multigrid_.is_null()) multigrid_ = rcp(new ElasticityMultigrid(blocks_));
+      multigrid_->compute(A);
+    } else if (precType_ != "None") {
       const std::string ifpackName =
           precType_ == "Jacobi" || precType_ == "Gauss-Seidel" ? "RELAXATION"
           : precType_ == "Additive Schwarz"                    ? "SCHWARZ"
@@ -69,6 +74,7 @@ class BelosSolver : public LinearSolver {
     problem_ = rcp(new Belos::LinearProblem<double, MultiVector, Operator>());
     problem_->setOperator(krylovOperator(A_));
     if (!prec_.is_null()) problem_->setRightPrec(prec_);
+    if (!multigrid_.is_null()) problem_->setRightPrec(multigrid_);
     if (solver_.is_null()) {
       params_ = rcp(new Teuchos::ParameterList);
       params_->set("Convergence Tolerance", tol_);
@@ -115,7 +121,9 @@ class BelosSolver : public LinearSolver {
     return st;
   }
 
-  std::string description() const override { return "Belos " + method_ + " + " + precType_; }
+  std::string description() const override {
+    return "Belos " + method_ + " + " + (multigrid_.is_null() ? precType_ : multigrid_->description());
+  }
 
   // The operator the Krylov iterations multiply by: for the symmetric methods (CG, MINRES) on a
   // large symmetric A, A's products from half its entries (SymmetricOperator), refilled when a
@@ -131,6 +139,7 @@ class BelosSolver : public LinearSolver {
   }
 
  private:
+  std::shared_ptr<const NodalBlocks> blocks_;
   std::string method_, precType_;
   double tol_, activeTol_ = 0.0;
   int maxIters_, overlap_;
@@ -138,14 +147,19 @@ class BelosSolver : public LinearSolver {
   RCP<const CrsMatrix> A_;
   RCP<SymmetricOperator> symmetric_;
   RCP<Preconditioner> prec_;
+  RCP<ElasticityMultigrid> multigrid_;
   RCP<Belos::LinearProblem<double, MultiVector, Operator>> problem_;
   RCP<Belos::SolverManager<double, MultiVector, Operator>> solver_;
 };
 
 }  // namespace
 
-std::unique_ptr<LinearSolver> makeIterativeSolver(const Teuchos::ParameterList& params) {
-  return std::make_unique<BelosSolver>(params);
+std::unique_ptr<LinearSolver> makeIterativeSolver(const Teuchos::ParameterList& params,
+                                                  std::shared_ptr<const NodalBlocks> blocks) {
+  if (params.get<std::string>("Preconditioner") == "Multigrid" && !blocks)
+    throw InputError("Preconditioner 'Multigrid' needs the model's nodes; this analysis does not offer it "
+                     "(valid here: None, RILUK, ILUT, Jacobi, Gauss-Seidel, Additive Schwarz)");
+  return std::make_unique<BelosSolver>(params, std::move(blocks));
 }
 
 }  // namespace choc

@@ -18,7 +18,7 @@ Teuchos::ParameterList linearSolverParameters() {
                 "is not symmetric positive definite (contact multipliers, friction, links); else CG "
                 "+ Jacobi when the Newton matrix is mass-dominated (largest row ratio of stiffness "
                 "to mass <= 100), Direct up to 100,000 unknowns, beyond CG + Jacobi up to a ratio "
-                "of 10,000 and CG + Additive Schwarz above; the log states the choice "
+                "of 10,000 and CG + Multigrid above; the log states the choice "
                 "(src/solvers/SolverChoice.hpp)");
   declareChoice(p, "Direct Package", "KLU2", directPackages(),
                 "sparse direct solver of Method = Direct (the packages this build has): KLU2 and "
@@ -33,10 +33,13 @@ Teuchos::ParameterList linearSolverParameters() {
              "(auto): none below 5,000 unknowns, else the measured cost of a KLU2 "
              "factorisation in solves (40 at 43,308 unknowns, 93 at 115,392)",
              Range::atLeast(-1));
-  declareChoice(p, "Preconditioner", "RILUK", {"None", "RILUK", "ILUT", "Jacobi", "Gauss-Seidel", "Additive Schwarz"},
-                "Ifpack2 preconditioner for the Krylov methods (RILUK, ILUT and Gauss-Seidel act "
+  declareChoice(p, "Preconditioner", "RILUK",
+                {"None", "RILUK", "ILUT", "Jacobi", "Gauss-Seidel", "Additive Schwarz", "Multigrid"},
+                "preconditioner of the Krylov methods: Ifpack2's (RILUK, ILUT and Gauss-Seidel act "
                 "on each rank's rows; Additive Schwarz: one overlapping subdomain per rank, "
-                "ILU(0) inside)");
+                "ILU(0) inside) or Multigrid: MueLu smoothed aggregation for elasticity (whole "
+                "nodes aggregated, the rigid-body modes as near-null space, Chebyshev smoothing; "
+                "transient analyses; src/solvers/ElasticityMultigrid.hpp)");
   declareInt(p, "Schwarz Overlap", 1, "overlap level of 'Additive Schwarz' (0: block Jacobi)",
              Range::atLeast(0));
   declareDouble(p, "Tolerance", 1e-10,
@@ -48,13 +51,14 @@ Teuchos::ParameterList linearSolverParameters() {
   return p;
 }
 
-std::unique_ptr<LinearSolver> makeLinearSolver(const Teuchos::ParameterList& params, bool symmetric) {
+std::unique_ptr<LinearSolver> makeLinearSolver(const Teuchos::ParameterList& params, bool symmetric,
+                                               std::shared_ptr<const NodalBlocks> blocks) {
   const std::string method = params.get<std::string>("Method");
   if (method == "Direct" || method == "auto")  // 'auto' unresolved (no regime known): Direct
     return makeDirectSolver(params.get<std::string>("Direct Package"),
                             std::max(params.get<double>("Tolerance"), 1e-8),
                             params.get<int>("Update Budget"), symmetric);
-  return makeIterativeSolver(params);
+  return makeIterativeSolver(params, std::move(blocks));
 }
 
 double relativeResidual(const CrsMatrix& A, const MultiVector& b, const MultiVector& x) {

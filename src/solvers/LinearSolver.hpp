@@ -10,6 +10,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "core/TpetraTypes.hpp"
+#include "fem/NodalBlocks.hpp"
 
 namespace choc {
 
@@ -56,8 +57,10 @@ class LinearSolver {
 // The valid "Linear Solver" sublist.
 Teuchos::ParameterList linearSolverParameters();
 // Builds from a validated "Linear Solver" sublist. symmetric: the caller knows every matrix it
-// will set is symmetric (a direct package may then factor half of it).
-std::unique_ptr<LinearSolver> makeLinearSolver(const Teuchos::ParameterList& params, bool symmetric = false);
+// will set is symmetric (a direct package may then factor half of it). blocks: the model's
+// unknowns node by node, which Preconditioner = Multigrid needs (InputError without).
+std::unique_ptr<LinearSolver> makeLinearSolver(const Teuchos::ParameterList& params, bool symmetric = false,
+                                               std::shared_ptr<const NodalBlocks> blocks = nullptr);
 
 // ||b - A x|| / ||b|| for each column, returns the largest (0 when b = 0 and x = 0).
 double relativeResidual(const CrsMatrix& A, const MultiVector& b, const MultiVector& x);

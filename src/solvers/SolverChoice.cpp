@@ -51,7 +51,8 @@ SolverChoice chooseLinearSolver(const SolverRegime& r) {
   const std::string large = stiff + ", more than " + withCommas(kDirectUpTo) + " unknowns, stiffness/mass ";
   const std::string largeLimit = withCommas((long long)kLargeJacobiUpTo);
   if (r.stiffnessToMass <= kLargeJacobiUpTo) return {"CG", "Jacobi", "", large + "<= " + largeLimit};
-  return {"CG", "Additive Schwarz", "", large + "> " + largeLimit};
+  if (r.nodeBlocks) return {"CG", "Multigrid", "", large + "> " + largeLimit};
+  return {"CG", "Additive Schwarz", "", large + "> " + largeLimit + " (no node blocks for multigrid)"};
 }
 
 double stiffnessToMassRatio(const CrsMatrix& K, const CrsMatrix& M, double mCoef, double kCoef) {

@@ -13,15 +13,19 @@
 //   - symmetric and stiffness-dominated: Direct up to kDirectUpTo unknowns (MUMPS when the build
 //     has it: on a compact body it factors 8 times faster than KLU2, docs/performance/
 //     direct-packages.md); beyond, CG + Jacobi while theta <= kLargeJacobiUpTo, then CG +
-//     Additive Schwarz (ILU(0) per rank).
+//     Multigrid (smoothed aggregation for elasticity, ElasticityMultigrid.hpp; Additive Schwarz,
+//     ILU(0) per rank, when the caller has no node blocks to give it).
 // Measured on the scale scene's bars (docs/performance/linear-solver-auto.md): at dt = 1e-6 s (theta 1.6 to 22)
 // CG + Jacobi takes 0.4, 0.28, 0.22 and 0.11 of Direct's time at 9,648, 22,575, 43,308 and
 // 134,592 unknowns and 0.55 of CG + Additive Schwarz's at 300,300; at dt = 1e-5 s (43,308
 // unknowns) Direct takes 0.53 of Jacobi's time and 0.30 of Schwarz's. At 153,792 unknowns
 // (adaptive linear tolerance) CG + Jacobi takes 0.57 of Schwarz's solve time at theta 1,190
 // (dt = 1e-5 s) and 0.62 at theta 10,600 (dt = 3e-5 s, 427 iterations per solve); at theta
-// 119,000 (dt = 1e-4 s) it exceeds 1,000 iterations per solve where Schwarz takes 333. (MueLu's
-// smoothed aggregation with scalar aggregates, tried there, took 629 and longer than Schwarz.)
+// 119,000 (dt = 1e-4 s) it exceeds 1,000 iterations per solve where Schwarz takes 333. Multigrid
+// for elasticity (whole nodes aggregated, rigid-body modes; docs/performance/multigrid.md) takes
+// 33 per solve there and 0.29 of Schwarz's linear-solve time on one rank; at theta 10,600 it
+// takes 0.84 of Jacobi's time and at 1,190 2.6 times Jacobi's (its set-up dominates): the
+// Jacobi limit stays where it was.
 #pragma once
 #include <limits>
 #include <string>
@@ -41,6 +45,7 @@ struct SolverRegime {
                                       // "contact method 'Lagrange' has multipliers"
   double stiffnessToMass = std::numeric_limits<double>::infinity();  // theta
   std::string distributedDirect;      // the direct package that factors on every rank ("": none)
+  bool nodeBlocks = true;             // the caller can give Multigrid the model's node blocks
   bool symmetricPositive() const { return notSymmetricBecause.empty(); }
 };
 

@@ -57,21 +57,25 @@ TEST(SolverChoice, MatricesThatAreNotSpdTakeTheDistributedPackageAboveTheSmallSi
   EXPECT_EQ(chooseLinearSolver(mass).package, "");
 }
 
-TEST(SolverChoice, StiffnessDominatedIsDirectThenJacobiThenSchwarz) {
+TEST(SolverChoice, StiffnessDominatedIsDirectThenJacobiThenMultigrid) {
   EXPECT_EQ(chooseLinearSolver(regime(50000, kJacobiUpTo)).preconditioner, "Jacobi");
   EXPECT_EQ(chooseLinearSolver(regime(50000, 1.01 * kJacobiUpTo)).method, "Direct");
   EXPECT_EQ(chooseLinearSolver(regime(kDirectUpTo, 1e6)).method, "Direct");
-  // Beyond Direct's size: Jacobi while theta <= kLargeJacobiUpTo, Schwarz above.
+  // Beyond Direct's size: Jacobi while theta <= kLargeJacobiUpTo, Multigrid above.
   const SolverChoice j = chooseLinearSolver(regime(kDirectUpTo + 1, kLargeJacobiUpTo));
   EXPECT_EQ(j.method, "CG");
   EXPECT_EQ(j.preconditioner, "Jacobi");
   EXPECT_NE(j.reason.find("<= 10,000"), std::string::npos) << j.reason;
-  EXPECT_EQ(chooseLinearSolver(regime(kDirectUpTo + 1, 1.01 * kLargeJacobiUpTo)).preconditioner, "Additive Schwarz");
+  EXPECT_EQ(chooseLinearSolver(regime(kDirectUpTo + 1, 1.01 * kLargeJacobiUpTo)).preconditioner, "Multigrid");
   const SolverChoice c = chooseLinearSolver(regime(kDirectUpTo + 1, 1e6));
   EXPECT_EQ(c.method, "CG");
-  EXPECT_EQ(c.preconditioner, "Additive Schwarz");
+  EXPECT_EQ(c.preconditioner, "Multigrid");
   // A row without mass (theta = +inf) is stiffness-dominated.
-  EXPECT_EQ(chooseLinearSolver(regime(kDirectUpTo + 1, INFINITY)).preconditioner, "Additive Schwarz");
+  EXPECT_EQ(chooseLinearSolver(regime(kDirectUpTo + 1, INFINITY)).preconditioner, "Multigrid");
+  // Without node blocks to aggregate, Additive Schwarz.
+  SolverRegime noBlocks = regime(kDirectUpTo + 1, 1e6);
+  noBlocks.nodeBlocks = false;
+  EXPECT_EQ(chooseLinearSolver(noBlocks).preconditioner, "Additive Schwarz");
 }
 
 // A 3-row chain, K = k [1 -1 0; -1 2 -1; 0 -1 1], and a diagonal mass.
