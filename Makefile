@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-kept bench-direct bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction docs clean
+.PHONY: all deps configure build run test study bench bench-kept bench-direct bench-multigrid bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction docs clean
 
 all: build
 
@@ -43,12 +43,17 @@ bench: build
 	$(PYTHON) tools/bench/bench_kept_factorization.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_direct_packages.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_block_drop.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_multigrid.py --build $(BUILD)
 
 # The direct packages on contact scenes: KLU2 on rank 0 against MUMPS on every rank, 1 and 2
 # ranks; the scale scene's bars, then a compact block (against penalty contact too).
 bench-direct: build
 	$(PYTHON) tools/bench/bench_direct_packages.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_block_drop.py --build $(BUILD)
+
+# CG's preconditioners on stiffness-dominated steps (153,792 unknowns): Multigrid, Schwarz, Jacobi.
+bench-multigrid: build
+	$(PYTHON) tools/bench/bench_multigrid.py --build $(BUILD)
 
 # Contact status changes on a kept factorisation (Update Budget) against refactoring at each.
 bench-kept: build
