@@ -27,6 +27,8 @@ gmsh -3 -format msh41 -setnumber n 1000 "$here/sdnv100_bar.geo" -o "$here/sdnv10
 # Hertz: the sphere (axisymmetric half disc) and its lower half for the static press.
 gmsh -2 -order 2 -format msh41 "$here/hertz_axisymmetric.geo" -o "$here/hertz_axisymmetric.msh" > /dev/null
 gmsh -2 -order 2 -format msh41 "$here/hertz_hemisphere.geo" -o "$here/hertz_hemisphere.msh" > /dev/null
+# Two such spheres colliding head on (meshed bodies in contact, node to face).
+gmsh -2 -order 2 -format msh41 "$here/hertz_two_spheres.geo" -o "$here/hertz_two_spheres.msh" > /dev/null
 # SDND101: the oscillator on a stop, one beam standing for the discrete spring and mass.
 gmsh -1 -format msh41 "$here/sdnd101.geo" -o "$here/sdnd101.msh" > /dev/null
 # SDNL32: the articulated beam, the deck's 11 nodes.

@@ -77,7 +77,7 @@ void ContactManager::followSurfaces(const Vector& u) {
     if (overlap) {
       sp = *overlap;
       gap = sp.gap0;
-    } else if (!isMortar && followed_->find(p, followed_->position(sp.slaveNode), hit)) {
+    } else if (!isMortar && followed_->find(p, followed_->position(sp.slaveNode), hit, sp.masterFace)) {
       sp.masterFace = hit.face;
       sp.masterNodes = followed_->face(p, hit.face).nodes;
       sp.weights = hit.N;

@@ -54,9 +54,9 @@ std::vector<Face> FollowedSurfaces::slaveFaces(int pair) const {
   return faces;
 }
 
-bool FollowedSurfaces::find(int pair, const Point3& x, SurfaceHit& hit) const {
+bool FollowedSurfaces::find(int pair, const Point3& x, SurfaceHit& hit, int current) const {
   const SurfaceSearch& s = *searches_.at(pair);
-  return s.closest(x, hit) || s.closest(x, hit, 0.05);
+  return s.onFace(current, x, hit, kKeepFaceWiden) || s.closest(x, hit) || s.closest(x, hit, 0.05);
 }
 
 long long FollowedSurfaces::projections() const {

@@ -2,8 +2,9 @@
 // faces (a SurfaceSearch), and the reference positions and DOFs of every node of its master and
 // slave side sets. place() takes the displacements of those DOFs (gathered on every rank) and
 // moves the faces to the current configuration; find() then projects a slave node's current
-// position onto its pair's master surface: the closest face containing the projection, or,
-// when the projection falls in no face (a node over the kink between two faces of a convex
+// position onto its pair's master surface: the face it is paired with while the projection
+// stays within it (widened by kKeepFaceWiden), else the closest face containing the projection,
+// or, when the projection falls in no face (a node over the kink between two faces of a convex
 // surface), the nearest face whose domain widened by 0.05 in its parameters contains it.
 // A mortar pair is integrated again on the current faces (slaveFaces, masterSearch).
 #pragma once
@@ -29,7 +30,13 @@ class FollowedSurfaces {
   void place(const std::vector<double>& values, bool search);
   Point3 position(int node) const;          // current (after place), else reference
   double displacement(GO dof) const;        // of the last place()
-  bool find(int pair, const Point3& x, SurfaceHit& hit) const;
+  // current: the face the node is paired with (-1: none), kept while the projection stays
+  // within its domain widened by kKeepFaceWiden: a node over the edge between two faces would
+  // otherwise change face whenever round-off or a tangential motion of 1e-5 of a face moves it
+  // across (two meshed spheres whose nodes face each other: a new contact graph, and a new
+  // factorisation, at every step).
+  static constexpr double kKeepFaceWiden = 1e-3;
+  bool find(int pair, const Point3& x, SurfaceHit& hit, int current = -1) const;
   // Mortar pairs: their slave faces at the current positions, and their master faces (moved
   // and binned by the last place with a search).
   bool mortar(int pair) const { return slaveFaces_.count(pair) > 0; }

@@ -94,35 +94,48 @@ std::vector<int> SurfaceSearch::candidates(const Point3& lo, const Point3& hi) c
   return out;
 }
 
+bool SurfaceSearch::projectOn(int k, const Point3& x, double widen, SurfaceHit& hit, double& dist) const {
+  const Face& f = faces_[k];
+  double xi, eta;
+  ++projections_;
+  if (!projectOnFace(f, x, xi, eta) || !insideFace(f, xi, eta, widen)) return false;
+  const FacePoint q = evaluateFace(f, xi, eta);
+  const Point3 d = x - q.x;
+  dist = std::sqrt(dot(d, d));
+  Point3 n = cross(q.dxi, q.deta);
+  const double len = std::sqrt(dot(n, n));
+  for (double& v : n) v /= len;
+  const double g = dot(d, n);
+  if (std::abs(g) > reach_) return false;
+  hit.face = k;
+  hit.xi = xi;
+  hit.eta = eta;
+  hit.N = q.N;
+  hit.normal = n;
+  hit.gap = g;
+  return true;
+}
+
 bool SurfaceSearch::closest(const Point3& x, SurfaceHit& hit, double widen) const {
   const auto it = bins_.find(key(x));
   if (it == bins_.end()) return false;
   double bestDist = std::numeric_limits<double>::infinity();
   bool found = false;
   for (int k : it->second) {  // ascending face index: ties go to the first face
-    const Face& f = faces_[k];
-    double xi, eta;
-    ++projections_;
-    if (!projectOnFace(f, x, xi, eta) || !insideFace(f, xi, eta, widen)) continue;
-    const FacePoint q = evaluateFace(f, xi, eta);
-    const Point3 d = x - q.x;
-    const double dist = std::sqrt(dot(d, d));
-    if (!(dist < bestDist - 1e-15)) continue;
-    Point3 n = cross(q.dxi, q.deta);
-    const double len = std::sqrt(dot(n, n));
-    for (double& v : n) v /= len;
-    const double g = dot(d, n);
-    if (std::abs(g) > reach_) continue;
+    SurfaceHit h;
+    double dist = 0.0;
+    if (!projectOn(k, x, widen, h, dist) || !(dist < bestDist - 1e-15)) continue;
     bestDist = dist;
     found = true;
-    hit.face = k;
-    hit.xi = xi;
-    hit.eta = eta;
-    hit.N = q.N;
-    hit.normal = n;
-    hit.gap = g;
+    hit = std::move(h);
   }
   return found;
+}
+
+bool SurfaceSearch::onFace(int face, const Point3& x, SurfaceHit& hit, double widen) const {
+  if (face < 0 || face >= int(faces_.size())) return false;
+  double dist = 0.0;
+  return projectOn(face, x, widen, hit, dist);
 }
 
 }  // namespace choc

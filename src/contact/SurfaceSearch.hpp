@@ -30,6 +30,9 @@ class SurfaceSearch {
   // The nearest face whose closest point to x lies within its parameter domain widened by
   // `widen`, with |gap| <= reach; false when there is none.
   bool closest(const Point3& x, SurfaceHit& hit, double widen = 1e-8) const;
+  // The closest point of x on face `face` alone, provided it lies within the face's parameter
+  // domain widened by `widen` and |gap| <= reach; false otherwise.
+  bool onFace(int face, const Point3& x, SurfaceHit& hit, double widen) const;
   // The faces whose widened boxes may overlap the box [lo, hi] (those binned in the cells it
   // covers), ascending.
   std::vector<int> candidates(const Point3& lo, const Point3& hi) const;
@@ -37,6 +40,7 @@ class SurfaceSearch {
 
  private:
   long long key(const Point3& x) const;
+  bool projectOn(int k, const Point3& x, double widen, SurfaceHit& hit, double& dist) const;
   void rebuild();
   std::vector<Face> faces_;
   double reach_ = 0, cell_ = 1;

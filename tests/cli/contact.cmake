@@ -97,6 +97,11 @@ choc_frame_invariance(sliding_mortar 300 --scene sliding --mortar)
 # And with Coulomb friction on the mortar pair (mu = 0.02, as above).
 choc_frame_invariance(sliding_friction_mortar 300 --scene sliding --mortar --friction 0.02)
 
+# Contact between meshed bodies as cheap as against an obstacle: two spheres colliding head on
+# (node to face between the meshes) move as one sphere on a rigid plane (1e-5 of the peak) with
+# at most 1.5 times its factorisations and Newton iterations.
+choc_contact_script(two_spheres 120)
+
 # The contact patch test (docs/verification/patch-test.md): matching faces pass it to 1e-8; on
 # non-matching faces (quadrilaterals on triangles) node to face's error is reported.
 choc_contact_script(patch_test 300)

@@ -158,3 +158,27 @@ TEST(SurfaceSearch, GapsAreTheSameAfterARigidMotionOfSurfaceAndPoints) {
 
 }  // namespace
 }  // namespace choc
+
+namespace choc {
+namespace {
+
+// onFace (the face a followed slave node keeps, FollowedSurfaces::find): a point just past the
+// edge between faces 0 and 1 of a 2 x 2 grid (x = 0.5 + 2.5e-4, that is xi = 1 + 1e-3 on face
+// 0's parameters of half-width 0.25) is kept on face 0 with its widening 2e-3 and not with
+// 5e-4, and the search alone gives face 1, the one containing it.
+TEST(SurfaceSearch, AFaceIsKeptJustPastItsEdgeWithinTheWidening) {
+  SurfaceSearch s(flatGrid(2), 0.1);
+  const Point3 x{0.5 + 2.5e-4, 0.25, 0.01};
+  SurfaceHit hit;
+  ASSERT_TRUE(s.closest(x, hit));
+  EXPECT_EQ(hit.face, 1);
+  ASSERT_TRUE(s.onFace(0, x, hit, 2e-3));
+  EXPECT_EQ(hit.face, 0);
+  EXPECT_NEAR(hit.xi, 1.0 + 1e-3, 1e-12);
+  EXPECT_NEAR(hit.gap, 0.01, 1e-15);
+  EXPECT_FALSE(s.onFace(0, x, hit, 5e-4));
+  EXPECT_FALSE(s.onFace(-1, x, hit, 1.0));  // no current face
+}
+
+}  // namespace
+}  // namespace choc
