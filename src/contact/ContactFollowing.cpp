@@ -1,6 +1,7 @@
 // ContactManager: the pairs whose search follows the motion ('Search' = current).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -11,7 +12,8 @@ namespace choc {
 namespace {
 
 // A followed constraint keeps its coefficients while none moves by more than this (they are
-// of order 1: normal components and shape-function weights). The linearised gap is exact at
+// of order 1: the normal, and the normal times a shape-function weight; measured as vectors,
+// coefficientChange). The linearised gap is exact at
 // the start of every step whatever the coefficients, so a kept set errs by at most this
 // fraction of the step's displacement increment, and the effective matrix is not refactored
 // for the 1e-9 tilts of a face loaded unevenly.
@@ -24,10 +26,24 @@ bool sameDofs(const std::vector<std::pair<GO, double>>& a, const std::vector<std
   return true;
 }
 
-double largestChange(const std::vector<std::pair<GO, double>>& a,
-                     const std::vector<std::pair<GO, double>>& b) {
-  double m = 0.0;
-  for (size_t k = 0; k < a.size(); ++k) m = std::max(m, std::abs(a[k].second - b[k].second));
+// How far the constraint's coefficients moved from projection a to b, the same in any frame:
+// the slave node's coefficient vector is the normal n, a master node's -w_i n, and the largest
+// Euclidean change of these vectors is measured (a largest change of one component would depend
+// on the frame the scene is drawn in: SDNL111's bars turned as a whole moved by 6e-7 of their
+// peak). +inf when the master nodes differ.
+double coefficientChange(const SlaveProjection& a, const SlaveProjection& b) {
+  if (a.masterNodes != b.masterNodes || a.weights.size() != b.weights.size())
+    return std::numeric_limits<double>::infinity();
+  const auto distance = [](const Point3& p, const Point3& q) {
+    const Point3 d{p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+    return std::sqrt(dot(d, d));
+  };
+  double m = distance(a.normal, b.normal);
+  for (size_t i = 0; i < a.weights.size(); ++i) {
+    const Point3 wa{a.weights[i] * a.normal[0], a.weights[i] * a.normal[1], a.weights[i] * a.normal[2]};
+    const Point3 wb{b.weights[i] * b.normal[0], b.weights[i] * b.normal[1], b.weights[i] * b.normal[2]};
+    m = std::max(m, distance(wa, wb));
+  }
   return m;
 }
 
@@ -102,7 +118,7 @@ void ContactManager::followSurfaces(const Vector& u) {
       c.terms = next.terms;
       c.componentTerm = next.componentTerm;
       c.geometry = sp;
-    } else if (largestChange(next.terms, c.terms) > kCoefficientTolerance) {
+    } else if (coefficientChange(sp, c.geometry) > kCoefficientTolerance) {
       turned = true;
       c.terms = next.terms;
       c.geometry = sp;
