@@ -326,8 +326,8 @@ void DirectTransient::buildSolver(const Model& model) {
   const bool symmetric = !(b_->contact && (b_->contact->hasFriction() || s_.contact.hasPressureUnknowns())) &&
                          !b_->links;
   std::shared_ptr<const NodalBlocks> blocks;
-  if (lp.get<std::string>("Preconditioner") == "Multigrid" && lp.get<std::string>("Method") != "Direct" &&
-      !s_.explicitScheme)  // (multiplier rows were refused with the input)
+  // (An explicit run builds the solver without using it; multiplier rows were refused with the input.)
+  if (lp.get<std::string>("Preconditioner") == "Multigrid" && lp.get<std::string>("Method") != "Direct")
     blocks = std::make_shared<const NodalBlocks>(nodalBlocks(model.dofs(), model.mesh().coords));
   try {
     b_->solver = makeLinearSolver(lp, symmetric, std::move(blocks));

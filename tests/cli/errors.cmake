@@ -167,6 +167,9 @@ choc_cli_input_error(multigrid_with_contact_multipliers check bad_multigrid_mult
 # ... but central differences make no linear solve: the same input by them is valid.
 choc_cli_test(explicit_lagrange_with_cg RC 0 STDOUT "explicit_lagrange_cg.xml is valid"
               ARGS check ${CLI_INPUTS}/explicit_lagrange_cg.xml)
+# ... and so is multigrid stated with them (no Newton matrix to aggregate).
+choc_cli_test(explicit_lagrange_with_multigrid RC 0 STDOUT "explicit_lagrange_multigrid.xml is valid"
+              ARGS check ${CLI_INPUTS}/explicit_lagrange_multigrid.xml)
 
 # --- the command line -------------------------------------------------------------------
 choc_cli_command_error(mesh_zero_length
