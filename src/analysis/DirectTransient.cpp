@@ -1,7 +1,5 @@
 #include "analysis/DirectTransient.hpp"
 
-#include "fem/NodalBlocks.hpp"
-
 #include <algorithm>
 #include <limits>
 #include <sstream>
