@@ -58,7 +58,9 @@ class DirectTransient : public Analysis {
   // What setup builds for the run.
   struct Built {
     RCP<const CrsMatrix> K, M;
+    RCP<const CrsMatrix> meshMass;  // the mesh's lumped mass (M before any redistribution)
     std::string solverChoice;  // the 'auto' linear solver's reason, for the log
+    bool condenseContact = false;  // the multipliers condensed out (an iterative solve, obstacles)
     std::shared_ptr<const Loads> loads;
     std::unique_ptr<ContactManager> contact;
     std::unique_ptr<DirectLinks> links;  // null: no shock links

@@ -37,6 +37,14 @@ struct ContactSettings {
   // An explicit scheme enforces the multipliers by forward increments.
   bool forwardIncrementsWhenExplicit() const { return method == ContactMethodKind::Lagrange; }
   std::string methodName() const { return contactMethodName(method); }
+  // Multipliers that an implicit iterative solve condenses out (ContactCondensation): every
+  // pair against a rigid obstacle, no friction.
+  bool condensable() const {
+    if (!hasMultipliers() || pairs.empty() || frictionPair()) return false;
+    for (const auto& p : pairs)
+      if (!p.hasObstacle) return false;
+    return true;
+  }
   // The first pair with a friction coefficient, or null.
   const PairDefinition* frictionPair() const {
     for (const auto& p : pairs)

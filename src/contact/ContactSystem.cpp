@@ -15,7 +15,7 @@
 namespace choc {
 
 ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, ContactManager* contact,
-                             const std::vector<std::vector<GO>>& couplings)
+                             const std::vector<std::vector<GO>>& couplings, bool condense)
     : K_(std::move(K)), M_(std::move(M)), contact_(contact) {
   maxDiagK_ = largestDiagonal(*K_);
   maxDiagM_ = largestDiagonal(*M_);
@@ -24,7 +24,9 @@ ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, Con
   const int rank = comm->getRank();
   const GO nU = GO(dofMap->getGlobalNumElements());
   nLocalDofs_ = dofMap->getNodeNumElements();
-  extended_ = contact_ && contact_->method().hasMultipliers() && contact_->numConstraints() > 0;
+  if (condense && contact_ && ContactCondensation::applies(*contact_))
+    condensation_ = std::make_unique<ContactCondensation>(*contact_);
+  extended_ = contact_ && contact_->method().hasMultipliers() && contact_->numConstraints() > 0 && !condensation_;
   const int nS = contact_ ? contact_->numConstraints() : 0;
   rowOfConstraint_.assign(nS, -1);
 
@@ -71,6 +73,8 @@ ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, Con
   colOfM_ = std::move(sg.fromM);
   slot_.assign(A_->getColMap()->getNodeNumElements(), -1);
 }
+
+ContactSystem::~ContactSystem() = default;
 
 // Row i of the DOF block takes aK K(i,:) + aM M(i,:); A's pattern holds both. The values are
 // written through the local matrix (a search per entry by global index cost 0.37 s per fill
@@ -154,7 +158,7 @@ void ContactSystem::fillEntries(double aM, double aK, const std::vector<MatrixEn
   std::sort(rows.begin(), rows.end());
   rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
   A_->resumeFill();
-  if (filled_ && aM == lastAM_ && aK == lastAK_) {
+  if (filled_ && aM == lastAM_ && aK == lastAK_ && !condensation_) {
     std::vector<LO> both;
     std::set_union(rows.begin(), rows.end(), lastRows_.begin(), lastRows_.end(), std::back_inserter(both));
     fillBulk(aM, aK, &both);
@@ -164,6 +168,7 @@ void ContactSystem::fillEntries(double aM, double aK, const std::vector<MatrixEn
   for (const MatrixEntry& e : entries)
     A_->sumIntoGlobalValues(e.row, Teuchos::ArrayView<const GO>(&e.col, 1),
                             Teuchos::ArrayView<const double>(&e.value, 1));
+  if (condensation_) condensation_->project(A_);  // every row was rewritten above
   A_->fillComplete(map_, map_);
   filled_ = true;
   lastAM_ = aM;
@@ -184,6 +189,7 @@ std::vector<char> ContactSystem::statusKey() const {
 }
 
 void ContactSystem::rightHandSide(const Vector& r, const Vector& u, MultiVector& b) const {
+  if (condensation_) return condensation_->rightHandSide(r, u, b);
   auto rd = r.getData();
   auto bd = b.getDataNonConst(0);
   for (size_t i = 0; i < nLocalDofs_; ++i) bd[i] = -rd[i];
@@ -194,6 +200,7 @@ void ContactSystem::rightHandSide(const Vector& r, const Vector& u, MultiVector&
 }
 
 void ContactSystem::takeSolution(const MultiVector& x, Vector& du) const {
+  if (condensation_) return condensation_->takeSolution(x, du);
   auto xd = x.getData(0);
   {
     auto d = du.getDataNonConst();

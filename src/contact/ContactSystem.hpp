@@ -8,7 +8,12 @@
 // inactive node's row reads lambda = 0. The graph holds every possible coupling, so a change
 // of active set keeps the sparsity (the direct solver reuses its symbolic factorisation).
 // Other nonlinear forces (shock links) add their tangent on couplings declared up front.
+//   condensed multipliers:  A = P (aM M + aK K) P + sigma Q Q^T                   (DOF map)
+// when asked for and every constraint involves its slave node alone (ContactCondensation).
 #pragma once
+#include <memory>
+
+#include "contact/ContactCondensation.hpp"
 #include "contact/ContactManager.hpp"
 #include "core/TpetraTypes.hpp"
 
@@ -17,9 +22,12 @@ namespace choc {
 class ContactSystem {
  public:
   // contact may be null (no contact). couplings: groups of DOFs (global ids) that extra
-  // tangents couple, each DOF of a group with every other.
+  // tangents couple, each DOF of a group with every other. condense: eliminate the multipliers
+  // where ContactCondensation applies.
   ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, ContactManager* contact,
-                const std::vector<std::vector<GO>>& couplings = {});
+                const std::vector<std::vector<GO>>& couplings = {}, bool condense = false);
+  ~ContactSystem();
+  bool condensed() const { return condensation_ != nullptr; }
   RCP<const Map> map() const { return map_; }  // DOF map, or extended by the multiplier rows
   bool extended() const { return extended_; }
   size_t numLocalDofs() const { return nLocalDofs_; }  // leading local entries are the DOFs
@@ -49,6 +57,7 @@ class ContactSystem {
   ContactManager* contact_;
   double maxDiagK_ = 0, maxDiagM_ = 0;
   bool extended_ = false;
+  std::unique_ptr<ContactCondensation> condensation_;
   size_t nLocalDofs_ = 0;
   RCP<const Map> map_;
   RCP<CrsMatrix> A_;

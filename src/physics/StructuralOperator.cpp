@@ -39,7 +39,7 @@ ContactSystem& StructuralOperator::system() {
   if (!system_) {
     systemTopology_ = contact_ ? contact_->topologyVersion() : 0;
     system_ = std::make_unique<ContactSystem>(K_, mass_.matrix(), contact_,
-                                              links_ ? links_->couplings() : std::vector<std::vector<GO>>());
+                                              links_ ? links_->couplings() : std::vector<std::vector<GO>>(), condense_);
     rhs_ = rcp(new MultiVector(system_->map(), 1));
     x_ = rcp(new MultiVector(system_->map(), 1));
   }

@@ -63,6 +63,10 @@ class StructuralOperator : public ExplicitOperator {
   // Explicit runs with a multiplier method: contact by forward increments (ContactManager::
   // forwardIncrement) instead of forces and statuses.
   void setForwardIncrementContact(bool on) { forwardIncrement_ = on; }
+  // The contact multipliers condensed out of the Newton system where they can be
+  // (ContactCondensation: every constraint against a rigid obstacle, no friction).
+  void setCondensedContact(bool on) { condense_ = on; }
+  bool condensedContact() const { return condense_ && contact_ && ContactCondensation::applies(*contact_); }
   // The internal force's products from half a symmetric matrix (InternalForce::
   // preferSymmetricProducts): for explicit runs, whose cost is those products. Implicit runs
   // keep the CRS product: their linear solve dominates, and the copy costs 0.4 kB per unknown.
@@ -109,8 +113,9 @@ class StructuralOperator : public ExplicitOperator {
   std::unique_ptr<LinearSolver> solver_;
   Teuchos::StackedTimer* timer_;
   std::unique_ptr<ContactSystem> system_;
-  int systemTopology_ = 0;
-  bool forwardIncrement_ = false;  // the contact manager's topologyVersion() the graph was built for
+  int systemTopology_ = 0;  // the contact manager's topologyVersion() the graph was built for
+  bool forwardIncrement_ = false;
+  bool condense_ = false;
   // K u of the last applyForces (K v and M v: mass_): the energies of the state a step ended at
   // (whose forces the step's last residual computed) cost no second product with K or M.
   ProductCache ku_;

@@ -15,7 +15,9 @@ Teuchos::ParameterList linearSolverParameters() {
   declareChoice(p, "Method", "auto", {"auto", "Direct", "CG", "GMRES", "MINRES"},
                 "Direct: Amesos2 sparse LU; CG/GMRES/MINRES: Belos Krylov solvers; auto (transient; "
                 "it also picks the preconditioner): Direct up to 5,000 unknowns or when the matrix "
-                "is not symmetric positive definite (contact multipliers, friction, links); else CG "
+                "is not symmetric positive definite (contact multipliers between meshed bodies, "
+                "friction, links; multipliers against rigid obstacles alone are condensed out of an "
+                "iterative solve, src/contact/ContactCondensation.hpp); else CG "
                 "+ Jacobi when the Newton matrix is mass-dominated (largest row ratio of stiffness "
                 "to mass <= 100), Direct up to 100,000 unknowns, beyond CG + Jacobi up to a ratio "
                 "of 10,000 and CG + Multigrid above; the log states the choice "

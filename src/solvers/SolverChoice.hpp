@@ -1,7 +1,9 @@
 // The 'auto' linear solver ('Linear Solver/Method' = auto, the default): the method and the
 // preconditioner picked by the problem's size and regime, the reason stated in the log.
 //   - up to kAlwaysDirectUpTo unknowns: Direct (Amesos2 KLU2), cheap at that size;
-//   - a matrix that is not symmetric positive definite (contact multipliers, friction, links):
+//   - a matrix that is not symmetric positive definite (contact multipliers between meshed
+//     bodies, friction, links; multipliers against rigid obstacles alone are condensed out of
+//     an iterative solve, leaving K's and M's regime, contact/ContactCondensation.hpp):
 //     Direct, whatever the size (Jacobi has no diagonal to invert on a multiplier row), with
 //     the distributed package (MUMPS, when the build has it) above kAlwaysDirectUpTo: it factors
 //     on every rank where KLU2 gathers the system to rank 0 (measured on the scale scene's bars

@@ -28,3 +28,11 @@ add_test(NAME cli.multigrid
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/multigrid.py
                  $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/multigrid)
 set_tests_properties(cli.multigrid PROPERTIES TIMEOUT 300 PROCESSORS 2 LABELS cli)
+
+# Contact pressures against rigid obstacles condensed out of the Newton system: CG + Jacobi, CG +
+# Multigrid and GMRES give the direct saddle-point solve's histories to 1e-7 of their peaks on
+# 1 and 2 ranks (the axisymmetric sphere on a plane, the compact block), the gap closed exactly.
+add_test(NAME cli.condensed_contact
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/condensed_contact.py
+                 $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/condensed_contact)
+set_tests_properties(cli.condensed_contact PROPERTIES TIMEOUT 300 PROCESSORS 2 LABELS cli)
