@@ -1,7 +1,8 @@
 // A compact steel block for the direct solvers' benchmark (tools/bench/bench_block_drop.py): a
 // cube of side a = 0.1 m from z = 0 (its lower face 'bottom', which meets the rigid plane z = 0)
 // to z = a, n x n x n HEX8 (n = 10 by default: 1,331 nodes, 3,993 unknowns; n = 20: 27,783; n =
-// 30: 89,373, the compact block of the phase's issue). 'corner' is the node (0, 0, a).
+// 30: 89,373, the compact block of the phase's issue). 'top' is the upper face, 'corner' the node
+// (0, 0, a).
 //   gmsh -3 -format msh41 -setnumber n 20 meshes/compact_block.geo -o block_20.msh
 If (!Exists(n))
   n = 10;
@@ -22,4 +23,5 @@ e = 1e-7;
 corner[] = Point In BoundingBox{-e, -e, a - e, e, e, a + e};
 Physical Volume("block") = {out[1]};
 Physical Surface("bottom") = {1};
+Physical Surface("top") = {out[0]};
 Physical Point("corner") = {corner[]};

@@ -125,11 +125,12 @@ DirectTransient::DirectTransient(const std::string& name, const Teuchos::Paramet
   if (s_.explicitScheme && s_.contact.massIsAutomatic) s_.contact.redistributeMass = false;
   if (const PairDefinition* fp = s_.contact.frictionPair()) {
     const std::string key = "Contact/Pairs/" + fp->name + "/Friction Coefficient";
-    if (s_.explicitScheme)
+    if (s_.explicitScheme && !s_.contact.forwardIncrementsWhenExplicit())
       throwInput(inputFile_, path(key), shortNumber(fp->friction),
-                 "friction is solved with the implicit schemes' Newton iterations, which central "
-                 "differences do not make", "use an implicit scheme (HHT, Newmark...) for a pair with friction");
-    if (params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
+                 "central differences apply friction by forward increments of Lagrange contact, not with '" +
+                     s_.contact.methodName() + "' contact",
+                 "use 'Contact/Method' = Lagrange, or an implicit scheme (HHT, Newmark...)");
+    if (!s_.explicitScheme && params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
       throwInput(inputFile_, path(key), shortNumber(fp->friction),
                  "the tangent of a sliding node is not symmetric, which CG cannot solve",
                  "use 'Linear Solver/Method' = Direct or GMRES with friction");

@@ -9,37 +9,9 @@
 
 #include "contact/ContactManager.hpp"
 #include "contact/CoulombLaw.hpp"
+#include "contact/FrictionState.hpp"
 
 namespace choc {
-
-struct ContactManager::Friction {
-  double kt = 0.0;
-  struct Term {
-    int k;          // index into contactDofs_
-    int component;  // 0, 1, 2
-    double coeff;   // 1 for the slave node, -w_i for a master node
-    GO dof;
-  };
-  std::vector<std::vector<Term>> rel;  // per constraint: r = u_s - sum_i w_i u_i
-  std::vector<Vec3> accepted, start;   // F at the last accepted step (in the plane), r(u_n)
-  std::vector<char> acceptedStatus;
-  double dissipated = 0.0;
-  std::vector<double> pairWork;        // per pair: its part of dissipated
-  double time = 0.0;                   // end of the current step
-  // The last evaluation: the law's state per node (contact/CoulombLaw.hpp) and its normal force.
-  mutable std::vector<CoulombPoint> point;
-  mutable std::vector<double> normalForce;
-  mutable long long evaluations = 0;
-  // Within a step: each node's last slip direction and how often an iterate reversed it. An
-  // iterate that slides against the node's last slip direction jumped over the stick band
-  // 2 mu f_N / k_t (the slip tangent has no stiffness along the slip: Newton crosses the band
-  // from side to side). Such an iterate is evaluated as sticking (the force F* and the stick
-  // stiffness, a linear law): the next iterate lands where the stick force balances, inside
-  // the band if the node sticks. Twice per node and step at most, so that Newton converges on
-  // the Coulomb law itself.
-  mutable std::vector<Vec3> lastDirection;
-  mutable std::vector<int> reversals;
-};
 
 ContactManager::~ContactManager() = default;
 
@@ -61,7 +33,7 @@ const std::vector<char>& ContactManager::frictionStatus() const { return frictio
 double ContactManager::frictionDissipation() const { return friction_ ? friction_->dissipated : 0.0; }
 
 double ContactManager::stickEnergy() const {
-  if (!friction_ || !(friction_->kt > 0)) return 0.0;
+  if (!friction_ || !(friction_->kt > 0) || friction_->increments) return 0.0;
   double e = 0.0;
   for (const Vec3& f : friction_->accepted) e += dot(f, f) / (2.0 * friction_->kt);
   return e;
@@ -201,6 +173,10 @@ std::vector<MatrixEntry> ContactManager::frictionTangent(GO multiplierBase) cons
 // forces in the (possibly turned) tangent planes.
 void ContactManager::beginFrictionStep(const Vector& u, double t, double dt) {
   Friction& f = *friction_;
+  if (f.increments) {  // explicit: the forces are decided by frictionIncrement
+    f.time = t;
+    return;
+  }
   const std::vector<double> x = contactValues(u);
   f.time = t;
   for (size_t s = 0; s < constraints_.size(); ++s) {
@@ -215,6 +191,7 @@ void ContactManager::beginFrictionStep(const Vector& u, double t, double dt) {
 // the stick springs store is dissipated (trapezoidal rule on the step's relative motion).
 void ContactManager::commitFriction(const Vector& u) {
   Friction& f = *friction_;
+  if (f.increments) return;  // explicit: accounted by frictionIncrement
   const std::vector<double> x = contactValues(u);
   evaluateFriction(x, gapsAt(x));
   for (size_t s = 0; s < constraints_.size(); ++s) {
@@ -240,6 +217,11 @@ void ContactManager::archiveFriction(StateArchive& a) const {
   a.putVector("contact/frictionStatus", friction_->acceptedStatus);
   a.putDouble("contact/frictionWork", friction_->dissipated);
   a.putVector("contact/pairFrictionWork", friction_->pairWork);
+  if (friction_->increments && friction_->started) {  // the relative positions of the last increment
+    std::vector<double> start;
+    for (const Vec3& v : friction_->start) start.insert(start.end(), v.begin(), v.end());
+    a.putVector("contact/frictionStart", start);
+  }
 }
 
 void ContactManager::unarchiveFriction(const StateArchive& a) {
@@ -250,6 +232,11 @@ void ContactManager::unarchiveFriction(const StateArchive& a) {
   friction_->acceptedStatus = a.getVector<char>("contact/frictionStatus", n);
   friction_->dissipated = a.getDouble("contact/frictionWork");
   friction_->pairWork = a.getVector<double>("contact/pairFrictionWork", pairs_.size());
+  friction_->started = friction_->increments && a.has("contact/frictionStart");
+  if (friction_->started) {
+    const std::vector<double> start = a.getVector<double>("contact/frictionStart", 3 * n);
+    for (size_t s = 0; s < n; ++s) friction_->start[s] = Vec3{start[3 * s], start[3 * s + 1], start[3 * s + 2]};
+  }
 }
 
 }  // namespace choc

@@ -153,7 +153,14 @@ class ContactManager {
   // and pressures and adds M^-1 B^T lambda to a on the rows this rank owns. Collective.
   // Throws NumericalError when the sweeps do not converge. inverseMass must be the same at
   // every call (its values at the contact DOFs are gathered once per pairing).
-  void forwardIncrement(const Vector& uStar, const Vector& inverseMass, double h2, Vector& a);
+  // With friction (pairs with mu > 0): then each active node's tangential force that stops its
+  // relative tangential motion from u to uStar, capped at mu lambda (ForwardIncrementFriction.cpp),
+  // h the sub-step (uStar is the position at the time of beginStep plus h). useForwardIncrements
+  // must have been called: the friction of an explicit run is decided here, not by the implicit
+  // law of beginStep and commitStep.
+  void forwardIncrement(const Vector& u, const Vector& uStar, const Vector& inverseMass, double h, double h2,
+                        Vector& a);
+  void useForwardIncrements(bool on);
   void initialize(const Vector& u);          // statuses from the gaps at u, lambda = 0
   StatusUpdate updateStatus(const Vector& u);  // complementarity test, all ranks agree
   void save();
@@ -190,6 +197,8 @@ class ContactManager {
   std::shared_ptr<Friction> friction_;  // null without friction (shared_ptr: an incomplete type here)
   void addFrictionForces(const std::vector<double>& x, const std::vector<double>& g, Vector& out) const;
   void evaluateFriction(const std::vector<double>& x, const std::vector<double>& g) const;
+  void frictionIncrement(const std::vector<double>& x, const std::vector<double>& xStar, double h, double h2,
+                         const Vector& inverseMass, Vector& a);
   Vec3 relativeMotion(int s, const std::vector<double>& x, double t) const;
   void archiveFriction(StateArchive& a) const;
   void archivePairing(StateArchive& a) const;

@@ -10,9 +10,10 @@
 
 namespace choc {
 
-void ContactManager::forwardIncrement(const Vector& uStar, const Vector& inverseMass, double h2,
-                                      Vector& a) {
-  const std::vector<double> g = gaps(uStar);
+void ContactManager::forwardIncrement(const Vector& u, const Vector& uStar, const Vector& inverseMass, double h,
+                                      double h2, Vector& a) {
+  const std::vector<double> xStar = contactValues(uStar);
+  const std::vector<double> g = gapsAt(xStar);
   if (inverseMassTopology_ != topologyVersion_) {  // 1/m of each contact DOF (constant mass)
     inverseMassAtContact_ = gather(contactDofs_, inverseMass);
     inverseMassTopology_ = topologyVersion_;
@@ -40,6 +41,13 @@ void ContactManager::forwardIncrement(const Vector& uStar, const Vector& inverse
       if (l != Teuchos::OrdinalTraits<LO>::invalid()) ad[l] += wd[l] * c * lam[s];
     }
   }
+  if (!friction_) return;
+  // The predicted positions with the pressures' motion (along each constraint's normal; it
+  // moves another constraint sharing a master node tangentially).
+  std::vector<double> corrected = xStar;
+  for (size_t s = 0; s < nS; ++s)
+    for (const auto& [k, c] : localTerms_[s]) corrected[k] += h2 * inverseMassAtContact_[k] * c * lam[s];
+  frictionIncrement(contactValues(u), corrected, h, h2, inverseMass, a);
 }
 
 }  // namespace choc

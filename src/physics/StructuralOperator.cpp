@@ -164,10 +164,10 @@ void StructuralOperator::beginStep(const Vector& u, double t, double dt) {
 
 double StructuralOperator::elasticTermsNorm(const Vector& u) const { return internal_->termsNorm(u); }
 
-void StructuralOperator::addExplicitContact(const Vector& uStar, const Vector& inverseMass, double h2,
-                                            Vector& a) {
+void StructuralOperator::addExplicitContact(const Vector& u, const Vector& uStar, const Vector& inverseMass,
+                                            double h, double h2, Vector& a) {
   TimerScope ts(timer_, "Transient: contact");
-  contact_->forwardIncrement(uStar, inverseMass, h2, a);
+  contact_->forwardIncrement(u, uStar, inverseMass, h, h2, a);
 }
 
 void StructuralOperator::acceptStep(const Vector& u) {

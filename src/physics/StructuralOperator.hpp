@@ -62,7 +62,10 @@ class StructuralOperator : public ExplicitOperator {
   void keepProducts(bool on) override { keepProducts_ = on; }
   // Explicit runs with a multiplier method: contact by forward increments (ContactManager::
   // forwardIncrement) instead of forces and statuses.
-  void setForwardIncrementContact(bool on) { forwardIncrement_ = on; }
+  void setForwardIncrementContact(bool on) {
+    forwardIncrement_ = on;
+    if (contact_) contact_->useForwardIncrements(on);
+  }
   // The contact multipliers condensed out of the Newton system where they can be
   // (ContactCondensation: every constraint against a rigid obstacle, no friction).
   void setCondensedContact(bool on) { condense_ = on; }
@@ -75,7 +78,8 @@ class StructuralOperator : public ExplicitOperator {
   // applyForces' damping term aM m .* v added in the same pass.
   void useDiagonalMass(RCP<const Vector> m) { mass_.useDiagonal(std::move(m)); }
   bool hasExplicitContact() const override { return contact_ && forwardIncrement_; }
-  void addExplicitContact(const Vector& uStar, const Vector& inverseMass, double h2, Vector& a) override;
+  void addExplicitContact(const Vector& u, const Vector& uStar, const Vector& inverseMass, double h, double h2,
+                          Vector& a) override;
   std::string constraintState() const override { return contact_ ? contact_->activeSummary() : ""; }
   void initializeConstraints(const Vector& u) override;
   void saveState() override;

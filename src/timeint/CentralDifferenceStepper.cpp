@@ -28,7 +28,7 @@ void CentralDifferenceStepper::acceleration(const Vector& u, const Vector& vStar
   if (xop_.hasExplicitContact()) {
     uStar_->update(1.0, u, h, vStar, 0.0);
     uStar_->update(factor * h * h, a, 1.0);
-    xop_.addExplicitContact(*uStar_, *inverseMass_, factor * h * h, a);
+    xop_.addExplicitContact(u, *uStar_, *inverseMass_, h, factor * h * h, a);
   }
   op_.saveState();  // the links' state advances with the step
 }

@@ -130,3 +130,10 @@ choc_contact_script(copper_bar_energy 900)
 # modal and the direct transient, above the stable step, refuse, warn and sub-step alike (the
 # same stable and critical steps to 1e-9, the same sub-steps per step).
 choc_contact_script(stability_alike 120)
+
+# Coulomb friction by forward increments in central differences: a block sliding on a rigid
+# plane under a ramped pressure stops where Coulomb's law stops it (1 %), dissipates its kinetic
+# energy as friction work (1 %), as the implicit run does (1 %), with the energy balance at or
+# below +0.1 % of E0; 2 ranks give the same histories to 1e-8 of their peaks.
+choc_contact_script(explicit_friction 300)
+set_tests_properties(cli.explicit_friction PROPERTIES PROCESSORS 2)
