@@ -17,7 +17,7 @@
 namespace choc {
 
 bool ContactCondensation::applies(const ContactManager& contact) {
-  if (contact.hasFriction() || !contact.method().hasMultipliers() || contact.numPairs() == 0) return false;
+  if (!contact.method().hasMultipliers() || contact.numPairs() == 0) return false;
   for (int p = 0; p < contact.numPairs(); ++p)
     if (!contact.pair(p).hasObstacle) return false;
   return true;
@@ -81,12 +81,95 @@ void ContactCondensation::groupActive(const Map& rowMap) {
   }
 }
 
-void ContactCondensation::project(const RCP<CrsMatrix>& A) {
+namespace {
+
+// The inverse of a small dense m x m matrix (column-major), by Gauss-Jordan with partial pivoting;
+// false when singular.
+bool invert(std::vector<double> a, size_t m, std::vector<double>& inv) {
+  inv.assign(m * m, 0.0);
+  for (size_t i = 0; i < m; ++i) inv[i * m + i] = 1.0;
+  for (size_t c = 0; c < m; ++c) {
+    size_t p = c;
+    for (size_t r = c + 1; r < m; ++r)
+      if (std::abs(a[c * m + r]) > std::abs(a[c * m + p])) p = r;
+    if (!(std::abs(a[c * m + p]) > 0.0)) return false;
+    for (size_t k = 0; k < m; ++k) {
+      std::swap(a[k * m + c], a[k * m + p]);
+      std::swap(inv[k * m + c], inv[k * m + p]);
+    }
+    const double d = a[c * m + c];
+    for (size_t k = 0; k < m; ++k) {
+      a[k * m + c] /= d;
+      inv[k * m + c] /= d;
+    }
+    for (size_t r = 0; r < m; ++r) {
+      if (r == c) continue;
+      const double f = a[c * m + r];
+      if (f == 0.0) continue;
+      for (size_t k = 0; k < m; ++k) {
+        a[k * m + r] -= f * a[k * m + c];
+        inv[k * m + r] -= f * inv[k * m + c];
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+void ContactCondensation::project(const RCP<CrsMatrix>& A, const std::vector<MatrixEntry>& multiplierColumns,
+                                  GO multiplierBase) {
   matrix_ = A;
   sigma_ = contact_.scale();
   groupActive(*A->getRowMap());
+  addFriction(multiplierColumns, multiplierBase);
   projectColumns(*A);
   projectRows(*A);
+}
+
+// V = C + (friction's entries in the multipliers' columns, as -sigma V), then P_L and (Q^T V)^-1.
+// Without such entries V = C = Q R: P_L = P.
+void ContactCondensation::addFriction(const std::vector<MatrixEntry>& multiplierColumns, GO multiplierBase) {
+  std::map<int, std::pair<int, int>> where;  // constraint -> (node, column)
+  for (size_t n = 0; n < nodes_.size(); ++n)
+    for (size_t j = 0; j < nodes_[n].constraints.size(); ++j) where[nodes_[n].constraints[j]] = {int(n), int(j)};
+  std::vector<std::vector<double>> V(nodes_.size());
+  for (Node& n : nodes_) {  // C = Q R
+    const size_t dim = n.dofs.size(), m = n.constraints.size();
+    std::vector<double>& v = V[&n - nodes_.data()];
+    v.assign(dim * m, 0.0);
+    for (size_t j = 0; j < m; ++j)
+      for (size_t i = 0; i <= j; ++i)
+        for (size_t a = 0; a < dim; ++a) v[j * dim + a] += n.Q[i * dim + a] * n.R[j * m + i];
+  }
+  for (const MatrixEntry& e : multiplierColumns) {
+    const auto it = where.find(int(e.col - multiplierBase));
+    if (it == where.end()) continue;  // an inactive node's column: no unknown
+    Node& n = nodes_[it->second.first];
+    const auto at = std::lower_bound(n.dofs.begin(), n.dofs.end(), e.row);
+    if (at == n.dofs.end() || *at != e.row)
+      throw std::logic_error("contact condensation: a multiplier's column reaches another node's row");
+    V[it->second.first][size_t(it->second.second) * n.dofs.size() + size_t(at - n.dofs.begin())] -= e.value / sigma_;
+  }
+  for (Node& n : nodes_) {
+    const size_t dim = n.dofs.size(), m = n.constraints.size();
+    const std::vector<double>& v = V[&n - nodes_.data()];
+    std::vector<double> qtv(m * m, 0.0);  // (Q^T V)(i, j)
+    for (size_t j = 0; j < m; ++j)
+      for (size_t i = 0; i < m; ++i)
+        for (size_t a = 0; a < dim; ++a) qtv[j * m + i] += n.Q[i * dim + a] * v[j * dim + a];
+    if (!invert(qtv, m, n.QtVinv))
+      throw NumericalError("contact: the friction of slave node " +
+                           std::to_string(contact_.constraints()[n.constraints[0]].geometry.slaveNode + 1) +
+                           " makes its condensed constraints singular");
+    n.PL.assign(dim * dim, 0.0);
+    for (size_t a = 0; a < dim; ++a) {
+      n.PL[a * dim + a] = 1.0;
+      for (size_t b = 0; b < dim; ++b)  // - sum_ij V(a, i) inv(i, j) Q(b, j)
+        for (size_t i = 0; i < m; ++i)
+          for (size_t j = 0; j < m; ++j) n.PL[a * dim + b] -= v[i * dim + a] * n.QtVinv[j * m + i] * n.Q[j * dim + b];
+    }
+  }
 }
 
 void ContactCondensation::projectColumns(CrsMatrix& A) {
@@ -168,7 +251,7 @@ void ContactCondensation::projectRows(CrsMatrix& A) {
       const long self = at != n.dofs.end() && *at == gcol ? long(at - n.dofs.begin()) : -1;
       for (size_t a = 0; a < dim; ++a) {
         double w = 0.0;
-        for (size_t b = 0; b < dim; ++b) w += n.P[a * dim + b] * v[b];
+        for (size_t b = 0; b < dim; ++b) w += n.PL[a * dim + b] * v[b];
         if (self >= 0)  // sigma Q Q^T on the node's own block
           for (size_t q = 0; q < m; ++q) w += sigma_ * n.Q[q * dim + a] * n.Q[q * dim + size_t(self)];
         L.values(begin[a] + j) = w;
@@ -206,13 +289,13 @@ void ContactCondensation::rightHandSide(const Vector& r, const Vector& u, MultiV
     }
     for (size_t a = 0; a < dim; ++a) {
       double p = sigma_ * n.d0[a];
-      for (size_t c = 0; c < dim; ++c) p += n.P[a * dim + c] * w[c];
+      for (size_t c = 0; c < dim; ++c) p += n.PL[a * dim + c] * w[c];
       bd[n.rows[a]] = p;
     }
   }
 }
 
-// C dlambda = (W du + R) at each node: dlambda = R^-1 Q^T z.
+// V dlambda = (W du + R) at each node: dlambda = (Q^T V)^-1 Q^T z (R^-1 Q^T z without friction).
 void ContactCondensation::takeSolution(const MultiVector& x, Vector& du) const {
   {  // du = P x + d0 at the nodes: their constrained part exact whatever the solver's tolerance
     auto xd = x.getData(0);
@@ -242,12 +325,12 @@ void ContactCondensation::takeSolution(const MultiVector& x, Vector& du) const {
       z[a] = n.r[a];
       for (const auto& [c, w] : n.wRows[a]) z[a] += w * uc[c];
     }
+    std::vector<double> qz(m, 0.0);  // dlambda = (Q^T V)^-1 Q^T z
     for (size_t j = 0; j < m; ++j)
-      for (size_t a = 0; a < dim; ++a) y[j] += n.Q[j * dim + a] * z[a];
-    for (size_t j = m; j-- > 0;) {
-      for (size_t i = j + 1; i < m; ++i) y[j] -= n.R[i * m + j] * y[i];
-      y[j] /= n.R[j * m + j];
-      mine[n.constraints[j]] = y[j] / S;
+      for (size_t a = 0; a < dim; ++a) qz[j] += n.Q[j * dim + a] * z[a];
+    for (size_t i = 0; i < m; ++i) {
+      for (size_t j = 0; j < m; ++j) y[i] += n.QtVinv[j * m + i] * qz[j];
+      mine[n.constraints[i]] = y[i] / S;
     }
   }
   for (int s = 0; s < nS; ++s)  // an inactive node's pressure returns to 0

@@ -10,6 +10,11 @@
 // from the node's equations before projection: C_a dlambda_a = (W du + R)_a. An inactive node's
 // pressure is reset to 0 as in the saddle-point system. The same Newton iterates as the
 // saddle-point system (ContactSystem's extended map), to the solver's tolerance.
+// With friction the sliding node's rows carry its multiplier through V_a = C_a + mu T_a (the
+// friction force mu lambda t grows with lambda): the node's rows are projected by
+// P_L = I - V_a (Q^T V_a)^-1 Q^T, which annihilates V_a, instead of P; then
+//     (P_L W P + sigma Q Q^T) du = P_L (-R - W d0) + sigma d0,   (Q^T V_a) dlambda_a = Q^T (W du + R)_a,
+// W with friction's tangent: not symmetric (GMRES), equal to P W P where nothing slides.
 #pragma once
 #include <vector>
 
@@ -20,14 +25,18 @@ namespace choc {
 
 class ContactCondensation {
  public:
-  // Every constraint involves its slave node alone (no master nodes) and there is no friction.
+  // Every constraint involves its slave node alone (every pair against a rigid obstacle), with
+  // multipliers.
   static bool applies(const ContactManager& contact);
   explicit ContactCondensation(ContactManager& contact) : contact_(contact) {}
 
   // A holds W (values written, fill resumed; DOF map): saves what the right-hand side and the
   // multipliers need, then writes P W P + sigma Q Q^T in place for the current statuses. Throws
   // NumericalError when a node's active constraints are linearly dependent.
-  void project(const RCP<CrsMatrix>& A);
+  // multiplierColumns: the entries of the saddle-point matrix in the multipliers' columns (global
+  // column multiplierBase + s, the unknown lambda_s / sigma) besides -sigma B^T: friction's.
+  void project(const RCP<CrsMatrix>& A, const std::vector<MatrixEntry>& multiplierColumns = {},
+               GO multiplierBase = 0);
   // b = P (-r - W d0) + sigma d0 at u.
   void rightHandSide(const Vector& r, const Vector& u, MultiVector& b);
   // du = x; the pressures corrected (collective).
@@ -41,6 +50,8 @@ class ContactCondensation {
     std::vector<double> Q;         // dofs.size() x m, column-major, orthonormal: C = Q R
     std::vector<double> R;         // m x m, upper triangular, column-major
     std::vector<double> P;         // dofs.size()^2: I - Q Q^T
+    std::vector<double> PL;        // dofs.size()^2: the rows' projector, I - V (Q^T V)^-1 Q^T
+    std::vector<double> QtVinv;    // m x m, column-major: (Q^T V)^-1
     std::vector<double> d0;        // dofs.size(): the correction's part in span(C)
     std::vector<double> r;         // the residual at the rows (rightHandSide)
     std::vector<std::vector<std::pair<LO, double>>> wRows;  // W's rows before projection
@@ -56,6 +67,7 @@ class ContactCondensation {
   RCP<const CrsMatrix> matrix_;       // for the column map and its importer
   double sigma_ = 1.0;
   void groupActive(const Map& rows);
+  void addFriction(const std::vector<MatrixEntry>& multiplierColumns, GO multiplierBase);
   void projectColumns(CrsMatrix& A);  // W P, saving W's entries in the nodes' columns
   void projectRows(CrsMatrix& A);     // P (W P) + sigma Q Q^T on the rows of the nodes this rank owns
 };

@@ -38,9 +38,9 @@ struct ContactSettings {
   bool forwardIncrementsWhenExplicit() const { return method == ContactMethodKind::Lagrange; }
   std::string methodName() const { return contactMethodName(method); }
   // Multipliers that an implicit iterative solve condenses out (ContactCondensation): every
-  // pair against a rigid obstacle, no friction.
+  // pair against a rigid obstacle.
   bool condensable() const {
-    if (!hasMultipliers() || pairs.empty() || frictionPair()) return false;
+    if (!hasMultipliers() || pairs.empty()) return false;
     for (const auto& p : pairs)
       if (!p.hasObstacle) return false;
     return true;

@@ -165,10 +165,19 @@ void ContactSystem::fillEntries(double aM, double aK, const std::vector<MatrixEn
   } else {
     fillBulk(aM, aK, nullptr);
   }
-  for (const MatrixEntry& e : entries)
+  // Condensed: the entries in a multiplier's column (friction's d force / d lambda) are not
+  // in the matrix; the condensation takes them.
+  const GO nU = GO(K_->getRowMap()->getGlobalNumElements());
+  std::vector<MatrixEntry> multiplierColumns;
+  for (const MatrixEntry& e : entries) {
+    if (condensation_ && e.col >= nU) {
+      multiplierColumns.push_back(e);
+      continue;
+    }
     A_->sumIntoGlobalValues(e.row, Teuchos::ArrayView<const GO>(&e.col, 1),
                             Teuchos::ArrayView<const double>(&e.value, 1));
-  if (condensation_) condensation_->project(A_);  // every row was rewritten above
+  }
+  if (condensation_) condensation_->project(A_, multiplierColumns, nU);  // every row was rewritten above
   A_->fillComplete(map_, map_);
   filled_ = true;
   lastAM_ = aM;

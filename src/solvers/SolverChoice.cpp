@@ -40,8 +40,14 @@ SolverChoice chooseLinearSolver(const SolverRegime& r) {
   };
   const std::string size = withCommas(r.unknowns) + " unknowns";
   if (r.unknowns <= kAlwaysDirectUpTo) return {"Direct", "", "", size + ", at most " + withCommas(kAlwaysDirectUpTo)};
-  if (!r.symmetricPositive())
-    return direct(size + "; the matrix is not symmetric positive definite (" + r.notSymmetricBecause + ")");
+  if (!r.symmetricPositive()) {
+    const std::string why = size + "; the matrix is not symmetric positive definite (" + r.notSymmetricBecause + ")";
+    if (r.nearlySymmetric && r.stiffnessToMass <= kJacobiUpTo)
+      return {"GMRES", "Jacobi", "",
+              why + ", mass-dominated: stiffness/mass " + format("%.3g", r.stiffnessToMass) + " <= " +
+                  std::to_string(int(kJacobiUpTo))};
+    return direct(why);
+  }
   const std::string theta = format("%.3g", r.stiffnessToMass);
   const std::string limit = std::to_string(int(kJacobiUpTo));
   if (r.stiffnessToMass <= kJacobiUpTo)

@@ -8,7 +8,9 @@
 //     the distributed package (MUMPS, when the build has it) above kAlwaysDirectUpTo: it factors
 //     on every rank where KLU2 gathers the system to rank 0 (measured on the scale scene's bars
 //     with Lagrange contact, docs/performance/direct-packages.md: at 43,308 unknowns MUMPS takes
-//     0.95 of KLU2's time on one rank and 0.61 on two, where KLU2 gains nothing);
+//     0.95 of KLU2's time on one rank and 0.61 on two, where KLU2 gains nothing); but GMRES +
+//     Jacobi when mass-dominated (theta <= kJacobiUpTo) and only a few rows are not symmetric
+//     (friction against rigid obstacles, whose multipliers an iterative solve condenses out);
 //   - symmetric and mass-dominated (theta <= kJacobiUpTo, theta the largest ratio of a row's
 //     stiffness to its mass in the Newton matrix): CG + Jacobi, whose iterations are bounded by
 //     the condition number of D^-1 W, at most about 1 + theta;
@@ -48,6 +50,9 @@ struct SolverRegime {
   double stiffnessToMass = std::numeric_limits<double>::infinity();  // theta
   std::string distributedDirect;      // the direct package that factors on every rank ("": none)
   bool nodeBlocks = true;             // the caller can give Multigrid the model's node blocks
+  // Not symmetric, but W (K and M) plus a tangent on a few rows (friction against obstacles,
+  // the multipliers condensed): GMRES + Jacobi when mass-dominated, as CG + Jacobi would be.
+  bool nearlySymmetric = false;
   bool symmetricPositive() const { return notSymmetricBecause.empty(); }
 };
 

@@ -137,3 +137,8 @@ choc_contact_script(stability_alike 120)
 # below +0.1 % of E0; 2 ranks give the same histories to 1e-8 of their peaks.
 choc_contact_script(explicit_friction 300)
 set_tests_properties(cli.explicit_friction PROPERTIES PROCESSORS 2)
+
+# The oblique sphere (input/oblique_sphere.xml, TET10, mu = 0.1, 60 degrees): sliding throughout,
+# the tangential impulse over the normal impulse equals mu to 1e-4; Newton iterations per step
+# reported.
+choc_contact_script(oblique_sphere 300)

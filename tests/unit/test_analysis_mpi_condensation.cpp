@@ -2,7 +2,7 @@
 // block of input/compact_block.xml (10 x 10 x 10 HEX8, every component free) pressed into one
 // or two tilted rigid planes, every node of its lower face in contact. The condensed matrix is
 // symmetric, and its solution is the saddle-point system's: the same correction, the same
-// pressures, the active gaps closed. Also on 2 ranks.
+// pressures, the active gaps closed; with sliding friction too. Also on 2 ranks.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -41,8 +41,8 @@ struct Block {
     auto d = test::readDeck(dir, text, comm);
     model = std::make_unique<Model>(*d.input, d.file, comm);
   }
-  // The lower face against each plane (normal, point), Lagrange contact.
-  std::unique_ptr<ContactManager> manager(const std::vector<std::pair<Vec3, Vec3>>& planes) const {
+  // The lower face against each plane (normal, point), Lagrange contact, friction mu.
+  std::unique_ptr<ContactManager> manager(const std::vector<std::pair<Vec3, Vec3>>& planes, double mu = 0.0) const {
     std::vector<PairDefinition> pairs;
     for (size_t i = 0; i < planes.size(); ++i) {
       PairDefinition p;
@@ -50,6 +50,7 @@ struct Block {
       p.slaveSideSet = "bottom";
       p.searchDistance = 1.0;
       p.hasObstacle = true;
+      p.friction = mu;
       RigidObstacle o;
       o.direction = planes[i].first;
       o.point = planes[i].second;
@@ -142,6 +143,58 @@ TEST(MpiContactCondensation, OneTiltedPlaneGivesTheSaddlePointsCorrectionAndPres
 
 TEST(MpiContactCondensation, TwoPlanesAtEveryNodeGiveTheSaddlePointsCorrectionAndPressures) {
   checkCondensation({{{0.1, 0.05, 1.0}, {0, 0, 0.02}}, {{-0.2, 0.1, 1.0}, {0, 0, 0.03}}}, "condensation_two");
+}
+
+// With Coulomb friction (mu = 0.3), the nodes sliding: the first correction gives the
+// pressures (about 4e7 N), then the block is pushed along x by 1 mm, which makes the nodes slide
+// (k_t = 1e12 N/m: 1e9 N against mu f_N); the
+// friction tangent (not symmetric, with d force / d lambda in the multipliers' columns) is
+// condensed with its multiplier column: the same correction and pressures as the saddle point.
+TEST(MpiContactCondensation, SlidingFrictionGivesTheSaddlePointsCorrectionAndPressures) {
+  Block block("condensation_friction");
+  Model& model = *block.model;
+  const std::vector<std::pair<Vec3, Vec3>> plane{{{0.1, 0.05, 1.0}, {0, 0, 0.02}}};
+  auto saddle = block.manager(plane, 0.3), condensed = block.manager(plane, 0.3);
+  Vector u(model.map()), r(model.map()), du(model.map());
+  for (ContactManager* cm : {saddle.get(), condensed.get()}) {
+    cm->setTangentialStiffness(1e12);
+    cm->beginStep(u, 1e-6, 1e-6);
+    cm->initialize(u);
+  }
+  r.randomize();
+  r.scale(1e3);
+  ContactSystem ext(model.stiffness(), model.mass(), saddle.get());
+  ContactSystem con(model.stiffness(), model.mass(), condensed.get(), {}, true);
+  ext.fill(kAM, kAK);
+  con.fill(kAM, kAK);
+  solve(ext, r, u, du);  // the pressures (no friction force yet: lambda was 0)
+  solve(con, r, u, du);
+  // Pushed along x: the nodes slide.
+  Vector push(model.map());
+  for (int n = 0; n < model.mesh().numNodes(); ++n)
+    if (model.dofs().ownsNode(n) && model.dof(n, 0) >= 0) push.replaceGlobalValue(GO(model.dof(n, 0)), 1e-3);
+  Vector fe(model.map()), fc(model.map());
+  saddle->addForces(push, fe);  // evaluates friction at push: sliding
+  condensed->addForces(push, fc);
+  int sliding = 0;
+  for (char st : saddle->frictionKey()) sliding += st == 2;
+  ASSERT_GT(sliding, 0) << "nodes sliding";
+  ext.fill(kAM, kAK);
+  con.fill(kAM, kAK);
+  ASSERT_TRUE(con.condensed());
+  Vector due(model.map()), duc(model.map());
+  solve(ext, r, push, due);
+  solve(con, r, push, duc);
+  const double scale = due.normInf();
+  duc.update(-1.0, due, 1.0);
+  EXPECT_LE(duc.normInf(), 1e-9 * scale) << "the condensed correction with friction";
+  double worst = 0.0, peak = 0.0;
+  for (int s = 0; s < saddle->numConstraints(); ++s) {
+    worst = std::max(worst, std::abs(saddle->pressures()[s] - condensed->pressures()[s]));
+    peak = std::max(peak, std::abs(saddle->pressures()[s]));
+  }
+  EXPECT_GT(peak, 0.0);
+  EXPECT_LE(worst, 1e-9 * peak) << "the pressures with friction";
 }
 
 // Two planes with the same normal at a node: the constraints are dependent, which the

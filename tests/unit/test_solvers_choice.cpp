@@ -57,6 +57,23 @@ TEST(SolverChoice, MatricesThatAreNotSpdTakeTheDistributedPackageAboveTheSmallSi
   EXPECT_EQ(chooseLinearSolver(mass).package, "");
 }
 
+// Friction against obstacles alone (the multipliers condensed): GMRES + Jacobi while
+// mass-dominated, on both sides of the limit; the direct solve beyond it and at small sizes.
+TEST(SolverChoice, NearlySymmetricFrictionIsGmresJacobiWhileMassDominated) {
+  SolverRegime r = regime(2 * kAlwaysDirectUpTo, kJacobiUpTo, "contact friction");
+  r.nearlySymmetric = true;
+  SolverChoice c = chooseLinearSolver(r);
+  EXPECT_EQ(c.method, "GMRES");
+  EXPECT_EQ(c.preconditioner, "Jacobi");
+  r.stiffnessToMass = 1.01 * kJacobiUpTo;
+  EXPECT_EQ(chooseLinearSolver(r).method, "Direct");
+  r = regime(kAlwaysDirectUpTo, 1.0, "contact friction");
+  r.nearlySymmetric = true;
+  EXPECT_EQ(chooseLinearSolver(r).method, "Direct");
+  r = regime(2 * kAlwaysDirectUpTo, 1.0, "contact friction");  // between meshed bodies
+  EXPECT_EQ(chooseLinearSolver(r).method, "Direct");
+}
+
 TEST(SolverChoice, StiffnessDominatedIsDirectThenJacobiThenMultigrid) {
   EXPECT_EQ(chooseLinearSolver(regime(50000, kJacobiUpTo)).preconditioner, "Jacobi");
   EXPECT_EQ(chooseLinearSolver(regime(50000, 1.01 * kJacobiUpTo)).method, "Direct");
