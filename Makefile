@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-kept bench-direct bench-multigrid bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction docs clean
+.PHONY: all deps configure build run test study bench bench-kept bench-direct bench-multigrid bench-bracket bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction docs clean
 
 all: build
 
@@ -44,12 +44,18 @@ bench: build
 	$(PYTHON) tools/bench/bench_direct_packages.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_block_drop.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_multigrid.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_bracket.py --build $(BUILD)
 
 # The direct packages on contact scenes: KLU2 on rank 0 against MUMPS on every rank, 1 and 2
 # ranks; the scale scene's bars, then a compact block (against penalty contact too).
 bench-direct: build
 	$(PYTHON) tools/bench/bench_direct_packages.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_block_drop.py --build $(BUILD)
+
+# The bracket drop with friction: implicit and explicit, 1 and 2 ranks, against an implicit run at
+# a small step (--sizes 1.5e-3 for about 200,000 unknowns).
+bench-bracket: build
+	$(PYTHON) tools/bench/bench_bracket.py --build $(BUILD)
 
 # CG's preconditioners on stiffness-dominated steps (153,792 unknowns): Multigrid, Schwarz, Jacobi.
 bench-multigrid: build

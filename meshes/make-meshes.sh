@@ -31,6 +31,8 @@ gmsh -2 -order 2 -format msh41 "$here/hertz_hemisphere.geo" -o "$here/hertz_hemi
 gmsh -2 -order 2 -format msh41 "$here/hertz_two_spheres.geo" -o "$here/hertz_two_spheres.msh" > /dev/null
 # A sphere hitting a rigid plane obliquely (TET10, the half z >= 0), for frictional contact.
 gmsh -3 -order 2 -format msh41 "$here/oblique_sphere.geo" -o "$here/oblique_sphere.msh" > /dev/null
+# A steel L-bracket (TET10) for the drop tests.
+gmsh -3 -order 2 -format msh41 "$here/bracket.geo" -o "$here/bracket.msh" > /dev/null
 # SDND101: the oscillator on a stop, one beam standing for the discrete spring and mass.
 gmsh -1 -format msh41 "$here/sdnd101.geo" -o "$here/sdnd101.msh" > /dev/null
 # SDNL32: the articulated beam, the deck's 11 nodes.

@@ -199,6 +199,8 @@ class ContactManager {
   void evaluateFriction(const std::vector<double>& x, const std::vector<double>& g) const;
   void frictionIncrement(const std::vector<double>& x, const std::vector<double>& xStar, double h, double h2,
                          const Vector& inverseMass, Vector& a);
+  std::vector<Vec3> tangentialForces(const std::vector<Vec3>& predicted, const std::vector<Vec3>& d,
+                                     const std::vector<char>& acts, double h2, double scale) const;
   Vec3 relativeMotion(int s, const std::vector<double>& x, double t) const;
   void archiveFriction(StateArchive& a) const;
   void archivePairing(StateArchive& a) const;

@@ -32,29 +32,15 @@ Vec3 sum(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] 
 Vec3 scaled(double s, const Vec3& a) { return {s * a[0], s * a[1], s * a[2]}; }
 }  // namespace
 
-void ContactManager::frictionIncrement(const std::vector<double>& x, const std::vector<double>& xStar, double h,
-                                       double h2, const Vector& inverseMass, Vector& a) {
-  Friction& f = *friction_;
-  const size_t nS = constraints_.size();
+// The tangential forces: for each active node (acts), F = -delta / d while |F| <= mu lambda, capped
+// otherwise, delta its predicted relative tangential motion with the other nodes' forces, by
+// projected Gauss-Seidel until no sweep moves a node by more than 1e-12 of scale.
+std::vector<Vec3> ContactManager::tangentialForces(const std::vector<Vec3>& predicted, const std::vector<Vec3>& d,
+                                                   const std::vector<char>& acts, double h2, double scale) const {
+  const Friction& f = *friction_;
   const std::vector<double>& w = inverseMassAtContact_;
-  // The work of the last sub-step's forces and of the new ones over the last sub-step's motion.
-  std::vector<Vec3> r(nS), motion(nS, Vec3{0, 0, 0});
-  for (size_t s = 0; s < nS; ++s) {
-    r[s] = relativeMotion(int(s), x, f.time);
-    if (f.started) motion[s] = inPlane(r[s] - f.start[s], constraints_[s].geometry.normal);
-  }
-  std::vector<Vec3> F(nS, Vec3{0, 0, 0}), d(nS, Vec3{0, 0, 0}), predicted(nS, Vec3{0, 0, 0});
-  std::vector<char> acts(nS, 0);
-  double scale = 0.0;
-  for (size_t s = 0; s < nS; ++s) {
-    const double mu = pairs_[constraints_[s].geometry.pair].friction;
-    if (!(mu > 0) || !(set_.lambda[s] > 0)) continue;
-    acts[s] = 1;
-    for (const auto& t : f.rel[s]) d[s][t.component] += h2 * t.coeff * t.coeff * w[t.k];
-    const Vec3 rStar = relativeMotion(int(s), xStar, f.time + h);
-    predicted[s] = inPlane(rStar - r[s], constraints_[s].geometry.normal);
-    scale = std::max(scale, norm(predicted[s]));
-  }
+  const size_t nS = constraints_.size();
+  std::vector<Vec3> F(nS, Vec3{0, 0, 0});
   std::vector<double> shift(w.size(), 0.0);  // h2 w_k sum of the forces' terms at each DOF
   const double tol = 1e-12 * scale;
   bool converged = false;
@@ -85,6 +71,33 @@ void ContactManager::frictionIncrement(const std::vector<double>& x, const std::
   if (!converged)
     throw NumericalError(format("forward-increment friction: the tangential forces did not converge in %d "
                                 "sweeps (%s)", sweeps, activeSummary().c_str()));
+  return F;
+}
+
+void ContactManager::frictionIncrement(const std::vector<double>& x, const std::vector<double>& xStar, double h,
+                                       double h2, const Vector& inverseMass, Vector& a) {
+  Friction& f = *friction_;
+  const size_t nS = constraints_.size();
+  const std::vector<double>& w = inverseMassAtContact_;
+  // The work of the last sub-step's forces and of the new ones over the last sub-step's motion.
+  std::vector<Vec3> r(nS), motion(nS, Vec3{0, 0, 0});
+  for (size_t s = 0; s < nS; ++s) {
+    r[s] = relativeMotion(int(s), x, f.time);
+    if (f.started) motion[s] = inPlane(r[s] - f.start[s], constraints_[s].geometry.normal);
+  }
+  std::vector<Vec3> d(nS, Vec3{0, 0, 0}), predicted(nS, Vec3{0, 0, 0});
+  std::vector<char> acts(nS, 0);
+  double scale = 0.0;
+  for (size_t s = 0; s < nS; ++s) {
+    const double mu = pairs_[constraints_[s].geometry.pair].friction;
+    if (!(mu > 0) || !(set_.lambda[s] > 0)) continue;
+    acts[s] = 1;
+    for (const auto& t : f.rel[s]) d[s][t.component] += h2 * t.coeff * t.coeff * w[t.k];
+    const Vec3 rStar = relativeMotion(int(s), xStar, f.time + h);
+    predicted[s] = inPlane(rStar - r[s], constraints_[s].geometry.normal);
+    scale = std::max(scale, norm(predicted[s]));
+  }
+  const std::vector<Vec3> F = tangentialForces(predicted, d, acts, h2, scale);
   auto ad = a.getDataNonConst();
   auto wd = inverseMass.getData();
   for (size_t s = 0; s < nS; ++s) {

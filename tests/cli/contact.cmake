@@ -142,3 +142,8 @@ set_tests_properties(cli.explicit_friction PROPERTIES PROCESSORS 2)
 # the tangential impulse over the normal impulse equals mu to 1e-4; Newton iterations per step
 # reported.
 choc_contact_script(oblique_sphere 300)
+
+# The bracket drop by central differences with friction (input/bracket_drop.xml, lumped mass):
+# one impact, the energy balance at or below +0.1 % of E0, 2 ranks equal to 1e-8 of the peaks.
+choc_contact_script(bracket_explicit 300)
+set_tests_properties(cli.bracket_explicit PROPERTIES PROCESSORS 2)

@@ -16,7 +16,6 @@ peak. Writes results/bench/bench_block_drop.json.
 
     bench_block_drop.py [--build build] [--repeat 3] [--sizes 20 30 45] [--direct-sizes 20] [--ranks 1 2]"""
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "lib"))
@@ -45,18 +44,6 @@ def deck(mesh, method, solver, package):
     return d
 
 
-def measure(choc, path, out, ranks):
-    r = chocrun.run(choc, path, out, ranks=ranks)
-    s = chocrun.require_completed(chocrun.read_summary(out, "drop"))
-    v = lambda key: chocrun.summary_value(s, key)  # noqa: E731
-    steps = max(1, v("steps"))
-    return {"unknowns": v("unknowns"), "step_s": v("timers/analysis/max") / steps,
-            "solve_s": v("timers/linear_solve/max"), "factorizations": v("factorizations"),
-            "krylov": v("krylov_iterations"),
-            "peak_rss_mib": r.maxrss_mib, "kib_per_unknown": 1024.0 * r.maxrss_mib / max(1, v("unknowns")),
-            "choc_commit": v("choc/commit")}
-
-
 def main():
     ap = chocrun.bench_arguments(__doc__, "bench-block-drop")
     ap.add_argument("--sizes", nargs="+", type=int, default=[20, 30, 45])
@@ -67,10 +54,7 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     rows = []
     for n in a.sizes:
-        mesh = os.path.join(a.out, f"block_{n}.msh")
-        subprocess.run(["gmsh", "-3", "-format", "msh41", "-setnumber", "n", str(n),
-                        os.path.join(chocrun.TOP, "meshes", "compact_block.geo"), "-o", mesh],
-                       check=True, stdout=subprocess.DEVNULL)
+        mesh = chocrun.gmsh_mesh("compact_block.geo", os.path.join(a.out, f"block_{n}.msh"), n=n)
         reference = None
         for label, (method, solver, package) in RUNS.items():
             if package and n not in a.direct_sizes:
@@ -79,7 +63,8 @@ def main():
                                       os.path.join(a.out, f"block_{n}_{method}_{package or solver}.xml"))
             for ranks in a.ranks:
                 out = os.path.join(a.out, f"block_{n}_{method}_{package or solver}_np{ranks}")
-                rec = chocrun.median_record([measure(choc, path, out, ranks) for _ in range(a.repeat)])
+                rec = chocrun.median_record([chocrun.step_record(choc, path, out, "drop", ranks)
+                                             for _ in range(a.repeat)])
                 history = chocrun.read_history(out, "drop")
                 reference = reference if reference is not None else history
                 rec["max_difference"] = max(chocrun.history_difference(reference, history, ["corner:DZ"]).values())

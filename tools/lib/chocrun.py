@@ -608,6 +608,31 @@ def median(values):
     return statistics.median(values) if values else None
 
 
+def gmsh_mesh(geo, out, order=1, **numbers):
+    """meshes/<geo> meshed in 3D by gmsh into out (msh 4.1) with its numbers set (-setnumber
+    name value), of element order `order`; returns out."""
+    cmd = ["gmsh", "-3", "-order", str(order), "-format", "msh41"]
+    for name, value in numbers.items():
+        cmd += ["-setnumber", name, str(value)]
+    subprocess.run(cmd + [os.path.join(TOP, "meshes", geo), "-o", out], check=True, stdout=subprocess.DEVNULL)
+    return out
+
+
+def step_record(choc, path, out, analysis, ranks=1):
+    """Runs a transient deck and returns its per-step figures: unknowns, step_s (the slowest
+    rank's analysis time per step), solve_s, factorizations, krylov, newton_per_step,
+    peak_rss_mib (the largest process), kib_per_unknown, choc_commit."""
+    r = run(choc, path, out, ranks=ranks)
+    s = require_completed(read_summary(out, analysis))
+    v = lambda key, default=_REQUIRED: summary_value(s, key, default)  # noqa: E731
+    steps = max(1, v("steps"))
+    return {"unknowns": v("unknowns"), "step_s": v("timers/analysis/max") / steps,
+            "solve_s": v("timers/linear_solve/max", 0.0), "factorizations": v("factorizations", 0),
+            "krylov": v("krylov_iterations", 0), "newton_per_step": v("newton", {"iterations": 0})["iterations"] / steps,
+            "peak_rss_mib": r.maxrss_mib, "kib_per_unknown": 1024.0 * r.maxrss_mib / max(1, v("unknowns")),
+            "choc_commit": v("choc/commit")}
+
+
 def median_record(records):
     """The median of each figure over repeated runs' records (dicts of the same keys): numbers
     by statistics.median, lists element by element, other values from the first record."""

@@ -1,0 +1,86 @@
+#!/usr/bin/env python3
+"""The bracket drop (input/bracket_drop.xml): a steel L-bracket (meshes/bracket.geo, TET10) falling at
+3 m/s onto a tilted rigid plane, Coulomb friction mu = 0.2, Lagrange contact, 300 steps of 1 us,
+  - implicit, 'auto' (the friction's saddle point: MUMPS on every rank, or GMRES + Jacobi with
+    the pressures condensed when mass-dominated);
+  - explicit central differences (lumped mass; forward-increment pressures and friction);
+on 1 and 2 ranks, medians of --repeat runs of the time per step; and once, on one rank, the
+implicit run with the lumped mass at a step of --reference-step (the reference of motion): the
+largest difference of TIP:DX, TIP:DZ and CORNER:DZ from it, of each peak, the friction work's
+relative difference at the end, and the explicit run's largest energy balance over E0.
+Writes results/bench/bench_bracket.json.
+
+    bench_bracket.py [--build build] [--repeat 3] [--sizes 3.7e-3] [--ranks 1 2] [--reference-step 1e-7]
+(--sizes 1.5e-3: about 200,000 unknowns.)"""
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "lib"))
+import chocrun  # noqa: E402
+import numpy as np  # noqa: E402
+
+TABLE = [["h_mm", "h [mm]", ".2f"], ["unknowns", "unknowns", ",d"], ["run", "run", ""], ["ranks", "ranks", "d"],
+         ["step_s", "time per step [s]", ".4f"], ["speedup", "1 rank / this", ".2f"],
+         ["newton_per_step", "Newton per step", ".2f"], ["peak_rss_mib", "peak memory [MiB]", ".0f"],
+         ["motion", "motion vs reference, of the peak", ".1e"], ["work", "friction work vs reference", ".1e"],
+         ["balance", "largest balance / E0", ".1e"]]
+MOTION = ["TIP:DX", "TIP:DZ", "CORNER:DZ"]
+AN = "Analyses/drop"
+
+
+def deck(mesh, run, dt=None):
+    d = chocrun.load_deck(chocrun.input_path("bracket_drop.xml"))
+    chocrun.set_param(d, "Mesh/File", mesh)
+    chocrun.set_param(d, f"{AN}/Exodus Interval", 0)
+    if run in ("explicit", "reference"):
+        chocrun.set_param(d, "Model/Blocks/BRACKET/Mass", "lumped", create=True)
+    if run == "explicit":
+        chocrun.set_param(d, f"{AN}/Scheme", "central differences", create=True)
+        chocrun.set_param(d, f"{AN}/Stability Check", "substep", create=True)
+    if run == "reference":
+        chocrun.set_param(d, f"{AN}/Time Step", dt)
+    return d
+
+
+def compare(ref, h):
+    """The reference interpolated at h's times (its step divides h's)."""
+    at = lambda c: np.interp(h["time"], ref["time"], ref[c])  # noqa: E731
+    motion = max(np.max(np.abs(h[c] - at(c))) / np.max(np.abs(ref[c])) for c in MOTION)
+    work = abs(h["floor:friction_work"][-1] / ref["floor:friction_work"][-1] - 1.0)
+    e0 = h["energy:kinetic"][0]
+    return motion, work, float(np.max(h["energy:balance"]) / e0)
+
+
+def main():
+    ap = chocrun.bench_arguments(__doc__, "bench-bracket")
+    ap.add_argument("--sizes", nargs="+", type=float, default=[3.7e-3])
+    ap.add_argument("--ranks", nargs="+", type=int, default=[1, 2])
+    ap.add_argument("--reference-step", type=float, default=1e-7)
+    a = ap.parse_args()
+    choc = chocrun.choc_path(a.build)
+    os.makedirs(a.out, exist_ok=True)
+    rows = []
+    for hsize in a.sizes:
+        mesh = chocrun.gmsh_mesh("bracket.geo", os.path.join(a.out, f"bracket_{hsize:g}.msh"), order=2, h=hsize)
+        ref_out = os.path.join(a.out, f"bracket_{hsize:g}_reference")
+        ref_path = chocrun.write_deck(deck(mesh, "reference", a.reference_step), ref_out + ".xml")
+        chocrun.run(choc, ref_path, ref_out)
+        reference = chocrun.read_history(ref_out, "drop")
+        for run in ("implicit", "explicit"):
+            path = chocrun.write_deck(deck(mesh, run), os.path.join(a.out, f"bracket_{hsize:g}_{run}.xml"))
+            one = None
+            for ranks in a.ranks:
+                out = os.path.join(a.out, f"bracket_{hsize:g}_{run}_np{ranks}")
+                rec = chocrun.median_record([chocrun.step_record(choc, path, out, "drop", ranks)
+                                             for _ in range(a.repeat)])
+                one = one or rec["step_s"]
+                rec["motion"], rec["work"], rec["balance"] = compare(reference, chocrun.read_history(out, "drop"))
+                rec.update({"h_mm": 1e3 * hsize, "run": run, "ranks": ranks, "speedup": one / rec["step_s"]})
+                rows.append(rec)
+    tables = [{"title": f"The bracket drop (medians of {a.repeat} runs; reference: implicit, lumped mass, "
+                        f"dt = {a.reference_step:g} s)", "columns": TABLE}]
+    chocrun.report_bench("bench_bracket", "The bracket drop, implicit and explicit", rows, tables, a)
+
+
+if __name__ == "__main__":
+    main()
