@@ -3,7 +3,8 @@
 # usage: tests/reliability/sanitize.sh SOURCE_DIR ASAN_BUILD_DIR
 # Configures (once) and builds ASAN_BUILD_DIR with -DCHOC_SANITIZE=ON (ASan + UBSan), only the
 # targets needed, with -j2; then runs the unit tests of input, mesh, fem, reference, output,
-# contact and analysis and a shortened SDNL111 B (tests/reliability/inputs/sdnl111b_short.xml)
+# contact and analysis and a shortened SDNL111 B (tests/reliability/inputs/sdnl111b_short.xml),
+# the sliding block, and the compact block with friction (condensed pressures, then explicit)
 # with leak detection on and UBSan halting on the first error. Fails on any sanitizer report.
 # An existing ASAN_BUILD_DIR is reused (reconfigured), so a warm run only recompiles what changed.
 # Leaks reported at exit inside Open MPI, hwloc and Kokkos are suppressed by
@@ -88,6 +89,7 @@ run_input() {
 }
 run_input sdnl111b_short cerc_int.history.csv
 run_input sliding_short lagrange.history.csv
+run_input condensed_friction_short explicit.history.csv
 # The suppressions must not hide everything: count what they matched.
 stamp "done"
 if [ ${#failed[@]} -gt 0 ]; then
