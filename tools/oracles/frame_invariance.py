@@ -89,6 +89,10 @@ def deck(mesh, R, explicit=False):
                    '      <Parameter name="Stability Check" type="string" value="substep"/>', s)
         s = drop_analysis(s, "c_continuous")
         assert "central differences" in s
+    if LINEAR[0]:  # every analysis by this Krylov method (obstacle contact: pressures condensed)
+        s = s.replace('<Parameter name="Method" type="string" value="Direct"/>',
+                      f'<Parameter name="Method" type="string" value="{LINEAR[0][0]}"/>\n'
+                      f'        <Parameter name="Preconditioner" type="string" value="{LINEAR[0][1]}"/>')
     s = s.replace('value="../meshes/sdnv100_bar.msh"', f'value="{mesh}"')
     s = s.replace('<Parameter name="Active Components" type="string" value="DZ"/>',
                   '<Parameter name="Active Components" type="string" value="DX DY DZ"/>')
@@ -195,6 +199,7 @@ def springs_deck(mesh, R, explicit=False):
 
 FRICTION = [0.0]  # the sliding scene's Coulomb coefficient (--friction)
 MORTAR = [False]  # the sliding scene's pair in mortar (--mortar)
+LINEAR = [None]  # --linear-solver (method, preconditioner)
 
 
 # Per scene: its gmsh file, the extrusion the turned mesh takes, its deck, the nodes whose
@@ -274,11 +279,15 @@ def main():
                          "friction force is a reaction, known to Newton's residual tolerance (1e-8 of "
                          "the 6,400 N load: 6.4e-5 N per node, 28 nodes, 2.6e-6 of the 128 N peak); "
                          "a sliding node's is mu f_N, compared with the normal force")
+    ap.add_argument("--linear-solver", nargs=2, metavar=("METHOD", "PRECONDITIONER"), default=None,
+                    help="sdnv100 scene: every analysis by this Krylov method instead of Direct (the "
+                         "contact pressures against the wall condensed out)")
     ap.add_argument("--mortar", action="store_true",
                     help="sliding scene: the pair in mortar ('Discretization' = mortar)")
     a = ap.parse_args()
     FRICTION[0] = a.friction
     MORTAR[0] = a.mortar
+    LINEAR[0] = a.linear_solver
     R = rotation(a.angle, a.axis)
     ref, ref_cost = run(a, "as_drawn", np.eye(3), False)
     rot, rot_cost = run(a, "turned", R, True)
