@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-kept bench-direct bench-multigrid bench-bracket bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction docs clean
+.PHONY: all deps configure build run test study bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction docs clean
 
 all: build
 
@@ -45,6 +45,7 @@ bench: build
 	$(PYTHON) tools/bench/bench_block_drop.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_multigrid.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_bracket.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_oblique_sphere.py --build $(BUILD)
 
 # The direct packages on contact scenes: KLU2 on rank 0 against MUMPS on every rank, 1 and 2
 # ranks; the scale scene's bars, then a compact block (against penalty contact too).
@@ -56,6 +57,11 @@ bench-direct: build
 # a small step (--sizes 1.5e-3 for about 200,000 unknowns).
 bench-bracket: build
 	$(PYTHON) tools/bench/bench_bracket.py --build $(BUILD)
+
+# The oblique sphere's frictional Newton: the status after each correction against after converged
+# solves, at 6k and 17k unknowns, 1 and 2 ranks.
+bench-oblique: build
+	$(PYTHON) tools/bench/bench_oblique_sphere.py --build $(BUILD)
 
 # CG's preconditioners on stiffness-dominated steps (153,792 unknowns): Multigrid, Schwarz, Jacobi.
 bench-multigrid: build

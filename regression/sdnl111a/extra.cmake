@@ -1,10 +1,13 @@
 # The three obstacle shapes reduce to the same axial gap: their histories agree to round-off
-# (the frames differ by cos(90 deg) ~ 6e-17, so 1e-12 of peak is generous round-off).
+# (the frames differ by cos(90 deg) ~ 6e-17, so 1e-12 of peak is generous round-off). The energy
+# balance is left out: a difference of energies far above it, it carries their round-off
+# magnified by that ratio against its own peak (1.4e-12 with OpenBLAS' summation order).
 foreach(shape plans_y cercle)
   add_test(NAME regression.sdnl111a.shapes.${shape}
            COMMAND python3 ${CMAKE_SOURCE_DIR}/tools/oracles/compare_histories.py
                    ${out}/serial/plans_z.history.csv ${out}/serial/${shape}.history.csv
-                   --rtol-peak 1e-12)
+                   --rtol-peak 1e-12
+                   --columns "A:DX,A:VX,C:DX,energy:kinetic,energy:strain,energy:contact,energy:dissipated,energy:total,shock:force,shock:gap,shock:status")
   set_tests_properties(regression.sdnl111a.shapes.${shape} PROPERTIES DEPENDS regression.sdnl111a)
 endforeach()
 # The report (tools/report/make_report.py) on this case's serial results: it runs, its table holds

@@ -35,7 +35,10 @@ void declareNewton(ParameterList& nw) {
   declareDouble(nw, "Residual Tolerance", 1e-8,
                 "||R|| / (largest of ||inertia||, ||forces||, ||contact forces||)", Range::positive());
   declareDouble(nw, "Increment Tolerance", 1e-8,
-                "||du|| of the last correction / ||u_{n+1} - predictor||", Range::positive());
+                "the iterate's error / ||u_{n+1} - predictor||: theta / (1 - theta) ||du_k|| with "
+                "theta = ||du_k|| / ||du_k-1|| < 1 (the error bound from the last two corrections' "
+                "contraction, which accepts a quadratically converged iterate without a correction "
+                "to confirm it), else the last correction ||du_k||", Range::positive());
   declareInt(nw, "Maximum Iterations", 10, "Newton corrections per active-set pass", Range::atLeast(1));
   declareChoice(nw, "Convergence", "auto", {"auto", "residual and increment", "residual"},
                 "which tests accept an iterate: 'residual and increment' both; 'residual' the "
@@ -113,6 +116,7 @@ DirectTransient::DirectTransient(const std::string& name, const Teuchos::Paramet
   s_.rayleighM = ray.get<double>("Mass Coefficient");
   s_.contact = readContactSettings(params_, inputFile_, "Analyses/" + name_);
   s_.time.newton.maxActiveSetIterations = s_.contact.maxActiveSetIterations;
+  s_.time.newton.statusEachCorrection = s_.contact.statusEachCorrection;
   s_.output = readTransientOutput(params_);
   checkStepCount(nominalSteps(s_.time.startTime, s_.time.endTime, s_.time.timeStep), 1, s_.output.limits, inputFile_,
                  "Analyses/" + name_, s_.time.timeStep);

@@ -34,7 +34,17 @@ void declareMethodParameters(ParameterList& ct) {
                 "Penalty also the opening [m] above which an active node leaves it",
                 Range::nonNegative());
   declareInt(ct, "Maximum Active Set Iterations", 20,
-             "Newton solves per step while the active set changes", Range::atLeast(1));
+             "passes of Newton per step while the active set changes (each change of status "
+             "starts one)", Range::atLeast(1));
+  declareChoice(ct, "Status Update", "each correction", {"each correction", "converged solve"},
+                "when the contact status is re-evaluated in an implicit step: 'each correction' "
+                "after every Newton correction (semi-smooth Newton: friction and active set "
+                "converge together, about 3 corrections per step on the oblique sphere); "
+                "'converged solve' only once Newton has converged with the status frozen (a "
+                "fixed point of converged solves: each change costs a whole Newton solve). Both "
+                "end on a state the Newton tests accept with the status it implies; their paths "
+                "differ only where a pass takes more than one correction (friction, shock links, "
+                "inexact linear solves)");
   declareDouble(ct, "Tangential Stiffness", 0.0,
                 "k_t [N/m] per slave node of the pairs with friction: the stick spring (a sticking "
                 "node's elastic slip is F_t / k_t); 0: the stiffness of the stiffest node, the "
@@ -215,6 +225,7 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::
   s.augmentation = ct.get<double>("Augmentation Coefficient");
   s.gapTolerance = ct.get<double>("Gap Tolerance");
   s.maxActiveSetIterations = ct.get<int>("Maximum Active Set Iterations");
+  s.statusEachCorrection = ct.get<std::string>("Status Update") == "each correction";
   s.tangentialStiffness = ct.get<double>("Tangential Stiffness");
   const std::string mass = p.get<std::string>("Contact Mass");
   s.massIsAutomatic = mass == "auto";

@@ -133,8 +133,8 @@ class KeptDirectSolver : public LinearSolver {
       auto bj = b.getVector(j);
       auto xj = x.getVectorNonConst(j);
       const GmresOutcome g = preconditionedGmres(*A_, precondition, *bj, *xj, 0.1 * tol_,
-                                                 std::max(1, budget() - spent_ - 1));
-      spent_ += g.iterations > 0 ? g.iterations + 1 : 0;  // solves beyond a direct solve's one
+                                                 std::max(1, budget() - spent_));
+      spent_ += g.iterations;  // solves beyond a direct solve's one (x0 = P^-1 b, then one per iteration)
       st.iterations += g.iterations;
       if (!g.failure.empty()) {
         st.message = "direct solve failed: " + g.failure;

@@ -12,10 +12,11 @@ namespace {
 
 using Preconditioner = std::function<std::string(const Vector&, Vector&)>;
 
-// The Krylov space: its basis V, the Hessenberg matrix H ((m+1) x m, stored by columns, made
+// The Krylov space: its basis V, the preconditioned basis Z (Z_i = P^-1 V_i, kept so that the
+// solution needs no further solve), the Hessenberg matrix H ((m+1) x m, stored by columns, made
 // upper triangular by the Givens rotations cs/sn) and the rotated residual g.
 struct KrylovSpace {
-  std::vector<RCP<Vector>> V;
+  std::vector<RCP<Vector>> V, Z;
   std::vector<std::vector<double>> H;
   std::vector<double> cs, sn, g;
 };
@@ -53,21 +54,15 @@ bool rotateColumn(std::vector<double> h, KrylovSpace& k, int m, double& next) {
   return true;
 }
 
-// x += P^-1 (V y) with y = H^-1 g (upper triangular) over the first m columns; returns the
-// preconditioner's failure (w and z: work vectors).
-std::string addCorrection(const KrylovSpace& k, int m, const Preconditioner& precondition, Vector& w,
-                          Vector& z, Vector& x) {
+// x += Z y = P^-1 (V y) with y = H^-1 g (upper triangular) over the first m columns.
+void addCorrection(const KrylovSpace& k, int m, Vector& x) {
   std::vector<double> y(m, 0.0);
   for (int i = m - 1; i >= 0; --i) {
     double s = k.g[i];
     for (int j = i + 1; j < m; ++j) s -= k.H[j][i] * y[j];
     y[i] = s / k.H[i][i];
   }
-  w.putScalar(0.0);
-  for (int i = 0; i < m; ++i) w.update(y[i], *k.V[i], 1.0);
-  const std::string failure = precondition(w, z);
-  x.update(1.0, z, 1.0);
-  return failure;
+  for (int i = 0; i < m; ++i) x.update(y[i], *k.Z[i], 1.0);
 }
 
 }  // namespace
@@ -99,12 +94,13 @@ GmresOutcome preconditionedGmres(const CrsMatrix& A,
   k.V.push_back(rcp(new Vector(r0, Teuchos::Copy)));
   k.V[0]->scale(1.0 / beta);
   k.g.push_back(beta);
-  Vector z(map), w(map);
+  Vector w(map);
   int m = 0;
   for (; m < maxIterations; ++m) {
-    out.failure = precondition(*k.V[m], z);
+    k.Z.push_back(rcp(new Vector(map)));
+    out.failure = precondition(*k.V[m], *k.Z[m]);
     if (!out.failure.empty()) return out;
-    A.apply(z, w);
+    A.apply(*k.Z[m], w);
     double next = 0.0;
     if (!rotateColumn(orthogonalize(w, k.V, m), k, m, next)) break;
     out.estimatedResidual = std::fabs(k.g[m + 1]) / bnorm;
@@ -117,8 +113,8 @@ GmresOutcome preconditionedGmres(const CrsMatrix& A,
     k.V.back()->scale(1.0 / next);
   }
   out.iterations = m;
-  out.failure = addCorrection(k, m, precondition, w, z, x);
-  out.converged = out.failure.empty() && out.estimatedResidual <= tol;
+  addCorrection(k, m, x);
+  out.converged = out.estimatedResidual <= tol;
   return out;
 }
 

@@ -1,4 +1,5 @@
-// GMRES (no restart, right preconditioning, modified Gram-Schmidt, Givens rotations) for
+// GMRES (no restart, right preconditioning with the preconditioned basis kept, as flexible
+// GMRES does, so the solution costs no further solve; modified Gram-Schmidt, Givens rotations) for
 // A x = b with a preconditioner given as a function z = P^-1 v. A direct solver uses it with
 // the factorisation of an earlier matrix as P: when A differs from that matrix in r rows,
 // A P^-1 = I + (rank <= r), so GMRES converges in at most r + 1 iterations in exact
@@ -14,7 +15,7 @@ namespace choc {
 
 struct GmresOutcome {
   bool converged = false;
-  int iterations = 0;             // preconditioned solves beyond the first (x0 = P^-1 b) and the last
+  int iterations = 0;             // preconditioned solves beyond the first (x0 = P^-1 b)
   double estimatedResidual = 0;  // GMRES's own ||b - A x|| / ||b|| estimate
   std::string failure;           // a preconditioner failure (empty otherwise)
 };

@@ -12,14 +12,34 @@ namespace choc {
 
 namespace {
 
+// The last two corrections' norms (-1: none yet in this pass).
+struct Increments {
+  double last = -1.0, previous = -1.0;
+  void push(double d) {
+    previous = last;
+    last = d;
+  }
+};
+
+// Whether the increment test accepts the iterate: its error bounded within the tolerance by
+// the contraction of the last two corrections (theta = |du_k| / |du_k-1| < 1:
+// |u* - u_k| <= theta / (1 - theta) |du_k|, Deuflhard), or, with no contraction to measure (one
+// correction, or none), the last correction within it.
+bool incrementWithin(const Increments& inc, double tolerance) {
+  if (inc.last < 0) return false;
+  const double theta = inc.previous > 0 ? inc.last / inc.previous : 1.0;
+  if (theta < 1.0) return theta / (1.0 - theta) * inc.last <= tolerance;
+  return inc.last <= tolerance;
+}
+
 // Whether Newton stops at this iterate: the residual within what its test allows, and the
-// last increment small enough (or the test of the increment waived).
-bool iterateAccepted(const ResidualNorms& n, double allowed, double lastIncrement, bool requireIncrement,
+// increment small enough (or the test of the increment waived).
+bool iterateAccepted(const ResidualNorms& n, double allowed, const Increments& inc, bool requireIncrement,
                      const NewtonSettings& s) {
-  const double stepNorm = n.incrementScale;
+  const double lastIncrement = inc.last;
   const bool resOk = n.residual <= allowed;
-  const bool incOk = lastIncrement >= 0 &&
-                     lastIncrement <= std::max(s.incrementTolerance * stepNorm, 1e-13 * n.solutionNorm);
+  const bool incOk =
+      incrementWithin(inc, std::max(s.incrementTolerance * n.incrementScale, 1e-13 * n.solutionNorm));
   // The predictor (no correction yet) is accepted on its residual only when that residual
   // is at its round-off floor in a pass whose residual test decides alone, and no
   // constraint row is violated (a gap is not measured by the floor's forces): any
@@ -39,46 +59,55 @@ std::string notConvergedMessage(const SecondOrderOperator& op, const ResidualNor
          (state.empty() ? "" : "; " + state) + ")";
 }
 
-// Newton iterations with the constraint status frozen (one active-set pass): true when they
-// converge, false with out.message when they fail.
-bool solveStatusFrozen(SecondOrderOperator& op, const EffectiveCoefficients& c, const ResidualFunction& residual,
-                       Vector& u, const NewtonSettings& s, Vector& r, Vector& du, NewtonOutcome& out) {
-  const bool requireIncrement =
-      s.convergence == Convergence::ResidualAndIncrement ||
-      (s.convergence == Convergence::Auto && !op.linearWithinPass());
-  double lastIncrement = -1.0;
-  for (int it = 0;; ++it) {
-    const ResidualNorms n = residual(u, r);
-    out.residual = n.residual;
-    out.reference = n.reference;
-    if (!std::isfinite(n.residual)) {
-      out.message = "the residual is not finite";
-      return false;
-    }
-    // What the residual test allows: the tolerance of the reference, or the round-off floor.
-    const double allowed = std::max(s.residualTolerance * n.reference, 1e-12 * n.roundoff);
-    if (iterateAccepted(n, allowed, lastIncrement, requireIncrement, s)) return true;
-    if (it >= s.maxIterations) {
-      out.message = notConvergedMessage(op, n, s.maxIterations);
-      return false;
-    }
-    if (s.adaptiveLinearTolerance && n.residual > 0.0)
-      op.relaxNextCorrection(std::min(NewtonSettings::kMaxForcing, NewtonSettings::kForcing * allowed / n.residual));
-    const CorrectionStatus cs = op.solveCorrection(c, u, r, du);
-    ++out.iterations;
-    out.krylovIterations += cs.iterations;
-    if (cs.refactored) ++out.refactorizations;
-    if (!cs.ok) {
-      out.message = "linear solve failed: " + cs.message;
-      return false;
-    }
-    u.update(1.0, du, 1.0);
-    lastIncrement = du.norm2();
-    if (!std::isfinite(lastIncrement)) {
-      out.message = "the Newton correction is not finite";
-      return false;
-    }
+// The walk of one solve: the pass (constraint status) it is in, its corrections, and whether
+// the status was evaluated at the current iterate.
+struct ActiveSetWalk {
+  Increments increments;
+  int correctionsInPass = 0;
+  bool statusCurrent = false;
+  std::string lastSummary;
+};
+
+// Evaluates the status at u; when it changes, a new pass starts (false: too many passes).
+bool evaluateStatus(SecondOrderOperator& op, const Vector& u, const NewtonSettings& s, ActiveSetWalk& w,
+                    NewtonOutcome& out) {
+  const ConstraintUpdate upd = op.updateConstraints(u);
+  w.statusCurrent = true;
+  if (!upd.changed) return true;
+  w.lastSummary = upd.summary;
+  if (out.activeSetIterations >= s.maxActiveSetIterations) {
+    out.message = "the active set did not settle in " + std::to_string(s.maxActiveSetIterations) +
+                  " iterations (last pass: " + w.lastSummary + ")";
+    return false;
   }
+  ++out.activeSetIterations;
+  w.increments = Increments();
+  w.correctionsInPass = 0;
+  return true;
+}
+
+// One Newton correction of u; false with out.message when it fails.
+bool correct(SecondOrderOperator& op, const EffectiveCoefficients& c, const ResidualNorms& n, double allowed,
+             const NewtonSettings& s, Vector& u, Vector& r, Vector& du, ActiveSetWalk& w, NewtonOutcome& out) {
+  if (s.adaptiveLinearTolerance && n.residual > 0.0)
+    op.relaxNextCorrection(std::min(NewtonSettings::kMaxForcing, NewtonSettings::kForcing * allowed / n.residual));
+  const CorrectionStatus cs = op.solveCorrection(c, u, r, du);
+  ++out.iterations;
+  ++w.correctionsInPass;
+  out.krylovIterations += cs.iterations;
+  if (cs.refactored) ++out.refactorizations;
+  if (!cs.ok) {
+    out.message = "linear solve failed: " + cs.message;
+    return false;
+  }
+  u.update(1.0, du, 1.0);
+  w.increments.push(du.norm2());
+  w.statusCurrent = false;
+  if (!std::isfinite(w.increments.last)) {
+    out.message = "the Newton correction is not finite";
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -87,21 +116,43 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
                                    const ResidualFunction& residual, Vector& u,
                                    const NewtonSettings& s) {
   NewtonOutcome out;
+  out.activeSetIterations = 1;
   Vector r(op.map()), du(op.map());
-  std::string lastSummary;
-  for (int pass = 1; pass <= s.maxActiveSetIterations; ++pass) {
-    out.activeSetIterations = pass;
-    if (!solveStatusFrozen(op, c, residual, u, s, r, du, out)) return out;
-    const ConstraintUpdate upd = op.updateConstraints(u);
-    if (!upd.changed) {
-      out.converged = true;
+  const bool requireIncrement =
+      s.convergence == Convergence::ResidualAndIncrement ||
+      (s.convergence == Convergence::Auto && !op.linearWithinPass());
+  ActiveSetWalk w;
+  for (;;) {
+    const ResidualNorms n = residual(u, r);
+    out.residual = n.residual;
+    out.reference = n.reference;
+    if (!std::isfinite(n.residual)) {
+      out.message = "the residual is not finite";
       return out;
     }
-    lastSummary = upd.summary;
+    // What the residual test allows: the tolerance of the reference, or the round-off floor.
+    const double allowed = std::max(s.residualTolerance * n.reference, 1e-12 * n.roundoff);
+    if (iterateAccepted(n, allowed, w.increments, requireIncrement, s)) {
+      if (w.statusCurrent) {
+        out.converged = true;
+        return out;
+      }
+      // The status at the accepted iterate: unchanged, the solve is done; changed, a new pass.
+      const int passes = out.activeSetIterations;
+      if (!evaluateStatus(op, u, s, w, out)) return out;
+      if (out.activeSetIterations == passes) {
+        out.converged = true;
+        return out;
+      }
+      continue;
+    }
+    if (w.correctionsInPass >= s.maxIterations) {
+      out.message = notConvergedMessage(op, n, s.maxIterations);
+      return out;
+    }
+    if (!correct(op, c, n, allowed, s, u, r, du, w, out)) return out;
+    if (s.statusEachCorrection && !evaluateStatus(op, u, s, w, out)) return out;
   }
-  out.message = "the active set did not settle in " + std::to_string(s.maxActiveSetIterations) +
-                " iterations (last pass: " + lastSummary + ")";
-  return out;
 }
 
 NewtonOutcome solveStatic(SecondOrderOperator& op, Vector& u, double t, const NewtonSettings& s) {

@@ -1,9 +1,15 @@
-// Newton iterations on R(u) = 0 with the constraint status frozen, then a fixed point on the
-// status (active set): the status is re-evaluated after each converged Newton solve and the
-// solve repeated until it no longer changes (on any rank). Convergence of Newton needs both
+// Newton iterations on R(u) = 0 with an active set of constraints (contact statuses). The
+// status is re-evaluated at an iterate the tests accept, and the solve goes on from it while
+// the status changes (on any rank); with NewtonSettings::statusEachCorrection also after every
+// correction (semi-smooth Newton: a status change starts a new pass at once instead of after a
+// converged solve). Convergence of Newton needs both
 //   ||R|| <= residualTolerance * reference   (reference: largest of the force terms' norms),
 //            or ||R|| <= 1e-12 * (round-off floor of the system, see ResidualNorms)
-//   ||du|| <= max(incrementTolerance * incrementScale, 1e-13 ||u||) on the last correction
+//   the iterate's error within max(incrementTolerance * incrementScale, 1e-13 ||u||): its
+//   bound from the contraction of the last two corrections, theta / (1 - theta) ||du_k|| with
+//   theta = ||du_k|| / ||du_k-1|| < 1 (Deuflhard's a posteriori estimate: a quadratically
+//   converging iterate needs no correction to confirm it, a slowly contracting one is held to
+//   its error), else (one correction, or no contraction) the last correction ||du_k||
 //   (see ResidualNorms), unless the settings' Convergence waives it: the residual test alone
 //   then accepts any iterate after the first correction, which saves the solve that only
 //   confirms a converged one (the predictor itself is accepted on its residual only when that
@@ -32,6 +38,10 @@ struct NewtonSettings {
   Convergence convergence = Convergence::ResidualAndIncrement;
   int maxIterations = 10;
   int maxActiveSetIterations = 20;
+  // Semi-smooth Newton: the constraint status re-evaluated after every correction, a change
+  // starting a new pass at once; false: only at an iterate the tests accept (a fixed point of
+  // converged Newton solves). Both end at an accepted iterate whose status holds.
+  bool statusEachCorrection = false;
   // Inexact Newton: each correction's iterative linear solve may stop once the linear residual
   // is a tenth of what the residual test allows, kForcing * max(residualTolerance * reference,
   // 1e-12 * roundoff) (the test accepts a residual at its round-off floor too; at most a

@@ -4,7 +4,11 @@
 // linear (SecondOrderOperator::linearWithinPass), so a nonlinear operator keeps the full test.
 // With the adaptive linear tolerance (inexact Newton), each correction asks the operator for a
 // solve only as exact as the residual test needs; the spring then solves to exactly that
-// relative residual, as a Krylov solver stopping there could.
+// relative residual, as a Krylov solver stopping there could. A spring whose corrections
+// contract the error by a fixed factor (a stale tangent) shows the increment test bounding the
+// iterate's error, not just the last correction; one against a stop (a contact status) shows
+// the status updated after each correction (semi-smooth) and after converged solves ending on
+// the same root.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,24 +34,36 @@ class Spring : public SecondOrderOperator {
   void applyMass(const Vector&, Vector& out) override { set(out, 0.0); }
   void applyForces(const Vector& u, const Vector&, double, Vector& out) override {
     const double x = get(u);
-    set(out, k_ * x + k3_ * x * x * x - f_);
+    set(out, k_ * x + k3_ * x * x * x - f_ + (closed_ ? stop * (x - gap) : 0.0));
   }
   double addConstraintForces(const Vector&, const Vector&, Vector&) override { return 0.0; }
   CorrectionStatus solveCorrection(const EffectiveCoefficients& c, const Vector& u, const Vector& r,
                                    Vector& du) override {
     const double x = get(u);
     // A solve to the relative residual asked (exact when none is): du = (1 - eta) du_exact.
-    set(du, -(1.0 - relax_) * get(r) / (c.cd * (k_ + 3 * k3_ * x * x)));
+    const double tangent = k_ + 3 * k3_ * x * x + (closed_ ? stop : 0.0);
+    set(du, -(1.0 - relax_) * (1.0 - contraction) * get(r) / (c.cd * tangent));
     asked.push_back(relax_);
     relax_ = 0.0;
     CorrectionStatus s;
     s.ok = true;
     return s;
   }
-  ConstraintUpdate updateConstraints(const Vector&) override { return {}; }
+  // A stop at u = gap of stiffness `stop`: closed while u > gap (0: none).
+  ConstraintUpdate updateConstraints(const Vector& u) override {
+    ConstraintUpdate up;
+    const bool closed = stop > 0.0 && get(u) > gap;
+    up.changed = closed != closed_;
+    closed_ = closed;
+    ++statusEvaluations;
+    return up;
+  }
   bool linearWithinPass() const override { return linear_; }
   void relaxNextCorrection(double relative) override { relax_ = relative; }
   std::vector<double> asked;  // the relative tolerance each correction was given (0: exact)
+  double contraction = 0.0;   // each correction leaves this fraction of the error (0: Newton)
+  double stop = 0.0, gap = 0.0;
+  int statusEvaluations = 0;
   static double get(const Vector& x) { return x.getData()[0]; }
   static void set(Vector& x, double v) { x.getDataNonConst()[0] = v; }
 
@@ -55,6 +71,7 @@ class Spring : public SecondOrderOperator {
   double k_, k3_, f_;
   bool linear_;
   double relax_ = 0.0;
+  bool closed_ = false;
   RCP<const Map> map_;
 };
 
@@ -231,6 +248,70 @@ TEST(NewtonConvergence, AdaptiveLinearToleranceKeepsTheTestsOfANonlinearPass) {
       EXPECT_GE(op.asked[i], op.asked[i - 1]);  // a smaller residual asks for less
     }
   }
+}
+
+// Corrections that leave a fixed fraction theta of the error (a stale tangent: linear
+// convergence). The last correction alone understates the error by theta / (1 - theta); the
+// increment test bounds the error itself, so the accepted iterate is within the increment
+// tolerance of the root (here 9 times outside it at theta = 0.9 had the last correction
+// decided). The residual test is made loose so that the increment test decides.
+TEST(NewtonConvergence, TheIncrementTestBoundsTheErrorOfALinearlyConvergingIterate) {
+  const double k = 3e7, f = 1.2e4, root = f / k, tol = 1e-6;
+  for (double theta : {0.1, 0.5, 0.9}) {
+    Spring op(k, 0.0, f, false);
+    op.contraction = theta;
+    NewtonSettings s;
+    s.convergence = Convergence::ResidualAndIncrement;
+    s.residualTolerance = 1.0;
+    s.incrementTolerance = tol;
+    s.maxIterations = 400;
+    Vector u(op.map());
+    const NewtonOutcome out = solveStatic(op, u, 0.0, s);
+    ASSERT_TRUE(out.converged) << out.message;
+    EXPECT_LE(std::abs(Spring::get(u) - root), tol * root) << theta;
+  }
+}
+
+// A quadratically converging iterate is accepted without the correction that would only
+// confirm it. From 1.01: |du_1| = 9.9e-3, |du_2| = 7.4e-5 (above the tolerance 1e-6, but
+// theta = 7.5e-3 bounds the error by 5.6e-7), and the residual after it is 1.7e-8: two
+// corrections, where the last correction's test would ask for a third (|du_3| = 4.1e-9).
+TEST(NewtonConvergence, AQuadraticallyConvergedIterateNeedsNoConfirmingCorrection) {
+  const double k = 1.0, k3 = 1.0, f = 2.0;  // root u = 1
+  Spring op(k, k3, f, false);
+  NewtonSettings s;
+  s.convergence = Convergence::ResidualAndIncrement;
+  s.residualTolerance = 1e-6;
+  s.incrementTolerance = 1e-6;
+  const Solved run = solveFrom(op, s, 1.01, f, 0.0);
+  ASSERT_TRUE(run.out.converged) << run.out.message;
+  EXPECT_EQ(run.out.iterations, 2);
+  EXPECT_NEAR(run.u, 1.0, 1e-6);
+}
+
+// A hardening spring that runs into a stop (closed beyond u = gap): the status updated after
+// each correction and after converged solves end on the same root, with the stop closed, and
+// the semi-smooth walk takes fewer corrections (no converged solve on the wrong status).
+TEST(NewtonConvergence, StatusEachCorrectionEndsOnTheSameRootInFewerCorrections) {
+  const double k = 1.0, k3 = 1.0, f = 2.0, stop = 50.0, gap = 0.5;
+  // Root with the stop closed: u + u^3 + 50 (u - 0.5) = 2, u = 0.5228...
+  Solved runs[2];
+  for (int each = 0; each < 2; ++each) {
+    Spring op(k, k3, f, false);
+    op.stop = stop;
+    op.gap = gap;
+    NewtonSettings s;
+    s.convergence = Convergence::ResidualAndIncrement;
+    s.statusEachCorrection = each == 1;
+    runs[each] = solveFrom(op, s, 0.0, f, 0.0);
+    ASSERT_TRUE(runs[each].out.converged) << runs[each].out.message;
+    const double u = runs[each].u;
+    EXPECT_GT(u, gap);
+    EXPECT_NEAR(u + u * u * u + stop * (u - gap), f, 1e-7 * f);
+    EXPECT_EQ(runs[each].out.activeSetIterations, 2);  // one change of status: open, then closed
+  }
+  EXPECT_NEAR(runs[0].u, runs[1].u, 1e-8);
+  EXPECT_LT(runs[1].out.iterations, runs[0].out.iterations);
 }
 
 }  // namespace

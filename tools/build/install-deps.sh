@@ -5,6 +5,7 @@
 set -euo pipefail
 pkgs=(build-essential cmake trilinos-all-dev libptscotch-dev libscotch-dev libmumps-dev
       libexodusii-dev libnetcdf-dev openmpi-bin libopenmpi-dev libgtest-dev
+      libopenblas0-serial  # optimised BLAS/LAPACK (MUMPS factors by dgemm); serial: no threads under MPI
       gmsh libgmsh-dev
       python3 python3-numpy python3-matplotlib python3-netcdf4
       clang libclang-rt-14-dev)  # libFuzzer for tests/reliability (fuzz.sh)
