@@ -159,7 +159,7 @@ void validate(ParameterList& user, const ParameterList& valid, const InputLocati
     if (spec && spec->required())
       throwInput(where.file, where.parameter(name), "", "is required but missing",
                  "add it (" + spec->describe() + ")");
-    user.setEntry(name, Teuchos::ParameterEntry(ve.getAny(false), false, false));
+    user.setEntry(name, Teuchos::ParameterEntry(ve.getAny(false), true, false));  // isDefault: not given
     user.getEntry(name).setDocString(ve.docString());
   }
 }

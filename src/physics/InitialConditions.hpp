@@ -1,6 +1,8 @@
-// Initial displacement and velocity fields from node sets and components, as
-// 'Initial Conditions' named sublists: Node Set, Field (Displacement|Velocity), Components,
-// Value. Components that are not unknowns are ignored (they are fixed at zero).
+// Initial displacement and velocity fields from node sets, as 'Initial Conditions' named
+// sublists: Node Set, Field (Displacement|Velocity: Components and Value; Rigid Velocity: the
+// velocity of a rigid motion, Translation + Angular Velocity x (x - Centre), on every
+// translation and Angular Velocity on the rotations). Components that are not unknowns are
+// ignored (they are fixed at zero).
 #pragma once
 #include <Teuchos_ParameterList.hpp>
 

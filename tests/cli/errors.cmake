@@ -292,6 +292,10 @@ choc_cli_input_error(contact_negative_tangential check bad_contact_negative_tang
   "parameter 'Analyses/impact/Contact/Tangential Stiffness' = '-1e.09': out of range. valid: a number in .0, inf.")
 choc_cli_input_error(friction_explicit check bad_friction_explicit.xml
   "parameter 'Analyses/impact/Contact/Pairs/shock/Friction Coefficient' = '0.3': central differences apply friction by forward increments of Lagrange contact, not with 'Penalty' contact. use 'Contact/Method' = Lagrange, or an implicit scheme")
+choc_cli_input_error(initial_rigid_components check bad_initial_rigid_components.xml
+  "parameter 'Analyses/impact/Initial Conditions/bar 1/Components' = 'DX': is not used with Field = 'Rigid Velocity'. remove it")
+choc_cli_input_error(initial_missing_components check bad_initial_missing_components.xml
+  "parameter 'Analyses/impact/Initial Conditions/bar 1/Components': is required with Field = 'Velocity'. add it")
 choc_cli_input_error(friction_cg check bad_friction_cg.xml
   "parameter 'Analyses/impact/Contact/Pairs/shock/Friction Coefficient' = '0.3': the tangent of a sliding node is not symmetric, which CG cannot solve. use 'Linear Solver/Method' = Direct or GMRES")
 # Loads and springs (SDNV104): each bad input is input/sdnv104_quad4.xml with one thing

@@ -8,3 +8,11 @@ add_test(NAME cli.wave_2d_equals_3d
                  --build ${CMAKE_BINARY_DIR} --out ${CMAKE_CURRENT_BINARY_DIR}/work/wave_2d_equals_3d --levels 25
                  --elements HEX8 QUAD4 --exact-reduction-tolerance 1e-9)
 set_tests_properties(cli.wave_2d_equals_3d PROPERTIES TIMEOUT 120 LABELS cli)
+
+# Initial Conditions with Field = 'Rigid Velocity' (V + omega x (x - Centre)): a free cube's
+# kinetic energy and corner velocity at t = 0 exact to 1e-12, the same motion written about
+# another point equal to 1e-12, and its input errors (scripts/rigid_velocity.py).
+add_test(NAME cli.rigid_velocity
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/rigid_velocity.py
+                 $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/rigid_velocity)
+set_tests_properties(cli.rigid_velocity PROPERTIES TIMEOUT 120 LABELS cli)
