@@ -68,14 +68,10 @@ def main():
         reference = chocrun.read_history(ref_out, "drop")
         for run in ("implicit", "explicit"):
             path = chocrun.write_deck(deck(mesh, run), os.path.join(a.out, f"bracket_{hsize:g}_{run}.xml"))
-            one = None
-            for ranks in a.ranks:
-                out = os.path.join(a.out, f"bracket_{hsize:g}_{run}_np{ranks}")
-                rec = chocrun.median_record([chocrun.step_record(choc, path, out, "drop", ranks)
-                                             for _ in range(a.repeat)])
-                one = one or rec["step_s"]
+            prefix = os.path.join(a.out, f"bracket_{hsize:g}_{run}")
+            for _, out, rec in chocrun.rank_sweep(choc, path, prefix, "drop", a.ranks, a.repeat):
                 rec["motion"], rec["work"], rec["balance"] = compare(reference, chocrun.read_history(out, "drop"))
-                rec.update({"h_mm": 1e3 * hsize, "run": run, "ranks": ranks, "speedup": one / rec["step_s"]})
+                rec.update({"h_mm": 1e3 * hsize, "run": run})
                 rows.append(rec)
     tables = [{"title": f"The bracket drop (medians of {a.repeat} runs; reference: implicit, lumped mass, "
                         f"dt = {a.reference_step:g} s)", "columns": TABLE}]

@@ -55,14 +55,9 @@ def main():
         for status in ("each correction", "converged solve"):
             tag = status.split()[0]
             path = chocrun.write_deck(deck(mesh, status), os.path.join(a.out, f"oblique_{h:g}_{tag}.xml"))
-            one = None
-            for ranks in a.ranks:
-                out = os.path.join(a.out, f"oblique_{h:g}_{tag}_np{ranks}")
-                rec = chocrun.median_record([chocrun.step_record(choc, path, out, "oblique", ranks)
-                                             for _ in range(a.repeat)])
-                one = one or rec["step_s"]
-                rec.update({"status": status, "ranks": ranks, "speedup": one / rec["step_s"],
-                            "ratio_error": impulse_ratio_error(out)})
+            prefix = os.path.join(a.out, f"oblique_{h:g}_{tag}")
+            for _, out, rec in chocrun.rank_sweep(choc, path, prefix, "oblique", a.ranks, a.repeat):
+                rec.update({"status": status, "ratio_error": impulse_ratio_error(out)})
                 rows.append(rec)
     tables = [{"title": f"The oblique sphere, 60 steps (medians of {a.repeat} runs)", "columns": TABLE}]
     chocrun.report_bench("bench_oblique_sphere", "The oblique sphere: frictional Newton", rows, tables, a)
