@@ -40,8 +40,9 @@ struct NewtonSettings {
   int maxActiveSetIterations = 20;
   // Semi-smooth Newton: the constraint status re-evaluated after every correction, a change
   // starting a new pass at once; false: only at an iterate the tests accept (a fixed point of
-  // converged Newton solves). Both end at an accepted iterate whose status holds.
-  bool statusEachCorrection = false;
+  // converged Newton solves). Both end at an accepted iterate whose status holds. The default
+  // is the input's ('Contact/Status Update' = each correction).
+  bool statusEachCorrection = true;
   // Inexact Newton: each correction's iterative linear solve may stop once the linear residual
   // is a tenth of what the residual test allows, kForcing * max(residualTolerance * reference,
   // 1e-12 * roundoff) (the test accepts a residual at its round-off floor too; at most a
