@@ -11,7 +11,8 @@ set_tests_properties(cli.wave_2d_equals_3d PROPERTIES TIMEOUT 120 LABELS cli)
 
 # Initial Conditions with Field = 'Rigid Velocity' (V + omega x (x - Centre)): a free cube's
 # kinetic energy and corner velocity at t = 0 exact to 1e-12, the same motion written about
-# another point equal to 1e-12, and its input errors (scripts/rigid_velocity.py).
+# another point equal to 1e-12, 2 ranks equal to 1e-10, and its input errors
+# (scripts/rigid_velocity.py).
 add_test(NAME cli.rigid_velocity
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/rigid_velocity.py
                  $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/rigid_velocity)
