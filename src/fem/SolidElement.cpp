@@ -10,23 +10,12 @@
 #include "fem/Components.hpp"
 #include "fem/IsoparametricPoint.hpp"
 #include "fem/MassLumping.hpp"
+#include "fem/SolidGeometry.hpp"
 #include "fem/ShapeFunctions.hpp"
 
 namespace choc {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-void checkKinematics(SolidShape t, Kinematics k) {
-  const bool threeD = parametricDimension(t) == 3;
-  if (threeD == (k == Kinematics::ThreeD)) return;
-  std::ostringstream msg;
-  msg << "element topology " << topologyName(t) << " is " << (threeD ? "3D" : "2D")
-      << " and cannot be used with " << toString(k) << " kinematics; "
-      << (threeD ? "use 3D kinematics" : "use plane strain or axisymmetric kinematics");
-  throw std::invalid_argument(msg.str());
-}
 
 void checkMaterial(SolidShape t, const Material& m) {
   auto fail = [t](const char* what, double value) {
@@ -38,51 +27,6 @@ void checkMaterial(SolidShape t, const Material& m) {
   if (!(m.poissonsRatio > -1.0 && m.poissonsRatio < 0.5))
     fail("Poisson ratio must be in (-1, 0.5)", m.poissonsRatio);
   if (!(m.density >= 0)) fail("density must be >= 0", m.density);
-}
-
-void checkAxisymmetricNodes(SolidShape t, const std::vector<Point3>& x) {
-  for (size_t a = 0; a < x.size(); ++a)
-    if (!(x[a][0] >= 0.0)) {
-      std::ostringstream msg;
-      msg << "axisymmetric elements need x = r >= 0: node " << a + 1 << " of a " << topologyName(t)
-          << " element has r = " << x[a][0];
-      throw std::invalid_argument(msg.str());
-    }
-}
-
-// Checks the nodes before any integration: axisymmetric radii, and for the quadratic
-// topologies det J at the corner nodes. A folded quadratic element (two corners swapped, say)
-// can have det J > 0 at every quadrature point but not at its corners. det J = 0 at a corner
-// (collapsed or quarter-point elements) is accepted up to round-off.
-void validateNodes(SolidShape t, Kinematics k, const std::vector<Point3>& x) {
-  if (k == Kinematics::Axisymmetric) checkAxisymmetricNodes(t, x);
-  if (!isQuadratic(t)) return;
-  const std::vector<Point3>& xi = nodeNaturalCoordinates(t);
-  std::vector<double> det(cornerCount(t));
-  double scale = 0.0;
-  for (int a = 0; a < cornerCount(t); ++a) {
-    det[a] = jacobianDeterminant(t, x, xi[a]);
-    scale = std::max(scale, std::fabs(det[a]));
-  }
-  for (int a = 0; a < cornerCount(t); ++a)
-    if (det[a] < -1e-10 * scale) throwInverted(t, det[a], xi[a]);
-}
-
-// Evaluates the map at quadrature point q of `rule` and returns w_q dV_q.
-double volumeWeight(SolidShape t, Kinematics k, const std::vector<Point3>& x,
-                    const QuadratureRule& rule, int q, IsoparametricPoint& p) {
-  evaluateIsoparametric(t, x, rule.points[q], p);
-  double w = rule.weights[q] * p.detJ;
-  if (k != Kinematics::Axisymmetric) return w;
-  const double r = p.x[0];
-  if (!(r > 0.0)) {
-    std::ostringstream msg;
-    msg << "axisymmetric elements need x = r >= 0: radius " << r << " at natural point "
-        << naturalPointText(t, rule.points[q]) << " of a " << topologyName(t)
-        << " element (r must be positive inside the element)";
-    throw std::invalid_argument(msg.str());
-  }
-  return w * 2 * kPi * r;
 }
 
 // Strain-displacement matrix B (strains x element DOFs). Strain order: ThreeD (xx, yy, zz,
@@ -147,10 +91,10 @@ class SolidElement : public ElementKernel {
   // The checks of stiffness() and mass() without their products: the nodes, then det J at
   // every point of both quadrature rules.
   void checkGeometry(const std::vector<Point3>& x) const override {
-    validateNodes(topo_, kin_, x);
+    validateSolidNodes(topo_, kin_, x);
     IsoparametricPoint p;
     for (const QuadratureRule* rule : {&stiffnessRule(topo_, kin_), &massRule(topo_)})
-      for (int q = 0; q < rule->size(); ++q) volumeWeight(topo_, kin_, x, *rule, q, p);
+      for (int q = 0; q < rule->size(); ++q) solidVolumeWeight(topo_, kin_, x, *rule, q, p);
   }
 
  private:
@@ -164,7 +108,7 @@ class SolidElement : public ElementKernel {
 };
 
 void SolidElement::stiffness(const std::vector<Point3>& x, DenseMatrix& K) const {
-  validateNodes(topo_, kin_, x);
+  validateSolidNodes(topo_, kin_, x);
   const QuadratureRule& rule = stiffnessRule(topo_, kin_);
   const int nd = numNodes() * static_cast<int>(comps_.size()), ns = D_.rows();
   K.resize(nd, nd);
@@ -172,7 +116,7 @@ void SolidElement::stiffness(const std::vector<Point3>& x, DenseMatrix& K) const
   DenseMatrix B;
   std::vector<double> DB(size_t(ns) * nd);
   for (int q = 0; q < rule.size(); ++q) {
-    const double w = volumeWeight(topo_, kin_, x, rule, q, p);
+    const double w = solidVolumeWeight(topo_, kin_, x, rule, q, p);
     strainDisplacement(kin_, p, B);
     for (int s = 0; s < ns; ++s)
       for (int j = 0; j < nd; ++j) {
@@ -190,13 +134,13 @@ void SolidElement::stiffness(const std::vector<Point3>& x, DenseMatrix& K) const
 }
 
 DenseMatrix SolidElement::scalarMass(const std::vector<Point3>& x) const {
-  validateNodes(topo_, kin_, x);
+  validateSolidNodes(topo_, kin_, x);
   const QuadratureRule& rule = massRule(topo_);
   const int n = numNodes();
   DenseMatrix m(n, n);
   IsoparametricPoint p;
   for (int q = 0; q < rule.size(); ++q) {
-    const double w = mat_.density * volumeWeight(topo_, kin_, x, rule, q, p);
+    const double w = mat_.density * solidVolumeWeight(topo_, kin_, x, rule, q, p);
     for (int a = 0; a < n; ++a)
       for (int b = 0; b < n; ++b) m(a, b) += w * p.N[a] * p.N[b];
   }
@@ -223,7 +167,7 @@ void SolidElement::mass(const std::vector<Point3>& x, MassKind kind, DenseMatrix
 std::unique_ptr<ElementKernel> makeSolidElement(const std::string& topology, Kinematics kinematics,
                                                 const Material& material) {
   const SolidShape t = solidTopology(topology);
-  checkKinematics(t, kinematics);
+  checkSolidKinematics(t, kinematics);
   checkMaterial(t, material);
   return std::make_unique<SolidElement>(t, kinematics, material);
 }
@@ -231,12 +175,12 @@ std::unique_ptr<ElementKernel> makeSolidElement(const std::string& topology, Kin
 double solidElementMeasure(const std::string& topology, Kinematics kinematics,
                            const std::vector<Point3>& x) {
   const SolidShape t = solidTopology(topology);
-  checkKinematics(t, kinematics);
-  validateNodes(t, kinematics, x);
+  checkSolidKinematics(t, kinematics);
+  validateSolidNodes(t, kinematics, x);
   const QuadratureRule& rule = massRule(t);
   IsoparametricPoint p;
   double v = 0.0;
-  for (int q = 0; q < rule.size(); ++q) v += volumeWeight(t, kinematics, x, rule, q, p);
+  for (int q = 0; q < rule.size(); ++q) v += solidVolumeWeight(t, kinematics, x, rule, q, p);
   return v;
 }
 

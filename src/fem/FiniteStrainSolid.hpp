@@ -1,0 +1,63 @@
+// Isoparametric continuum elements in finite strain, total Lagrangian: every integral over
+// the reference configuration X, the deformation gradient F = I + du/dX at each quadrature
+// point, C = F^T F given to a hyperelastic material (materials/Hyperelastic.hpp) for the
+// second Piola-Kirchhoff stress S, and
+//
+//   internal force  f_ai = int P_iJ dN_a/dX_J dV,                 P = F S (first Piola-Kirchhoff)
+//   tangent         K_ai,bk = int dN_a/dX_J A_iJkL dN_b/dX_L dV,   A_iJkL = delta_ik S_JL
+//                                                                         + F_iI F_kK CC_IJKL
+//
+// (material plus geometric stiffness), with the quadrature and node checks of the small-strain
+// kernel (SolidElement.hpp). Plane strain: F_zz = 1, the in-plane F only. Axisymmetric
+// (x = R, y = Z): F_thetatheta = 1 + u_r / R, whose variation N_a / R adds to the radial
+// rows, integrals over the full ring. Element DOFs node-major like every kernel.
+#pragma once
+#include <array>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fem/DenseMatrix.hpp"
+#include "fem/Kinematics.hpp"
+#include "fem/ShapeFunctions.hpp"
+#include "materials/Hyperelastic.hpp"
+
+namespace choc {
+
+// det F <= 0 (or a material that cannot take C) at a quadrature point: the message names the
+// natural point and the value; the caller adds the element, the block and the time.
+class InvertedElement : public std::domain_error {
+ public:
+  using std::domain_error::domain_error;
+};
+
+class FiniteStrainSolid {
+ public:
+  // Throws std::invalid_argument for an unknown topology or one that does not fit the
+  // kinematics.
+  FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
+                    std::shared_ptr<const HyperelasticMaterial> material);
+  int numNodes() const { return nodeCount(shape_); }
+  int componentsPerNode() const { return kin_ == Kinematics::ThreeD ? 3 : 2; }
+  const HyperelasticMaterial& material() const { return *material_; }
+
+  // f (resized to numNodes() * componentsPerNode()) at the nodal displacements u (same
+  // order) of the element with reference nodes X; K = df/du when K is not null. Returns the
+  // element's strain energy int W dV. Throws InvertedElement (det F <= 0) and, for the
+  // reference geometry, std::invalid_argument like the small-strain kernel.
+  double evaluate(const std::vector<Point3>& X, const std::vector<double>& u, std::vector<double>& f,
+                  DenseMatrix* K) const;
+
+  // The Cauchy stress (xx, yy, zz, xy, yz, zx; for axisymmetric rr, zz, thetatheta, rz, 0, 0)
+  // and the strain-energy density W, both averaged over the element's reference volume.
+  void averageStress(const std::vector<Point3>& X, const std::vector<double>& u, std::array<double, 6>& sigma,
+                     double& energyDensity) const;
+
+ private:
+  SolidShape shape_;
+  Kinematics kin_;
+  std::shared_ptr<const HyperelasticMaterial> material_;
+};
+
+}  // namespace choc
