@@ -20,6 +20,8 @@
 #include "input/ParameterSpec.hpp"
 #include "output/InteractionList.hpp"
 #include "physics/CriticalStep.hpp"
+#include "analysis/DeformedStability.hpp"
+#include "physics/FiniteStrainForce.hpp"
 #include "physics/LinearElasticForce.hpp"
 #include "solvers/FactorizationBackend.hpp"
 #include "solvers/SolverChoice.hpp"
@@ -64,6 +66,11 @@ Teuchos::ParameterList DirectTransient::parameters() {
                 "Newmark-family preset (see src/timeint/NewmarkFamily.hpp), or 'central "
                 "differences': explicit, lumped mass, no linear solve (src/timeint/CentralDifferenceStepper.hpp)");
   declareStabilityCheck(p);
+  declareInt(p, "Critical Step Interval", 10,
+             "central differences with finite-strain blocks: every this many steps the critical step "
+             "is estimated again on the deformed mesh (the elements' tangent against their lumped "
+             "mass) and 'Stability Check' decides again (src/analysis/DeformedStability.hpp)",
+             Range::positive());
   declareDouble(p, "Alpha", -0.1,
                 "alpha of 'modified average acceleration' and 'HHT', in [-1/3, 0]: "
                 "beta = (1-alpha)^2/4, gamma = 1/2 - alpha");
@@ -160,6 +167,7 @@ DirectTransient::DirectTransient(const std::string& name, const Teuchos::Paramet
 void DirectTransient::readScheme() {
   const std::string schemeName = params_.get<std::string>("Scheme");
   s_.stability = stabilityCheckFromName(params_.get<std::string>("Stability Check"));
+  s_.criticalStepInterval = params_.get<int>("Critical Step Interval");
   if (schemeName == "central differences") {
     s_.explicitScheme = true;
     return;
@@ -204,6 +212,7 @@ void DirectTransient::setup(SetupContext& ctx) {
   Model& model = ctx.model;
   b_ = std::make_unique<Built>();
   b_->K = model.stiffness();
+  b_->finiteStrain = model.finiteStrain();
   b_->M = model.mass();
   b_->meshMass = b_->M;
   b_->loads = assembleLoads(model);
@@ -355,8 +364,15 @@ std::unique_ptr<StructuralStepper> DirectTransient::stepper(StructuralOperator& 
   if (s_.explicitScheme) {
     op.storeStiffnessSymmetrically();  // one product with K per sub-step is the run's cost
     op.useDiagonalMass(b_->explicitPlan->massDiagonal);
-    return std::make_unique<CentralDifferenceStepper>(op, b_->explicitPlan->inverseMass, s_.time,
-                                                      b_->explicitPlan->substeps);
+    auto cd = std::make_unique<CentralDifferenceStepper>(op, b_->explicitPlan->inverseMass, s_.time,
+                                                         b_->explicitPlan->substeps);
+    if (b_->finiteStrain) {
+      auto monitor = std::make_shared<DeformedStability>(op, *b_->explicitPlan, s_.rayleighK, s_.rayleighM,
+                                                         s_.time.timeStep, s_.stability, s_.time.label);
+      cd->monitorStability(s_.criticalStepInterval,
+                           [monitor](const Vector& u, double t, long long n) { return (*monitor)(u, t, n); });
+    }
+    return cd;
   }
   return std::make_unique<NewmarkStepper>(op, s_.scheme, s_.time);
 }
@@ -364,7 +380,12 @@ std::unique_ptr<StructuralStepper> DirectTransient::stepper(StructuralOperator& 
 void DirectTransient::run(RunContext& ctx) {
   const auto wallStart = std::chrono::steady_clock::now();
   auto timer = rcp(new Teuchos::StackedTimer(("Transient '" + name_ + "'").c_str()));
-  StructuralOperator op(std::make_shared<LinearElasticForce>(b_->K), b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->contact.get(),
+  std::shared_ptr<InternalForce> internal;
+  if (ctx.model.finiteStrain())
+    internal = std::make_shared<FiniteStrainForce>(ctx.model);
+  else
+    internal = std::make_shared<LinearElasticForce>(b_->K);
+  StructuralOperator op(internal, b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->contact.get(),
                         b_->links.get(), std::move(b_->solver), timer.get());
   op.setForwardIncrementContact(s_.explicitScheme && s_.contact.forwardIncrementsWhenExplicit());
   op.setCondensedContact(!s_.explicitScheme && b_->condenseContact);

@@ -50,6 +50,7 @@ class DirectTransient : public Analysis {
     NewmarkFamily scheme = NewmarkFamily::averageAcceleration();
     bool explicitScheme = false;  // 'central differences': CentralDifferenceStepper, lumped mass
     StabilityCheck stability = StabilityCheck::Refuse;
+    int criticalStepInterval = 10;  // steps between estimates on the deformed mesh (finite strain)
     TransientSettings time;
     double rayleighK = 0, rayleighM = 0;
     ContactSettings contact;
@@ -59,6 +60,7 @@ class DirectTransient : public Analysis {
   struct Built {
     RCP<const CrsMatrix> K, M;
     RCP<const CrsMatrix> meshMass;  // the mesh's lumped mass (M before any redistribution)
+    bool finiteStrain = false;      // some block has 'Strain' = 'finite'
     std::string solverChoice;  // the 'auto' linear solver's reason, for the log
     bool condenseContact = false;  // the multipliers condensed out (an iterative solve, obstacles)
     std::shared_ptr<const Loads> loads;

@@ -27,6 +27,8 @@ ExplicitPlan planExplicit(const ExplicitInputs& in) {
   const Switching switching = k > 0 ? Switching::PenaltyContact
                               : in.links ? Switching::PenaltyLinks
                                          : Switching::None;
+  p.switching = switching;
+  p.meshBound = in.meshBound;
   const StabilityDecision d = decideStability(in.timeStep, p.criticalStep, switching, in.check);
   if (d.refused)
     throwInput(in.file, in.analysisPath + "/Time Step", shortNumber(in.timeStep),

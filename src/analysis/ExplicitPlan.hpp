@@ -18,6 +18,8 @@ struct ExplicitPlan {
   FrequencyBound bound;
   double criticalStep = 0;
   int substeps = 1;
+  Switching switching = Switching::None;  // what switches on and off (the stable step's share)
+  double meshBound = 0;                   // the element bound the plan used (infinite: none)
   std::string stabilityWarning;  // 'Stability Check' = warn above the stable step
 };
 

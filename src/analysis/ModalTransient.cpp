@@ -103,6 +103,10 @@ void ModalTransient::readTimeGrid() {
 }
 
 void ModalTransient::setup(SetupContext& ctx) {
+  if (ctx.model.finiteStrain())
+    throwInput(inputFile_, "Model/Blocks/" + ctx.model.firstFiniteStrainBlock() + "/Strain", "finite",
+               "a modal transient ('" + name_ + "') superposes the modes of the linear model",
+               "use a direct 'Transient' analysis for finite strain, or 'Strain' = 'small'");
   const auto basis = ctx.modalAnalyses.find(s_.basis);
   if (basis == ctx.modalAnalyses.end()) {
     std::vector<std::string> names;

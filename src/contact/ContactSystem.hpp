@@ -38,6 +38,9 @@ class ContactSystem {
   // plus the extra entries (rows this rank owns, within the declared couplings). With the
   // (aM, aK) of the last fill only the rows the coupling entries touch are rewritten.
   void fill(double aM, double aK, const std::vector<MatrixEntry>& extra = {});
+  // K's values changed (a nonlinear model's tangent): the next fill rewrites every row, where
+  // it would otherwise rewrite only the rows whose coupling entries changed.
+  void stiffnessChanged() { filled_ = false; }
   // The same with the coupling entries given (those of an earlier fill, from lastEntries()).
   void fillEntries(double aM, double aK, const std::vector<MatrixEntry>& entries);
   // The coupling entries of the last fill that this rank summed (rows it owns), in order.

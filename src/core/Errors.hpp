@@ -26,6 +26,14 @@ class NumericalError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A state outside the model's domain (an element inverted: det F <= 0), agreed on by every
+// rank. An implicit step treats it as a failed attempt and cuts dt; an explicit run stops (exit
+// 2), its message naming the element, the block and the time.
+class InadmissibleState : public NumericalError {
+ public:
+  using NumericalError::NumericalError;
+};
+
 // A results or checkpoint file that cannot be written (disk full, file-size limit): exit 2,
 // like a numerical failure (the run cannot produce its result), one line naming the file.
 class OutputError : public std::runtime_error {

@@ -180,7 +180,8 @@ RCP<Graph> patternGraph(const RCP<const Map>& map, long long first, int owned, c
 // nonzero value, and its value is the sum of those values in element order, then springs: the
 // same graph and bits as summing a stored list. Each element matrix is computed twice, which
 // costs less than the stored list's sort did (300k unknowns: 2.6 s against 3.2 s).
-RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs) const {
+RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs,
+                                   RCP<const Graph> graph) const {
   const int owned = dofs_.numOwned();
   const long long first = dofs_.firstOwned();
   DenseMatrix Ke;
@@ -216,8 +217,9 @@ RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<
       }
   };
   const bool narrow = dofs_.numGlobal() <= (long long)std::numeric_limits<std::uint32_t>::max();
-  RCP<Graph> graph = narrow ? patternGraph<std::uint32_t>(map_, first, owned, forEachRow, cols)
-                            : patternGraph<GO>(map_, first, owned, forEachRow, cols);
+  if (graph.is_null())
+    graph = narrow ? patternGraph<std::uint32_t>(map_, first, owned, forEachRow, cols)
+                   : patternGraph<GO>(map_, first, owned, forEachRow, cols);
   // Pass 2: the values on the graph, summed in element order.
   RCP<CrsMatrix> A = rcp(new CrsMatrix(graph));
   A->setAllToScalar(0.0);
@@ -236,6 +238,20 @@ RCP<CrsMatrix> Assembler::stiffness(const std::vector<NodalSpring>& springs) con
   return assemble([](const ElementKernel& k, MassKind, const std::vector<Point3>& x, const int*,
                      DenseMatrix& Ke) { k.stiffness(x, Ke); },
                   springs);
+}
+
+RCP<CrsMatrix> Assembler::stiffnessWithout(const std::vector<char>& skip, const std::vector<NodalSpring>& springs,
+                                           const RCP<const Graph>& graph) const {
+  std::vector<const ElementKernel*> skipped;
+  for (size_t b = 0; b < blocks_.size() && b < skip.size(); ++b)
+    if (skip[b]) skipped.push_back(blocks_[b].kernel.get());
+  return assemble(
+      [&](const ElementKernel& k, MassKind, const std::vector<Point3>& x, const int*, DenseMatrix& Ke) {
+        if (std::find(skipped.begin(), skipped.end(), &k) == skipped.end()) return k.stiffness(x, Ke);
+        const int n = static_cast<int>(x.size() * k.components().size());
+        Ke.resize(n, n);
+      },
+      springs, graph);
 }
 
 RCP<CrsMatrix> Assembler::mass() const {

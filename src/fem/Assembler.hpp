@@ -49,6 +49,12 @@ class Assembler {
   RCP<const Map> map() const { return map_; }
   // The elements' stiffness, plus the springs' k d d^T summed after them.
   RCP<CrsMatrix> stiffness(const std::vector<NodalSpring>& springs = {}) const;
+  // The stiffness of the blocks not flagged in `skip` (one flag per mesh block) plus the
+  // springs, on `graph` (that of stiffness(springs)): the entries only skipped blocks give are
+  // present and zero. The linear part of a model whose flagged blocks are computed otherwise
+  // (finite strain), on the graph their tangent is added into.
+  RCP<CrsMatrix> stiffnessWithout(const std::vector<char>& skip, const std::vector<NodalSpring>& springs,
+                                  const RCP<const Tpetra::CrsGraph<LO, GO>>& graph) const;
   RCP<CrsMatrix> mass() const;
   // The mass with the nodes flagged in `massless` (one entry per mesh node) carrying none: each
   // element touching them has its mass redistributed onto its other nodes
@@ -71,7 +77,9 @@ class Assembler {
  private:
   using ElementMatrixFn = std::function<void(const ElementKernel&, MassKind, const std::vector<Point3>&,
                                              const int* conn, DenseMatrix&)>;
-  RCP<CrsMatrix> assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs = {}) const;
+  // On `graph` when given (else the graph of the nonzero entries).
+  RCP<CrsMatrix> assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs = {},
+                          RCP<const Tpetra::CrsGraph<LO, GO>> graph = Teuchos::null) const;
   // One element this rank computes: its block's physics, nodes, coordinates and the global DOF
   // of each (node, component) in element order (-1: fixed or not carried).
   struct LocalElement {

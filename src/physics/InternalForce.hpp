@@ -45,6 +45,10 @@ class InternalForce {
   // || |K| |u| ||: the size of the terms whose sum is f_int(u), for the round-off floor of
   // Newton's residual test (0 when not known).
   virtual double termsNorm(const Vector& /*u*/) const { return 0.0; }
+  // An upper bound of the largest eigenvalue of the state-dependent elements at u against their
+  // lumped mass (the element bound, fem/ElementFrequencyBound.hpp), for an explicit run's
+  // critical step on the deformed mesh; 0 when nothing depends on the state. Collective.
+  virtual double stateEigenvalueBound(const Vector& /*u*/) const { return 0.0; }
   // Explicit runs stream the products of a symmetric model from half its entries.
   virtual void preferSymmetricProducts() {}
   virtual void commit() {}

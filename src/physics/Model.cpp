@@ -132,6 +132,8 @@ std::vector<BlockPhysics> Model::blockPhysics(const Teuchos::ParameterList& mode
     blockMaterial_[b] = m;
     physics[b].mass = bp.get<std::string>("Mass") == "lumped" ? MassKind::Lumped : MassKind::Consistent;
     physics[b].kernel = blockKernel(blk, kinematics_, m, bp, file);
+    finite_.push_back(strainKernel(blk, bp, matName, mp));
+    kernels_.push_back(physics[b].kernel);
   }
   return physics;
 }

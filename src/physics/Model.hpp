@@ -11,6 +11,7 @@
 
 #include "fem/Assembler.hpp"
 #include "fem/DofMap.hpp"
+#include "fem/FiniteStrainSolid.hpp"
 #include "fem/Kinematics.hpp"
 #include "fem/Material.hpp"
 #include "core/TpetraTypes.hpp"
@@ -36,6 +37,19 @@ class Model {
   const std::string& inputFile() const { return inputFile_; }
   RCP<const CrsMatrix> stiffness();  // assembled once, cached
   RCP<const CrsMatrix> mass();
+  // Per mesh block: the total Lagrangian kernel of a block whose 'Strain' is 'finite', else
+  // null. stiffness() is every block's small-strain stiffness all the same: the tangent at u = 0.
+  const std::vector<std::shared_ptr<const FiniteStrainSolid>>& finiteStrainKernels() const { return finite_; }
+  // The small-strain kernel of a block (its mass, its stiffness at u = 0); null without unknowns.
+  const ElementKernel* elementKernel(int block) const { return kernels_[size_t(block)].get(); }
+  bool finiteStrain() const;  // some block has 'Strain' = 'finite'
+  // The first block with 'Strain' = 'finite' ("" when none), for messages.
+  std::string firstFiniteStrainBlock() const;
+  // The small-strain blocks' stiffness and the springs, on stiffness()'s graph (the entries
+  // finite-strain blocks alone give are zero).
+  RCP<const CrsMatrix> smallStrainStiffness();
+  // Elements (global indices) computed on this rank, in global order (Assembler).
+  const std::vector<int>& localElements() const { return assembler_->localElements(); }
   // The mass with the flagged nodes (one entry per mesh node) massless and their elements' mass
   // redistributed onto the other nodes (Assembler::mass(massless)); not cached. Throws
   // std::invalid_argument when an element has every node flagged.
@@ -61,6 +75,11 @@ class Model {
   std::shared_ptr<const ElementKernel> blockKernel(const ElementBlock& blk, Kinematics kin,
                                                   const Material& m, const Teuchos::ParameterList& bp,
                                                   const std::string& file) const;
+  // The block's finite-strain kernel (null for 'Strain' = 'small'), the material's 'Model'
+  // checked against the block's 'Strain'.
+  std::shared_ptr<const FiniteStrainSolid> strainKernel(const ElementBlock& blk, const Teuchos::ParameterList& bp,
+                                                        const std::string& materialName,
+                                                        const Teuchos::ParameterList& mp) const;
   void checkElementGeometry(const std::vector<BlockPhysics>& physics, const std::string& meshParameter) const;
   void readSprings(const Teuchos::ParameterList& springs);
   void buildDofMap(std::vector<std::uint8_t> mask, const std::string& method);
@@ -74,6 +93,8 @@ class Model {
   std::unique_ptr<Assembler> assembler_;
   std::vector<NodalSpring> springs_;  // Model/Springs, one per node
   RCP<const CrsMatrix> K_, M_;
+  std::vector<std::shared_ptr<const FiniteStrainSolid>> finite_;
+  std::vector<std::shared_ptr<const ElementKernel>> kernels_;
 };
 
 }  // namespace choc

@@ -23,6 +23,12 @@ void declareMaterialParameters(ParameterList& model) {
   declareRequiredDouble(mat, "Young's Modulus", "E [Pa]", Range::positive());
   declareDouble(mat, "Poisson's Ratio", 0.0, "nu [-]", {-1.0, 0.5, true, true});
   declareRequiredDouble(mat, "Density", "rho [kg/m^3]", Range::positive());
+  declareChoice(mat, "Model", "linear elastic", {"linear elastic", "Saint Venant-Kirchhoff", "neo-Hookean"},
+                "the material law: 'linear elastic' (small strain: blocks with 'Strain' = 'small'); "
+                "in finite strain ('Strain' = 'finite'), 'Saint Venant-Kirchhoff' (S = lambda tr(E) I "
+                "+ 2 mu E, E the Green-Lagrange strain: exact for large rotations, for moderate "
+                "strains) or compressible 'neo-Hookean' (W = mu/2 (I1 - 3) - mu ln J + lambda/2 "
+                "(ln J)^2); mu and lambda are the Lame constants of E and nu");
 }
 
 void declareSectionParameters(ParameterList& blk) {
@@ -48,6 +54,12 @@ void declareBlockParameters(ParameterList& model) {
                                             "one entry per element block of the mesh, by name");
   declareRequiredString(blk, "Material", "name of an entry of Model/Materials");
   declareChoice(blk, "Mass", "consistent", {"consistent", "lumped"}, "mass matrix of the block");
+  declareChoice(blk, "Strain", "small", {"small", "finite"},
+                "kinematics of the block's solids: 'small' (linear strain, an assembled stiffness: "
+                "a linear elastic material) or 'finite' (total Lagrangian: deformation gradient F, "
+                "Green-Lagrange strain, second Piola-Kirchhoff stress; a hyperelastic material; "
+                "direct transients only). Large rotations need 'finite': a small-strain body turned "
+                "through a large angle is stressed by the rotation itself. Beams are small-strain");
   declareSectionParameters(blk);
 }
 

@@ -96,6 +96,8 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
   if (change != KeyChange::None) {
     {
       TimerScope ts(timer_, "Transient: assembly");
+      if (key.tangent != filledTangent_) sys.stiffnessChanged();
+      filledTangent_ = key.tangent;
       sys.fill(mass_.massCoefficient(c), mass_.stiffnessCoefficient(c),
                     linkTangent ? links_->tangent(c.cv / c.cd) : std::vector<MatrixEntry>());
     }

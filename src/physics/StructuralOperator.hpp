@@ -88,6 +88,8 @@ class StructuralOperator : public ExplicitOperator {
   void unarchive(const StateArchive& a) override;
 
   const DirectLinks* links() const { return links_; }
+  // The state-dependent elements' eigenvalue bound at u (InternalForce::stateEigenvalueBound).
+  double stateEigenvalueBound(const Vector& u) const { return internal_->stateEigenvalueBound(u); }
   // Energies of a state, for the output: 1/2 v.M v, the stored elastic energy, the contact springs' energy,
   // the damping power v.C v (given the kinetic energy).
   double kineticEnergy(const Vector& v) const { return mass_.kineticEnergy(v); }
@@ -117,7 +119,8 @@ class StructuralOperator : public ExplicitOperator {
   std::unique_ptr<LinearSolver> solver_;
   Teuchos::StackedTimer* timer_;
   std::unique_ptr<ContactSystem> system_;
-  int systemTopology_ = 0;  // the contact manager's topologyVersion() the graph was built for
+  int systemTopology_ = 0;
+  long long filledTangent_ = 0;  // the tangent version the system's K rows were last written from  // the contact manager's topologyVersion() the graph was built for
   bool forwardIncrement_ = false;
   bool condense_ = false;
   // K u of the last applyForces (K v and M v: mass_): the energies of the state a step ended at

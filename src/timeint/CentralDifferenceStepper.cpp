@@ -1,5 +1,6 @@
 #include "timeint/CentralDifferenceStepper.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -67,9 +68,29 @@ void CentralDifferenceStepper::requireFiniteState(double t, long long n) const {
                        "(lower 'Time Step' or set 'Stability Check' = 'substep')");
 }
 
-Advance CentralDifferenceStepper::advance(const NominalStep& s, StepControl& /*c*/, TransientSummary& /*sum*/) {
+void CentralDifferenceStepper::archiveState(StateArchive& a, const StateVectors& vectors) const {
+  StructuralStepper::archiveState(a, vectors);
+  if (decide_) a.putInt("driver/substeps", substeps_);
+}
+
+void CentralDifferenceStepper::unarchiveState(const StateArchive& a, const StateVectors& vectors) {
+  StructuralStepper::unarchiveState(a, vectors);
+  if (decide_ && a.has("driver/substeps")) substeps_ = int(a.getInt("driver/substeps"));
+}
+
+Advance CentralDifferenceStepper::advance(const NominalStep& s, StepControl& /*c*/, TransientSummary& sum) {
+  if (decide_ && interval_ > 0 && (s.n - 1) % interval_ == 0) {
+    substeps_ = decide_(*u_, s.t, s.n);
+    sum.smallestStep = std::min(sum.smallestStep, (s.target - s.t) / substeps_);
+  }
   const double h = (s.target - s.t) / substeps_;
-  takeSubsteps(s.t, s.target, h);
+  try {
+    takeSubsteps(s.t, s.target, h);
+  } catch (const InadmissibleState& e) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "in the step from t = %.6e s to %.6e s (step %lld): ", s.t, s.target, s.n);
+    throw NumericalError(s_.label + ": " + buf + e.what());
+  }
   requireFiniteState(s.target, s.n);
   Advance a;
   a.time = s.target;

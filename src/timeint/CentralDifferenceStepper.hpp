@@ -11,6 +11,7 @@
 // timeint/StabilityPolicy.hpp; physics/ExplicitPlan.hpp). Observers see every nominal step's
 // end state, and each sub-step's as a sub-step.
 #pragma once
+#include <functional>
 
 #include "timeint/ExplicitOperator.hpp"
 #include "timeint/StructuralStepper.hpp"
@@ -23,6 +24,16 @@ class CentralDifferenceStepper : public StructuralStepper {
   CentralDifferenceStepper(ExplicitOperator& op, RCP<const Vector> inverseMass, TransientSettings settings,
                            int substeps);
   int substeps() const { return substeps_; }
+  // A model whose stiffness changes with its state (finite strain): every `interval` nominal
+  // steps (and at the first), `decide(u, t, n)` returns the sub-steps per step for the current
+  // configuration (or throws). The count is in the checkpoints.
+  using SubstepDecision = std::function<int(const Vector& u, double t, long long n)>;
+  void monitorStability(int interval, SubstepDecision decide) {
+    interval_ = interval;
+    decide_ = std::move(decide);
+  }
+  void archiveState(StateArchive& a, const StateVectors& vectors) const override;
+  void unarchiveState(const StateArchive& a, const StateVectors& vectors) override;
 
   void start(double t0, double firstStep, TransientSummary& sum, StepInfo& info) override;
   // The nominal step in `substeps` sub-steps; throws NumericalError when the state stops
@@ -42,6 +53,8 @@ class CentralDifferenceStepper : public StructuralStepper {
   ExplicitOperator& xop_;
   RCP<const Vector> inverseMass_;
   int substeps_ = 1;
+  int interval_ = 0;
+  SubstepDecision decide_;
   RCP<Vector> vHalf_, r_, uStar_;
 };
 

@@ -19,6 +19,16 @@ NewmarkStepper::NewmarkStepper(SecondOrderOperator& op, NewmarkFamily scheme, Tr
 }
 
 NewtonOutcome NewmarkStepper::attempt(double t, double dt) {
+  try {
+    return attemptWithin(t, dt);
+  } catch (const InadmissibleState& e) {
+    NewtonOutcome out;
+    out.message = e.what();
+    return out;
+  }
+}
+
+NewtonOutcome NewmarkStepper::attemptWithin(double t, double dt) {
   const double beta = scheme_.beta(), gamma = scheme_.gamma();
   const double af = scheme_.alphaF(), am = scheme_.alphaM();
   const double t1 = t + dt;

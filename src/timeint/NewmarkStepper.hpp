@@ -21,7 +21,10 @@ class NewmarkStepper : public StructuralStepper {
 
  private:
   // One attempt from the accepted state at t to t + dt; returns the outcome, leaves u1, v1, a1.
+  // A state outside the model's domain (InadmissibleState: an inverted element) is a failed
+  // attempt, cut like one that did not converge.
   NewtonOutcome attempt(double t, double dt);
+  NewtonOutcome attemptWithin(double t, double dt);
   // The weighted terms M a_n and F_n of the next step (alpha schemes).
   void weightedTerms(double t);
   void countIterations(const NewtonOutcome& out, TransientSummary& sum) const;

@@ -313,3 +313,14 @@ choc_cli_input_error(spring_direction_2d check bad_spring_direction_2d.xml
   "parameter 'Model/Springs/ties/Direction' = '1 0 1': a 2D model moves in the x-y plane. give a direction with z = 0")
 choc_cli_input_error(spring_stiffness check bad_spring_stiffness.xml
   "parameter 'Model/Springs/ties/Stiffness' = '-12000': out of range. valid: a number in .0, inf.")
+# Finite strain (Model/Blocks/<name>/Strain, Model/Materials/<name>/Model): a linear elastic
+# material on a finite-strain block, a hyperelastic one on a small-strain block, a beam in
+# finite strain, a modal transient of a finite-strain model.
+choc_cli_input_error(finite_linear_material check bad_finite_linear_material.xml
+  "parameter 'Model/Blocks/PAD/Strain' = 'finite': material 'pad' is 'linear elastic', a small-strain law. set 'Model/Materials/pad/Model' = 'Saint Venant-Kirchhoff' .the same E and nu in finite strain. or 'neo-Hookean'")
+choc_cli_input_error(small_hyperelastic check bad_small_hyperelastic.xml
+  "parameter 'Model/Materials/pad/Model' = 'neo-Hookean': a finite-strain law on block 'PAD', whose 'Strain' is 'small'. set 'Model/Blocks/PAD/Strain' = 'finite', or the material's 'Model' = 'linear elastic'")
+choc_cli_input_error(finite_beam check bad_finite_beam.xml
+  "parameter 'Model/Blocks/POU1/Strain' = 'finite': beams .BEAM2. are small-strain in choc. set 'Strain' = 'small' on block 'POU1'")
+choc_cli_input_error(finite_modal_transient check bad_finite_modal_transient.xml
+  "parameter 'Model/Blocks/POU1/Strain' = 'finite': a modal transient .'reduced'. superposes the modes of the linear model. use a direct 'Transient' analysis for finite strain, or 'Strain' = 'small'")

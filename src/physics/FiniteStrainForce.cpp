@@ -1,0 +1,211 @@
+// Finite-strain blocks element by element, the rest assembled (header).
+#include "physics/FiniteStrainForce.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "core/CollectiveFailure.hpp"
+#include "core/Errors.hpp"
+#include "fem/ElementFrequencyBound.hpp"
+#include "physics/Model.hpp"
+
+namespace choc {
+
+FiniteStrainForce::FiniteStrainForce(Model& model)
+    : K0_(model.stiffness()), Klin_(model.smallStrainStiffness()) {
+  KT_ = rcp(new CrsMatrix(K0_->getCrsGraph()));
+  importer_ = K0_->getGraph()->getImporter();
+  const Map& rows = *K0_->getRowMap();
+  const Map& cols = *K0_->getColMap();
+  const Mesh& mesh = model.mesh();
+  const auto& kernels = model.finiteStrainKernels();
+  for (const ElementBlock& b : mesh.blocks) blockNames_.push_back(b.name);
+  for (int ge : model.localElements()) {
+    const auto [b, e] = mesh.locateElement(ge);
+    if (!kernels[size_t(b)]) continue;
+    const ElementBlock& blk = mesh.blocks[size_t(b)];
+    Element el{kernels[size_t(b)].get(), ge, b, false, {}, {}, {}, {}};
+    const int* conn = &blk.connectivity[size_t(e) * blk.nodesPerElement];
+    const int nc = el.kernel->componentsPerNode();
+    el.owner = model.dofs().ownerOfNode(conn[0]) == rows.getComm()->getRank();
+    for (int k = 0; k < blk.nodesPerElement; ++k) {
+      el.X.push_back(mesh.coords[size_t(conn[k])]);
+      for (int c = 0; c < nc; ++c) {
+        const long long d = model.dof(conn[k], c);
+        el.col.push_back(d < 0 ? LO(-1) : cols.getLocalElement(GO(d)));
+        el.row.push_back(d < 0 ? LO(-1) : rows.getLocalElement(GO(d)));
+      }
+    }
+    for (LO& r : el.row)
+      if (r == Teuchos::OrdinalTraits<LO>::invalid()) r = -1;
+    DenseMatrix M;
+    model.elementKernel(b)->mass(el.X, MassKind::Lumped, M);
+    for (int i = 0; i < M.rows(); ++i) el.lumpedMass.push_back(M(i, i));
+    elements_.push_back(std::move(el));
+  }
+}
+
+const Vector& FiniteStrainForce::onColumns(const Vector& u) const {
+  if (importer_.is_null()) return u;
+  if (uCol_.is_null()) uCol_ = rcp(new Vector(K0_->getColMap()));
+  uCol_->doImport(u, *importer_, Tpetra::INSERT);
+  return *uCol_;
+}
+
+std::string FiniteStrainForce::describe(const Element& e, const std::string& what) const {
+  return "element " + std::to_string(e.number + 1) + " of block '" + blockNames_[size_t(e.block)] + "': " + what;
+}
+
+void FiniteStrainForce::throwIfFailed(const std::string& localFailure) const {
+  const std::string failure = collectiveFailure(*K0_->getComm(), localFailure);
+  if (!failure.empty()) throw InadmissibleState(failure);
+}
+
+template <class Visit>
+std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTangent, Visit&& visit) const {
+  auto data = uCol.getData();
+  std::vector<double> ue, fe;
+  DenseMatrix Ke;
+  for (const Element& e : elements_) {
+    ue.assign(e.col.size(), 0.0);
+    for (size_t k = 0; k < e.col.size(); ++k)
+      if (e.col[k] >= 0) ue[k] = data[e.col[k]];
+    double energy = 0.0;
+    try {
+      energy = e.kernel->evaluate(e.X, ue, fe, withTangent ? &Ke : nullptr);
+    } catch (const InvertedElement& err) {
+      return describe(e, err.what());
+    }
+    visit(e, fe, Ke, energy);
+  }
+  return "";
+}
+
+void FiniteStrainForce::internalForce(const Vector& u, Vector& out) const {
+  Klin_->apply(u, out);
+  auto o = out.getDataNonConst();
+  const std::string failure = forEachElement(onColumns(u), false, [&](const Element& e, const std::vector<double>& f,
+                                                                      const DenseMatrix&, double) {
+    for (size_t k = 0; k < e.row.size(); ++k)
+      if (e.row[k] >= 0) o[e.row[k]] += f[k];
+  });
+  throwIfFailed(failure);
+}
+
+RCP<const CrsMatrix> FiniteStrainForce::tangent(const Vector& u) {
+  if (!tangentAt_.is_null()) {
+    tmp_ = tmp_.is_null() ? rcp(new Vector(u.getMap())) : tmp_;
+    tmp_->update(1.0, u, -1.0, *tangentAt_, 0.0);
+    if (tmp_->normInf() == 0.0) return KT_;  // the values are those at u already
+  }
+  KT_->resumeFill();
+  {
+    const auto A = KT_->getLocalMatrixHost();
+    const auto L = Klin_->getLocalMatrixHost();  // the same graph: the same value slots
+    for (size_t k = 0; k < size_t(A.values.extent(0)); ++k) A.values(k) = L.values(k);
+  }
+  std::vector<LO> cols;
+  std::vector<double> vals;
+  const std::string failure = forEachElement(onColumns(u), true, [&](const Element& e, const std::vector<double>&,
+                                                                     const DenseMatrix& K, double) {
+    for (size_t i = 0; i < e.row.size(); ++i) {
+      if (e.row[i] < 0) continue;
+      cols.clear();
+      vals.clear();
+      for (size_t j = 0; j < e.col.size(); ++j)
+        if (e.col[j] >= 0) cols.push_back(e.col[j]), vals.push_back(K(int(i), int(j)));
+      KT_->sumIntoLocalValues(e.row[i], Teuchos::ArrayView<const LO>(cols), Teuchos::ArrayView<const double>(vals));
+    }
+  });
+  KT_->fillComplete(K0_->getDomainMap(), K0_->getRangeMap());
+  ++version_;
+  tangentAt_ = failure.empty() ? rcp(new Vector(u, Teuchos::Copy)) : Teuchos::null;
+  throwIfFailed(failure);
+  return KT_;
+}
+
+double FiniteStrainForce::strainEnergy(const Vector& u, const Vector* /*internalForceAtU*/) const {
+  if (tmp_.is_null()) tmp_ = rcp(new Vector(u.getMap()));
+  Klin_->apply(u, *tmp_);
+  const double linear = 0.5 * u.dot(*tmp_);
+  double local = 0.0;
+  const std::string failure = forEachElement(onColumns(u), false, [&](const Element& e, const std::vector<double>&,
+                                                                      const DenseMatrix&, double energy) {
+    if (e.owner) local += energy;
+  });
+  throwIfFailed(failure);
+  double global = 0.0;
+  Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return linear + global;
+}
+
+// || |K_lin| |u| + sum_e |f_e| ||: the size of the terms the internal force sums, row by row.
+double FiniteStrainForce::termsNorm(const Vector& u) const {
+  const Vector& uc = onColumns(u);
+  auto ud = uc.getData();
+  const auto A = Klin_->getLocalMatrixHost();
+  const size_t nRows = size_t(A.graph.row_map.extent(0)) - 1;
+  std::vector<double> terms(nRows, 0.0);
+  for (size_t i = 0; i < nRows; ++i)
+    for (auto k = A.graph.row_map(i); k < A.graph.row_map(i + 1); ++k)
+      terms[i] += std::abs(A.values(k)) * std::abs(ud[A.graph.entries(k)]);
+  const std::string failure = forEachElement(uc, false, [&](const Element& e, const std::vector<double>& f,
+                                                            const DenseMatrix&, double) {
+    for (size_t k = 0; k < e.row.size(); ++k)
+      if (e.row[k] >= 0) terms[size_t(e.row[k])] += std::abs(f[k]);
+  });
+  throwIfFailed(failure);
+  double local = 0.0;
+  for (double t : terms) local += t * t;
+  double global = 0.0;
+  Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return std::sqrt(global);
+}
+
+double FiniteStrainForce::stateEigenvalueBound(const Vector& u) const {
+  double local = 0.0;
+  DenseMatrix M;
+  std::vector<char> active;
+  const std::string failure = forEachElement(onColumns(u), true, [&](const Element& e, const std::vector<double>&,
+                                                                     const DenseMatrix& K, double) {
+    const int n = static_cast<int>(e.lumpedMass.size());
+    M.resize(n, n);
+    active.assign(size_t(n), 0);
+    for (int i = 0; i < n; ++i) M(i, i) = e.lumpedMass[size_t(i)], active[size_t(i)] = e.col[size_t(i)] >= 0;
+    local = std::max(local, elementEigenvalue(K, M, active));
+  });
+  throwIfFailed(failure);
+  double global = 0.0;
+  Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_MAX, local, Teuchos::outArg(global));
+  return global;
+}
+
+std::vector<FiniteStrainForce::ElementStress> FiniteStrainForce::elementStresses(const Vector& u) const {
+  const Vector& uc = onColumns(u);
+  auto data = uc.getData();
+  std::vector<ElementStress> out;
+  std::string failure;
+  std::vector<double> ue;
+  for (const Element& e : elements_) {
+    if (!e.owner) continue;
+    ue.assign(e.col.size(), 0.0);
+    for (size_t k = 0; k < e.col.size(); ++k)
+      if (e.col[k] >= 0) ue[k] = data[e.col[k]];
+    ElementStress s{e.number, {}, 0.0};
+    try {
+      e.kernel->averageStress(e.X, ue, s.sigma, s.energyDensity);
+    } catch (const InvertedElement& err) {
+      failure = describe(e, err.what());
+      break;
+    }
+    out.push_back(s);
+  }
+  throwIfFailed(failure);
+  return out;
+}
+
+}  // namespace choc

@@ -1,0 +1,85 @@
+// The internal force of a model with finite-strain blocks (Model/Blocks/<name>/Strain =
+// 'finite'): the small-strain blocks and the springs stay an assembled matrix K_lin (their
+// products: the linear path), the finite-strain blocks are computed element by element from
+// the current displacement (FiniteStrainSolid: total Lagrangian, hyperelastic):
+//
+//   f_int(u) = K_lin u + sum_e f_e(u_e),   K_T(u) = K_lin + sum_e K_e(u_e)
+//
+// K_T is written into one matrix on the graph of the model's stiffness (every block's entries,
+// the same every iteration), its version bumped whenever its values change: the operator's
+// factorisation key then refactors (InternalForce.hpp). Each rank computes the elements touching
+// its nodes (the Assembler's elements) and sums their rows it owns in global element order.
+// Rayleigh damping's stiffness is the model's K at u = 0. An element that inverts (det F <= 0)
+// on any rank throws InadmissibleState on every rank, naming the element, its block and det F.
+// Hyperelastic blocks carry no history: commit, revert and the checkpoints have nothing to keep.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <array>
+
+#include <Tpetra_Import.hpp>
+
+#include "fem/FiniteStrainSolid.hpp"
+#include "physics/InternalForce.hpp"
+
+namespace choc {
+
+class Model;
+
+class FiniteStrainForce : public InternalForce {
+ public:
+  explicit FiniteStrainForce(Model& model);
+  RCP<const Map> map() const override { return K0_->getRowMap(); }
+  void internalForce(const Vector& u, Vector& out) const override;
+  RCP<const CrsMatrix> tangent(const Vector& u) override;
+  long long tangentVersion() const override { return version_; }
+  void applyDampingStiffness(const Vector& x, Vector& out) const override { K0_->apply(x, out); }
+  bool linear() const override { return false; }
+  // 1/2 u.K_lin u + the elements' int W dV (each element counted on the rank owning its first node).
+  double strainEnergy(const Vector& u, const Vector* internalForceAtU) const override;
+  double termsNorm(const Vector& u) const override;
+  // max over the finite-strain elements of lambda_max(K_e(u), M_e), M_e the block's lumped mass.
+  double stateEigenvalueBound(const Vector& u) const override;
+
+  // The element's Cauchy stress and strain-energy density averaged over it (FiniteStrainSolid::
+  // averageStress), for the finite-strain elements this rank owns (its first node's owner), in
+  // global element order with their global numbers; u on the row map.
+  struct ElementStress {
+    int element;
+    std::array<double, 6> sigma;
+    double energyDensity;
+  };
+  std::vector<ElementStress> elementStresses(const Vector& u) const;
+
+ private:
+  struct Element {
+    const FiniteStrainSolid* kernel;
+    int number;   // global element index (0-based)
+    int block;
+    bool owner;   // this rank owns its first node: it counts its energy and its output
+    std::vector<Point3> X;
+    std::vector<LO> col;  // local column of each element DOF in K's column map (-1: fixed)
+    std::vector<LO> row;  // local row when this rank owns that DOF (-1: not owned or fixed)
+    std::vector<double> lumpedMass;  // the element's lumped mass per DOF (reference configuration)
+  };
+  // Per element: the displacements from u on the column map, the force (and tangent when K).
+  // Returns this rank's first failure ("" if none); the callers make it collective.
+  template <class Visit>
+  std::string forEachElement(const Vector& uCol, bool withTangent, Visit&& visit) const;
+  const Vector& onColumns(const Vector& u) const;
+  void throwIfFailed(const std::string& localFailure) const;
+  std::string describe(const Element& e, const std::string& what) const;
+
+  RCP<const CrsMatrix> K0_, Klin_;
+  RCP<CrsMatrix> KT_;
+  RCP<const Tpetra::Import<LO, GO>> importer_;
+  std::vector<Element> elements_;
+  std::vector<std::string> blockNames_;
+  long long version_ = 0;
+  RCP<Vector> tangentAt_;  // the u of KT_'s values (null before the first tangent)
+  mutable RCP<Vector> uCol_, tmp_;
+};
+
+}  // namespace choc
