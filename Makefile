@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction docs clean
+.PHONY: all deps configure build run test study bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction docs clean
 
 all: build
 
@@ -46,6 +46,7 @@ bench: build
 	$(PYTHON) tools/bench/bench_multigrid.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_bracket.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_oblique_sphere.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_finite_strain.py --build $(BUILD)
 
 # The direct packages on contact scenes: KLU2 on rank 0 against MUMPS on every rank, 1 and 2
 # ranks; the scale scene's bars, then a compact block (against penalty contact too).
@@ -62,6 +63,11 @@ bench-bracket: build
 # solves, at 6k and 17k unknowns, 1 and 2 ranks.
 bench-oblique: build
 	$(PYTHON) tools/bench/bench_oblique_sphere.py --build $(BUILD)
+
+# The cost of finite strain: element-by-element internal force against the assembled product,
+# explicit and implicit, HEX8 and TET10, 1 and 2 ranks.
+bench-finite: build
+	$(PYTHON) tools/bench/bench_finite_strain.py --build $(BUILD)
 
 # CG's preconditioners on stiffness-dominated steps (153,792 unknowns): Multigrid, Schwarz, Jacobi.
 bench-multigrid: build

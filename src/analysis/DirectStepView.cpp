@@ -140,6 +140,10 @@ void DirectStepView::fields(Vector& u, Vector& v, Vector& a) const {
   a.assign(*a_);
 }
 
+void DirectStepView::elementFields(std::vector<std::vector<double>>& values) const {
+  op_.internalForce().elementFields(*u_, values);
+}
+
 std::string DirectStepView::stepNote() const {
   if (info_.step > 0 && info_.newton.activeSetIterations == 0) return "explicit";  // no solve
   return format("Newton %d, active-set passes %d", info_.newton.iterations,

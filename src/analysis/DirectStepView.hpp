@@ -36,6 +36,9 @@ class DirectStepView : public TransientView, public StepObserver {
   EnergyTerms energies() override;
   const InteractionOutput* interactions() const override { return interactions_; }
   void fields(Vector& u, Vector& v, Vector& a) const override;
+  std::vector<std::string> elementFieldNames() const override { return op_.internalForce().elementFieldNames(); }
+  std::vector<char> elementFieldBlocks() const override { return op_.internalForce().elementFieldBlocks(); }
+  void elementFields(std::vector<std::vector<double>>& values) const override;
   std::string stepNote() const override;
 
   // The integrals (damping, obstacle and load work) and the previous

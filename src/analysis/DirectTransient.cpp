@@ -377,15 +377,16 @@ std::unique_ptr<StructuralStepper> DirectTransient::stepper(StructuralOperator& 
   return std::make_unique<NewmarkStepper>(op, s_.scheme, s_.time);
 }
 
+// The model's internal force: element by element when some block is finite-strain, else K u.
+std::shared_ptr<InternalForce> DirectTransient::internalForce(Model& model) const {
+  if (model.finiteStrain()) return std::make_shared<FiniteStrainForce>(model);
+  return std::make_shared<LinearElasticForce>(b_->K);
+}
+
 void DirectTransient::run(RunContext& ctx) {
   const auto wallStart = std::chrono::steady_clock::now();
   auto timer = rcp(new Teuchos::StackedTimer(("Transient '" + name_ + "'").c_str()));
-  std::shared_ptr<InternalForce> internal;
-  if (ctx.model.finiteStrain())
-    internal = std::make_shared<FiniteStrainForce>(ctx.model);
-  else
-    internal = std::make_shared<LinearElasticForce>(b_->K);
-  StructuralOperator op(internal, b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->contact.get(),
+  StructuralOperator op(internalForce(ctx.model), b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->contact.get(),
                         b_->links.get(), std::move(b_->solver), timer.get());
   op.setForwardIncrementContact(s_.explicitScheme && s_.contact.forwardIncrementsWhenExplicit());
   op.setCondensedContact(!s_.explicitScheme && b_->condenseContact);

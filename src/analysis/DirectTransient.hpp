@@ -81,6 +81,7 @@ class DirectTransient : public Analysis {
   void buildContact(Model& model);
   void buildSolver(const Model& model);
   void setupExplicit(const Model& model);
+  std::shared_ptr<InternalForce> internalForce(Model& model) const;
   std::unique_ptr<StructuralStepper> stepper(StructuralOperator& op) const;
   void describe(Model& model, const StructuralOperator& op) const;
   void recordFigures(const TransientSummary& sum, const StructuralOperator& op,

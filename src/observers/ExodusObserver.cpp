@@ -1,5 +1,7 @@
 #include "observers/ExodusObserver.hpp"
 
+#include <mpi.h>
+
 #include <Tpetra_Vector.hpp>
 
 #include "core/Errors.hpp"
@@ -45,13 +47,15 @@ void ExodusObserver::open(TransientView& view) {
     for (const auto& n : io->nodalFieldNames()) nodal.push_back(n);
     for (const auto& g : io->globalNames()) globals.push_back(g);
   }
+  const ElementVariables element{view.elementFieldNames(), view.elementFieldBlocks()};
   if (resume_)
     exo_ = std::make_unique<ExodusResultsWriter>(
         path_, model_.mesh(), nodal, globals,
         ExodusResultsWriter::Resume{static_cast<int>(resume_->getInt("exodus/steps")),
-                                    resume_->getDouble("exodus/time")});
+                                    resume_->getDouble("exodus/time")},
+        element);
   else
-    exo_ = std::make_unique<ExodusResultsWriter>(path_, model_.mesh(), nodal, globals);
+    exo_ = std::make_unique<ExodusResultsWriter>(path_, model_.mesh(), nodal, globals, element);
 }
 
 void ExodusObserver::step(TransientView& view) {
@@ -70,9 +74,18 @@ void ExodusObserver::step(TransientView& view) {
     for (auto& f : io->nodalFields()) nodal.push_back(std::move(f));
     for (double g : io->globalValues()) globals.push_back(g);
   }
+  // Element variables: each rank fills its elements, rank 0 receives the sum.
+  std::vector<std::vector<double>> element;
+  view.elementFields(element);
+  for (auto& values : element) {
+    if (model_.comm()->getSize() == 1) break;
+    std::vector<double> sum(values.size(), 0.0);
+    MPI_Reduce(values.data(), sum.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, 0, model_.rawComm());
+    values.swap(sum);
+  }
   std::string failure;
   try {
-    if (exo_) exo_->writeStep(pt.time, nodal, globals);
+    if (exo_) exo_->writeStep(pt.time, nodal, globals, element);
   } catch (const OutputError& e) {
     failure = e.what();
   }

@@ -41,6 +41,11 @@ class TransientView {
   virtual const InteractionOutput* interactions() const = 0;  // null: none
   // Displacement, velocity and acceleration on the model's map (collective).
   virtual void fields(Vector& u, Vector& v, Vector& a) const = 0;
+  // Element variables (names, the blocks carrying them, values[v][e] over the mesh's elements
+  // with this rank's filled: InternalForce::elementFields); none by default. Collective.
+  virtual std::vector<std::string> elementFieldNames() const { return {}; }
+  virtual std::vector<char> elementFieldBlocks() const { return {}; }
+  virtual void elementFields(std::vector<std::vector<double>>& /*values*/) const {}
   // Solver figures of the last step for the progress line ("" when none).
   virtual std::string stepNote() const = 0;
 };

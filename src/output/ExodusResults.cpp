@@ -47,14 +47,27 @@ std::string str(double v) {
 
 }  // namespace
 
+namespace {
+
+std::vector<int> blockSizes(const Mesh& mesh) {
+  std::vector<int> n;
+  for (const ElementBlock& b : mesh.blocks) n.push_back(b.numElements());
+  return n;
+}
+
+}  // namespace
+
 ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& mesh,
                                          std::vector<std::string> nodalVariables,
-                                         std::vector<std::string> globalVariables)
+                                         std::vector<std::string> globalVariables, ElementVariables element)
     : path_(path),
       numNodes_(mesh.numNodes()),
       nodalNames_(std::move(nodalVariables)),
-      globalNames_(std::move(globalVariables)) {
+      globalNames_(std::move(globalVariables)),
+      element_(std::move(element)),
+      blockSizes_(blockSizes(mesh)) {
   validateNames(nodalNames_, "nodal", path_);
+  validateNames(element_.names, "element", path_);
   validateNames(globalNames_, "global", path_);
   // a result of an earlier run must not pass for this run's
   removeFile(path_);
@@ -72,6 +85,8 @@ ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& me
     };
     define(EX_GLOBAL, globalNames_, "global");
     define(EX_NODAL, nodalNames_, "nodal");
+    define(EX_ELEM_BLOCK, element_.names, "element");
+    defineElementVariables();
     check(ex_update(exoid_), "flushing the mesh");
   } catch (...) {
     ex_close(exoid_);
@@ -83,11 +98,14 @@ ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& me
 
 ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& mesh,
                                          std::vector<std::string> nodalVariables,
-                                         std::vector<std::string> globalVariables, const Resume& at)
+                                         std::vector<std::string> globalVariables, const Resume& at,
+                                         ElementVariables element)
     : path_(path),
       numNodes_(mesh.numNodes()),
       nodalNames_(std::move(nodalVariables)),
-      globalNames_(std::move(globalVariables)) {
+      globalNames_(std::move(globalVariables)),
+      element_(std::move(element)),
+      blockSizes_(blockSizes(mesh)) {
   const std::string source = checkResumable(path_, at.steps);
   const auto refuse = [&](const std::string& file, const std::string& why) {
     if (exoid_ >= 0) ex_close(exoid_);
@@ -111,7 +129,7 @@ ExodusResultsWriter::ExodusResultsWriter(const std::string& path, const Mesh& me
     return out;
   };
   if (ex_inquire_int(exoid_, EX_INQ_NODES) != numNodes_) refuse(partPath(), "its node count differs");
-  if (names(EX_NODAL) != nodalNames_ || names(EX_GLOBAL) != globalNames_)
+  if (names(EX_NODAL) != nodalNames_ || names(EX_GLOBAL) != globalNames_ || names(EX_ELEM_BLOCK) != element_.names)
     refuse(partPath(), "its variables differ");
   const int stored = static_cast<int>(ex_inquire_int(exoid_, EX_INQ_TIME));
   double t = 0.0;
@@ -156,7 +174,8 @@ void ExodusResultsWriter::check(int rc, const std::string& what) const {
 }
 
 void ExodusResultsWriter::writeStep(double time, const std::vector<std::vector<double>>& nodal,
-                                    const std::vector<double>& globals) {
+                                    const std::vector<double>& globals,
+                                    const std::vector<std::vector<double>>& element) {
   if (exoid_ < 0)
     throw std::logic_error("results file " + path_ + ": writeStep after the file was closed");
   if (nodal.size() != nodalNames_.size() || globals.size() != globalNames_.size())
@@ -181,6 +200,7 @@ void ExodusResultsWriter::writeStep(double time, const std::vector<std::vector<d
     if (!std::isfinite(globals[g]))
       throw NumericalError("non-finite value " + str(globals[g]) + " of " + globalNames_[g] +
                            " at time " + str(time) + " (not written to " + path_ + ")");
+  if (!element_.names.empty()) checkElementValues(element, time);
   const int step = steps_ + 1;
   check(ex_put_time(exoid_, step, &time), "writing time step " + std::to_string(step));
   for (std::size_t v = 0; v < nodal.size(); ++v)
@@ -192,9 +212,55 @@ void ExodusResultsWriter::writeStep(double time, const std::vector<std::vector<d
     check(ex_put_var(exoid_, step, EX_GLOBAL, 1, 1, static_cast<int64_t>(globals.size()),
                      globals.data()),
           "writing the global variables at step " + std::to_string(step));
+  if (!element_.names.empty()) writeElementStep(step, element);
   check(ex_update(exoid_), "flushing step " + std::to_string(step));
   steps_ = step;
   lastTime_ = time;
+}
+
+// The truth table: variable v on block b when the block carries the element variables.
+void ExodusResultsWriter::defineElementVariables() {
+  const int nb = static_cast<int>(blockSizes_.size()), nv = static_cast<int>(element_.names.size());
+  if (nv == 0 || nb == 0) return;
+  std::vector<int> table(size_t(nb) * nv, 0);
+  for (int b = 0; b < nb; ++b)
+    for (int v = 0; v < nv; ++v)
+      table[size_t(b) * nv + v] = b < static_cast<int>(element_.blocks.size()) && element_.blocks[size_t(b)] ? 1 : 0;
+  check(ex_put_truth_table(exoid_, EX_ELEM_BLOCK, nb, nv, table.data()), "writing the element variables' table");
+}
+
+void ExodusResultsWriter::checkElementValues(const std::vector<std::vector<double>>& element, double time) const {
+  size_t total = 0;
+  for (int n : blockSizes_) total += size_t(n);
+  if (element.size() != element_.names.size())
+    throw std::invalid_argument("results file " + path_ + ": " + std::to_string(element.size()) + " element fields given, " +
+                                std::to_string(element_.names.size()) + " declared");
+  for (size_t v = 0; v < element.size(); ++v) {
+    if (element[v].size() != total)
+      throw std::invalid_argument("results file " + path_ + ": element variable " + element_.names[v] + " has " +
+                                  std::to_string(element[v].size()) + " values for " + std::to_string(total) +
+                                  " elements");
+    for (size_t e = 0; e < total; ++e)
+      if (!std::isfinite(element[v][e]))
+        throw NumericalError("non-finite value " + str(element[v][e]) + " of " + element_.names[v] + " at element " +
+                             std::to_string(e + 1) + " at time " + str(time) + " (not written to " + path_ + ")");
+  }
+}
+
+void ExodusResultsWriter::writeElementStep(int step, const std::vector<std::vector<double>>& element) {
+  std::vector<int> ids(blockSizes_.size());  // the files use the 32-bit integer API
+  if (!ids.empty()) check(ex_get_ids(exoid_, EX_ELEM_BLOCK, ids.data()), "reading the element block ids");
+  for (size_t v = 0; v < element.size(); ++v) {
+    size_t first = 0;
+    for (size_t b = 0; b < blockSizes_.size(); ++b) {
+      const bool carries = b < element_.blocks.size() && element_.blocks[b];
+      if (carries && blockSizes_[b] > 0)
+        check(ex_put_var(exoid_, step, EX_ELEM_BLOCK, static_cast<int>(v) + 1, ids[b], blockSizes_[b],
+                         element[v].data() + first),
+              "writing " + element_.names[v] + " at step " + std::to_string(step));
+      first += size_t(blockSizes_[b]);
+    }
+  }
 }
 
 void ExodusResultsWriter::close() {

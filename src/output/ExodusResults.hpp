@@ -11,6 +11,12 @@
 
 namespace choc {
 
+// Element variables: their names and the blocks (one flag per mesh block) that carry them.
+struct ElementVariables {
+  std::vector<std::string> names;
+  std::vector<char> blocks;
+};
+
 class ExodusResultsWriter {
  public:
   // Creates "<path>.part" containing the mesh and the variable definitions (names as
@@ -19,7 +25,7 @@ class ExodusResultsWriter {
   // for empty, duplicate or too long variable names.
   ExodusResultsWriter(const std::string& path, const Mesh& mesh,
                       std::vector<std::string> nodalVariables,
-                      std::vector<std::string> globalVariables);
+                      std::vector<std::string> globalVariables, ElementVariables element = {});
   // Continues the results of a checkpointed run: <path>.part (or the .incomplete or final
   // file when that run ended), which must hold this mesh's node count, these variables and at
   // least `steps` time steps, the last of them at `lastTime`; later steps are overwritten as
@@ -30,7 +36,8 @@ class ExodusResultsWriter {
   };
   ExodusResultsWriter(const std::string& path, const Mesh& mesh,
                       std::vector<std::string> nodalVariables,
-                      std::vector<std::string> globalVariables, const Resume& at);
+                      std::vector<std::string> globalVariables, const Resume& at,
+                      ElementVariables element = {});
   // Throws the InputError the resuming constructor would when no earlier file of <path> holds
   // `steps` time steps, without changing anything (a refused restart writes nothing); returns
   // the file it would continue.
@@ -44,8 +51,10 @@ class ExodusResultsWriter {
   // variable, the node and the time) for a non-finite value or time, writing nothing;
   // std::invalid_argument for wrong sizes; choc::OutputError on I/O failure;
   // std::logic_error after finish()/abandon().
+  // element[v][e]: element variable v of every element e of the mesh (global order; the
+  // blocks without the variable are not written), when element variables were declared.
   void writeStep(double time, const std::vector<std::vector<double>>& nodal,
-                 const std::vector<double>& globals);
+                 const std::vector<double>& globals, const std::vector<std::vector<double>>& element = {});
   void finish();   // closes and renames <path>.part → <path>
   void abandon();  // closes and renames <path>.part → <stem>.incomplete<ext>; quiet if closed
   int stepsWritten() const { return steps_; }
@@ -67,6 +76,12 @@ class ExodusResultsWriter {
   std::string path_;
   int numNodes_ = 0;
   std::vector<std::string> nodalNames_, globalNames_;
+  ElementVariables element_;
+  std::vector<int> blockSizes_;  // elements per block, in the mesh's order
+  void defineElementVariables();
+  // Sizes and finiteness of the element values (before anything of the step is written).
+  void checkElementValues(const std::vector<std::vector<double>>& element, double time) const;
+  void writeElementStep(int step, const std::vector<std::vector<double>>& element);
   int exoid_ = -1;
   int steps_ = 0;
   double lastTime_ = 0.0;

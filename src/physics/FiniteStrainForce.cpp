@@ -23,7 +23,12 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
   const Map& cols = *K0_->getColMap();
   const Mesh& mesh = model.mesh();
   const auto& kernels = model.finiteStrainKernels();
-  for (const ElementBlock& b : mesh.blocks) blockNames_.push_back(b.name);
+  for (size_t b = 0; b < mesh.blocks.size(); ++b) {
+    blockNames_.push_back(mesh.blocks[b].name);
+    finiteBlocks_.push_back(kernels[b] != nullptr);
+  }
+  numElements_ = mesh.numElements();
+  threeD_ = model.kinematics() == Kinematics::ThreeD;
   for (int ge : model.localElements()) {
     const auto [b, e] = mesh.locateElement(ge);
     if (!kernels[size_t(b)]) continue;
@@ -184,28 +189,37 @@ double FiniteStrainForce::stateEigenvalueBound(const Vector& u) const {
   return global;
 }
 
-std::vector<FiniteStrainForce::ElementStress> FiniteStrainForce::elementStresses(const Vector& u) const {
+std::vector<std::string> FiniteStrainForce::elementFieldNames() const {
+  std::vector<std::string> names = {"SIGMA_XX", "SIGMA_YY", "SIGMA_ZZ", "SIGMA_XY"};
+  if (threeD_) names.insert(names.end(), {"SIGMA_YZ", "SIGMA_ZX"});
+  names.push_back("STRAIN_ENERGY_DENSITY");
+  return names;
+}
+
+void FiniteStrainForce::elementFields(const Vector& u, std::vector<std::vector<double>>& values) const {
+  const int stresses = threeD_ ? 6 : 4;
+  values.assign(size_t(stresses + 1), std::vector<double>(size_t(numElements_), 0.0));
   const Vector& uc = onColumns(u);
   auto data = uc.getData();
-  std::vector<ElementStress> out;
   std::string failure;
   std::vector<double> ue;
+  std::array<double, 6> sigma{};
+  double w = 0.0;
   for (const Element& e : elements_) {
     if (!e.owner) continue;
     ue.assign(e.col.size(), 0.0);
     for (size_t k = 0; k < e.col.size(); ++k)
       if (e.col[k] >= 0) ue[k] = data[e.col[k]];
-    ElementStress s{e.number, {}, 0.0};
     try {
-      e.kernel->averageStress(e.X, ue, s.sigma, s.energyDensity);
+      e.kernel->averageStress(e.X, ue, sigma, w);
     } catch (const InvertedElement& err) {
       failure = describe(e, err.what());
       break;
     }
-    out.push_back(s);
+    for (int c = 0; c < stresses; ++c) values[size_t(c)][size_t(e.number)] = sigma[size_t(c)];
+    values[size_t(stresses)][size_t(e.number)] = w;
   }
   throwIfFailed(failure);
-  return out;
 }
 
 }  // namespace choc

@@ -43,15 +43,14 @@ class FiniteStrainForce : public InternalForce {
   // max over the finite-strain elements of lambda_max(K_e(u), M_e), M_e the block's lumped mass.
   double stateEigenvalueBound(const Vector& u) const override;
 
-  // The element's Cauchy stress and strain-energy density averaged over it (FiniteStrainSolid::
-  // averageStress), for the finite-strain elements this rank owns (its first node's owner), in
-  // global element order with their global numbers; u on the row map.
-  struct ElementStress {
-    int element;
-    std::array<double, 6> sigma;
-    double energyDensity;
-  };
-  std::vector<ElementStress> elementStresses(const Vector& u) const;
+  // The Cauchy stress averaged over each finite-strain element (FiniteStrainSolid::
+  // averageStress) and its strain-energy density: SIGMA_XX, SIGMA_YY, SIGMA_ZZ, SIGMA_XY
+  // (and SIGMA_YZ, SIGMA_ZX in 3D; axisymmetric: XX radial, YY axial, ZZ hoop, XY the rz
+  // shear), STRAIN_ENERGY_DENSITY; on the finite-strain blocks, each element by the rank
+  // owning its first node.
+  std::vector<std::string> elementFieldNames() const override;
+  std::vector<char> elementFieldBlocks() const override { return finiteBlocks_; }
+  void elementFields(const Vector& u, std::vector<std::vector<double>>& values) const override;
 
  private:
   struct Element {
@@ -77,6 +76,9 @@ class FiniteStrainForce : public InternalForce {
   RCP<const Tpetra::Import<LO, GO>> importer_;
   std::vector<Element> elements_;
   std::vector<std::string> blockNames_;
+  std::vector<char> finiteBlocks_;
+  int numElements_ = 0;
+  bool threeD_ = true;
   long long version_ = 0;
   RCP<Vector> tangentAt_;  // the u of KT_'s values (null before the first tangent)
   mutable RCP<Vector> uCol_, tmp_;

@@ -22,6 +22,9 @@
 // Rayleigh damping C = aK K0 + aM M uses the reference stiffness K0 (dampingStiffness; the
 // tangent at u = 0), which for a linear model is K itself.
 #pragma once
+#include <string>
+#include <vector>
+
 #include "core/TpetraTypes.hpp"
 #include "restart/StateArchive.hpp"
 
@@ -49,6 +52,13 @@ class InternalForce {
   // lumped mass (the element bound, fem/ElementFrequencyBound.hpp), for an explicit run's
   // critical step on the deformed mesh; 0 when nothing depends on the state. Collective.
   virtual double stateEigenvalueBound(const Vector& /*u*/) const { return 0.0; }
+  // Element variables for the results file: their names (none by default), the mesh blocks
+  // that carry them (one flag per block), and their values at u, values[v][e] for every element
+  // e of the mesh in global order, this rank's elements filled and the others 0 (the caller
+  // sums over the ranks). Collective.
+  virtual std::vector<std::string> elementFieldNames() const { return {}; }
+  virtual std::vector<char> elementFieldBlocks() const { return {}; }
+  virtual void elementFields(const Vector& /*u*/, std::vector<std::vector<double>>& /*values*/) const {}
   // Explicit runs stream the products of a symmetric model from half its entries.
   virtual void preferSymmetricProducts() {}
   virtual void commit() {}

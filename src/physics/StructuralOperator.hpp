@@ -90,6 +90,8 @@ class StructuralOperator : public ExplicitOperator {
   const DirectLinks* links() const { return links_; }
   // The state-dependent elements' eigenvalue bound at u (InternalForce::stateEigenvalueBound).
   double stateEigenvalueBound(const Vector& u) const { return internal_->stateEigenvalueBound(u); }
+  // The internal force's element variables (InternalForce::elementFieldNames).
+  const InternalForce& internalForce() const { return *internal_; }
   // Energies of a state, for the output: 1/2 v.M v, the stored elastic energy, the contact springs' energy,
   // the damping power v.C v (given the kinetic energy).
   double kineticEnergy(const Vector& v) const { return mass_.kineticEnergy(v); }

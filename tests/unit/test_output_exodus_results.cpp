@@ -113,6 +113,53 @@ TEST_F(ExodusResults, ThreeStepsReadBack) {
   EXPECT_EQ(back.sideSetNames(), mesh_.sideSetNames());
 }
 
+// Element variables on the first block only: the truth table says so, block 1's values read
+// back per element in order, and a non-finite element value writes nothing of its step.
+TEST_F(ExodusResults, ElementVariablesOnTheirBlocks) {
+  ASSERT_GE(mesh_.blocks.size(), 2u);
+  const std::string path = file("elements.exo");
+  const int total = mesh_.numElements(), first = mesh_.blocks[0].numElements();
+  const std::vector<std::string> names = {"SIGMA_XX", "STRAIN_ENERGY_DENSITY"};
+  auto values = [&](int step) {
+    std::vector<std::vector<double>> f(2, std::vector<double>(size_t(total), 0.0));
+    for (int v = 0; v < 2; ++v)
+      for (int e = 0; e < first; ++e) f[size_t(v)][size_t(e)] = 100.0 * v + e + step / 10.0;
+    return f;
+  };
+  {
+    choc::ExodusResultsWriter w(path, mesh_, {"DISP_X"}, {}, choc::ElementVariables{names, {1, 0}});
+    for (int s = 0; s < 2; ++s) w.writeStep(1e-6 * (s + 1), nodal(1, s), {}, values(s));
+    auto bad = values(2);
+    bad[1][0] = std::nan("");
+    EXPECT_THROW(w.writeStep(3e-6, nodal(1, 2), {}, bad), choc::NumericalError);
+    EXPECT_EQ(w.stepsWritten(), 2);
+    w.finish();
+  }
+  int cpu = 8, io = 0;
+  float version = 0;
+  const int id = ex_open(path.c_str(), EX_READ, &cpu, &io, &version);
+  ASSERT_GE(id, 0);
+  EXPECT_EQ(variableNames(id, EX_ELEM_BLOCK), names);
+  EXPECT_EQ(ex_inquire_int(id, EX_INQ_TIME), 2);
+  const int blocks = static_cast<int>(mesh_.blocks.size());
+  std::vector<int> table(static_cast<size_t>(blocks) * 2);
+  ASSERT_EQ(ex_get_truth_table(id, EX_ELEM_BLOCK, blocks, 2, table.data()), 0);
+  EXPECT_EQ(table[0], 1);
+  EXPECT_EQ(table[1], 1);
+  EXPECT_EQ(table[2], 0);
+  EXPECT_EQ(table[3], 0);
+  std::vector<int> ids(static_cast<size_t>(blocks));
+  ASSERT_EQ(ex_get_ids(id, EX_ELEM_BLOCK, ids.data()), 0);
+  for (int s = 0; s < 2; ++s)
+    for (int v = 0; v < 2; ++v) {
+      std::vector<double> got(static_cast<size_t>(first));
+      ASSERT_EQ(ex_get_var(id, s + 1, EX_ELEM_BLOCK, v + 1, ids[0], first, got.data()), 0);
+      const auto expected = values(s)[size_t(v)];
+      EXPECT_EQ(got, std::vector<double>(expected.begin(), expected.begin() + first)) << "step " << s;
+    }
+  ex_close(id);
+}
+
 TEST_F(ExodusResults, AbandonRenamesToIncomplete) {
   const std::string path = file("sub/run.exo");
   fs::create_directories(file("sub"));

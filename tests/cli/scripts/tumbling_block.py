@@ -14,8 +14,20 @@ from a rigid start). Checked, with the tolerances that follows from eps:
   - the energy balance stays at or below +1e-4 E0 (no scheme creates energy) and above
     -1e-3 E0 (average acceleration and central differences dissipate nothing by design; the
     centrifugal strain energy is eps E0);
+  - HHT and generalized-alpha (their defaults) create no energy either: balance at most
+    +1e-4 E0, its dissipation reported;
   - 2 ranks give 1 rank's histories: the corner's displacements to 1e-9 a, the kinetic energy to
     1e-9 of its value (Newton's tolerance, 1e-10 of the forces, for the implicit run);
+  - central differences (velocity Verlet, with the integer-step velocities it writes) conserve
+    the linear momentum and the angular momentum about the centre of mass exactly for forces
+    derived from a frame-invariant energy: both to 1e-8 of m r0 omega and I omega (from the
+    Exodus file's positions and velocities and the lumped masses, m_e / 8 per node of each
+    cube element); average acceleration's angular momentum is reported;
+  - the explicit run's Exodus file holds the Cauchy stress and the strain-energy density of each
+    element (element variables SIGMA_XX ... STRAIN_ENERGY_DENSITY): the density times the
+    element volume, summed, is the history's strain energy at the same time (to 1e-9 of it:
+    the same integral, averaged and multiplied back), and 2 ranks write 1 rank's values to 1e-9
+    of the largest;
   - 'Strain' = 'small' (linear elastic) on the same deck fails the first check by orders of
     magnitude: a small-strain body given a spin moves each point along its initial velocity
     (r = r0 sqrt(1 + (omega t)^2)); that is why large rotations need 'Strain' = 'finite'.
@@ -24,6 +36,7 @@ import math
 import os
 import sys
 
+import netCDF4
 import numpy as np
 
 choc, src, work = sys.argv[1:4]
@@ -38,7 +51,7 @@ os.makedirs(work, exist_ok=True)
 mesh = chocrun.gmsh_mesh("compact_block.geo", os.path.join(work, "cube.msh"), order=1, n=2)
 
 
-def deck(scheme, dt, strain="finite", law="neo-Hookean", end=END):
+def deck(scheme, dt, strain="finite", law="neo-Hookean", end=END, exodus=0):
     return f"""<ParameterList name="tumbling_block">
   <ParameterList name="Mesh"><Parameter name="File" type="string" value="{mesh}"/></ParameterList>
   <ParameterList name="Model">
@@ -60,7 +73,7 @@ def deck(scheme, dt, strain="finite", law="neo-Hookean", end=END):
     <Parameter name="Time Step" type="double" value="{dt}"/>
     <Parameter name="End Time" type="double" value="{end}"/>
     <Parameter name="History" type="string" value="corner:DX corner:DY corner:DZ"/>
-    <Parameter name="Exodus Interval" type="int" value="0"/>
+    <Parameter name="Exodus Interval" type="int" value="{exodus}"/>
     <ParameterList name="Initial Conditions"><ParameterList name="spin">
       <Parameter name="Node Set" type="string" value="block"/>
       <Parameter name="Field" type="string" value="Rigid Velocity"/>
@@ -111,10 +124,72 @@ def check(label, h):
         failures.append(f"{label}: turned {angle[-1] / (2 * math.pi):.3f} times, not {TURNS}")
 
 
+def element_fields(out):
+    """The Exodus element variables of the one block: names, times, values[name][step][element]."""
+    with netCDF4.Dataset(os.path.join(out, "spin.exo")) as d:
+        names = [str(n) for n in netCDF4.chartostring(d.variables["name_elem_var"][:])]
+        times = np.array(d.variables["time_whole"][:])
+        values = {n: np.array(d.variables[f"vals_elem_var{k + 1}eb1"][:]) for k, n in enumerate(names)}
+    return names, times, values
+
+
+def momenta(out):
+    """Linear and angular momentum (about the centre of mass, z) at each Exodus time, from the
+    positions, velocities and lumped masses (HEX8 cubes: m_e / 8 per node)."""
+    with netCDF4.Dataset(os.path.join(out, "spin.exo")) as d:
+        names = [str(n) for n in netCDF4.chartostring(d.variables["name_nod_var"][:])]
+        var = lambda n: np.array(d.variables[f"vals_nod_var{names.index(n) + 1}"][:])  # noqa: E731
+        X, Y = np.array(d.variables["coordx"][:]), np.array(d.variables["coordy"][:])
+        conn = np.array(d.variables["connect1"][:]) - 1
+        ux, uy, vx, vy = var("DISP_X"), var("DISP_Y"), var("VEL_X"), var("VEL_Y")
+    m = np.zeros(X.size)
+    for element in conn:
+        m[element] += RHO * (A / 2) ** 3 / 8
+    x, y = X + ux, Y + uy
+    M = m.sum()
+    px, py = (vx * m).sum(axis=1), (vy * m).sum(axis=1)
+    cx, cy = (x * m).sum(axis=1) / M, (y * m).sum(axis=1) / M
+    L = (m * ((x - cx[:, None]) * vy - (y - cy[:, None]) * vx)).sum(axis=1)
+    return np.hypot(px, py), L, M
+
+
+def check_momenta(label, out, tolerance):
+    p, L, M = momenta(out)
+    scale_p = M * OMEGA * A / math.sqrt(2)
+    dp, dL = np.max(p) / scale_p, np.max(np.abs(L - L[0])) / abs(L[0])
+    print(f"{label}: linear momentum within {dp:.1e} of m r0 omega, angular momentum within {dL:.1e} of its start"
+          + (f" (at most {tolerance:g})" if tolerance else " (reported)"))
+    if tolerance and not (dp <= tolerance and dL <= tolerance):
+        failures.append(f"{label}: momentum {dp:.1e}, angular momentum {dL:.1e} (at most {tolerance:g})")
+
+
+def check_element_fields(out, out2, h):
+    names, times, values = element_fields(out)
+    expected = ["SIGMA_XX", "SIGMA_YY", "SIGMA_ZZ", "SIGMA_XY", "SIGMA_YZ", "SIGMA_ZX", "STRAIN_ENERGY_DENSITY"]
+    if names != expected:
+        failures.append(f"element variables {names}, expected {expected}")
+        return
+    volume = (A / 2) ** 3  # 2 x 2 x 2 equal cubes
+    worst = 0.0
+    for k, t in enumerate(times):
+        row = int(np.argmin(np.abs(h["time"] - t)))
+        strain = h["energy:strain"][row]
+        total = np.sum(values["STRAIN_ENERGY_DENSITY"][k]) * volume
+        worst = max(worst, abs(total - strain) / max(np.max(h["energy:strain"]), 1e-300))
+    print(f"Exodus: sum of the elements' energy density x volume = the history's strain energy to {worst:.1e}")
+    if not worst <= 1e-9:
+        failures.append(f"Exodus strain-energy density integrates to the strain energy only to {worst:.1e}")
+    _, _, values2 = element_fields(out2)
+    for n in expected:
+        diff = np.max(np.abs(values2[n] - values[n])) / max(np.max(np.abs(values[n])), 1e-300)
+        if not diff <= 1e-9:
+            failures.append(f"Exodus {n}: 2 ranks differ from 1 by {diff:.1e} of its largest value")
+
+
 runs = {"explicit": ("central differences", 5e-6), "implicit": ("average acceleration", 0.02 / OMEGA)}
 for label, (scheme, dt) in runs.items():
     out = os.path.join(work, label)
-    chocrun.run(choc, write(label, deck(scheme, dt)), out)
+    chocrun.run(choc, write(label, deck(scheme, dt, exodus=1000 if label == "explicit" else 250)), out)
     h = chocrun.read_history(out, "spin")
     check(label, h)
     out2 = out + "_np2"
@@ -128,6 +203,21 @@ for label, (scheme, dt) in runs.items():
         if not rel <= 1e-9:
             failures.append(f"{label}: 2 ranks: {c} differs by {rel:.1e} of its scale (at most 1e-9)")
     print(f"{label}: 2 ranks equal 1 rank's histories to {worst:.1e}")
+    check_momenta(label, out, 1e-8 if label == "explicit" else None)
+    if label == "explicit":
+        check_element_fields(out, out2, h)
+
+# The dissipative presets: their energy balance is reported (negative by design) and must not
+# show energy created (at most +1e-4 E0).
+for scheme in ("HHT", "generalized-alpha"):
+    label = scheme.replace(" ", "_")
+    out = os.path.join(work, label)
+    chocrun.run(choc, write(label, deck(scheme, 0.02 / OMEGA)), out)
+    h = chocrun.read_history(out, "spin")
+    e0, bal = h["energy:total"][0], h["energy:balance"]
+    print(f"{scheme}: energy balance in [{bal.min() / e0:.2e}, {bal.max() / e0:.2e}] E0 over ten turns")
+    if not bal.max() <= 1e-4 * e0:
+        failures.append(f"{scheme}: energy balance reaches {bal.max() / e0:.2e} E0 (created)")
 
 # Small strain: a quarter turn is enough to show it.
 out = os.path.join(work, "small")
