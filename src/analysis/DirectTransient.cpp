@@ -66,10 +66,11 @@ Teuchos::ParameterList DirectTransient::parameters() {
                 "Newmark-family preset (see src/timeint/NewmarkFamily.hpp), or 'central "
                 "differences': explicit, lumped mass, no linear solve (src/timeint/CentralDifferenceStepper.hpp)");
   declareStabilityCheck(p);
-  declareInt(p, "Critical Step Interval", 10,
+  declareInt(p, "Critical Step Interval", 100,
              "central differences with finite-strain blocks: every this many steps the critical step "
              "is estimated again on the deformed mesh (the elements' tangent against their lumped "
-             "mass) and 'Stability Check' decides again (src/analysis/DeformedStability.hpp)",
+             "mass: about 30 internal forces' cost per estimate) and 'Stability Check' decides again "
+             "(src/analysis/DeformedStability.hpp); lower it for violent compression",
              Range::positive());
   declareDouble(p, "Alpha", -0.1,
                 "alpha of 'modified average acceleration' and 'HHT', in [-1/3, 0]: "

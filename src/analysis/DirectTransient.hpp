@@ -50,7 +50,7 @@ class DirectTransient : public Analysis {
     NewmarkFamily scheme = NewmarkFamily::averageAcceleration();
     bool explicitScheme = false;  // 'central differences': CentralDifferenceStepper, lumped mass
     StabilityCheck stability = StabilityCheck::Refuse;
-    int criticalStepInterval = 10;  // steps between estimates on the deformed mesh (finite strain)
+    int criticalStepInterval = 100;  // steps between estimates on the deformed mesh (finite strain)
     TransientSettings time;
     double rayleighK = 0, rayleighM = 0;
     ContactSettings contact;

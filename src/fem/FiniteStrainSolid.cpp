@@ -25,9 +25,23 @@ const std::vector<GradientRow>& gradientRows(Kinematics k) {
   return k == Kinematics::ThreeD ? threeD : (k == Kinematics::PlaneStrain ? plane : axi);
 }
 
-double rowValue(Kinematics k, const GradientRow& r, const IsoparametricPoint& p, int a) {
-  if (k == Kinematics::Axisymmetric && r.J == 2) return p.N[size_t(a)] / p.x[0];
-  return p.dNdx[size_t(a)][size_t(r.J)];
+// One quadrature point of an ElementGeometry.
+struct PointView {
+  int nodes;
+  const double* dNdX;  // [a 3 + J]
+  const double* N;     // axisymmetric only
+  double R;
+};
+
+PointView pointOf(const ElementGeometry& g, int q) {
+  const bool axi = !g.radius.empty();
+  return {g.nodes, &g.dNdX[size_t(q) * g.nodes * 3], axi ? &g.N[size_t(q) * g.nodes] : nullptr,
+          axi ? g.radius[size_t(q)] : 0.0};
+}
+
+double rowValue(Kinematics k, const GradientRow& r, const PointView& p, int a) {
+  if (k == Kinematics::Axisymmetric && r.J == 2) return p.N[a] / p.R;
+  return p.dNdX[a * 3 + r.J];
 }
 
 // The state at one quadrature point: F, the material's response to C = F^T F, and P = F S.
@@ -37,12 +51,15 @@ struct PointState {
   Mat3 P;
 };
 
-void evaluatePoint(Kinematics k, const HyperelasticMaterial& m, SolidShape t, const Point3& xi,
-                   const IsoparametricPoint& p, const std::vector<double>& u, bool withTangent, PointState& s) {
+void evaluatePoint(Kinematics k, const HyperelasticMaterial& m, SolidShape t, const Point3& xi, const PointView& p,
+                   const std::vector<double>& u, bool withTangent, PointState& s) {
   s.F = identity3();
-  const int nc = k == Kinematics::ThreeD ? 3 : 2, n = static_cast<int>(p.N.size());
-  for (const GradientRow& r : gradientRows(k))
-    for (int a = 0; a < n; ++a) s.F[r.i][r.J] += rowValue(k, r, p, a) * u[size_t(a * nc + r.comp)];
+  const int nc = k == Kinematics::ThreeD ? 3 : 2;
+  for (const GradientRow& r : gradientRows(k)) {
+    double v = 0.0;
+    for (int a = 0; a < p.nodes; ++a) v += rowValue(k, r, p, a) * u[size_t(a * nc + r.comp)];
+    s.F[r.i][r.J] += v;
+  }
   const double J = determinant(s.F);
   if (!(J > 0)) {
     std::ostringstream msg;
@@ -59,30 +76,36 @@ void evaluatePoint(Kinematics k, const HyperelasticMaterial& m, SolidShape t, co
   s.P = multiply(s.F, s.response.S);
 }
 
-// A_rs = dP_r / dF_s for the kinematics' rows: delta_ik S_JL + F_iI F_kK CC_IJKL.
+// A_rs = dP_r / dF_s for the kinematics' rows: delta_ik S_JL + F_iI F_kK CC_IJKL, the
+// contraction in two passes (T_iJKL = F_iI CC_IJKL, then F_kK T_iJKL): 486 products instead of
+// 6,561.
 void firstElasticity(Kinematics k, const PointState& s, std::vector<double>& A) {
   const auto& rows = gradientRows(k);
   const size_t nr = rows.size();
-  A.assign(nr * nr, 0.0);
   const auto& C = s.response.tangent;
+  double T[3][3][3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int J = 0; J < 3; ++J)
+      for (int K = 0; K < 3; ++K)
+        for (int L = 0; L < 3; ++L)
+          T[i][J][K][L] = s.F[i][0] * C[0][J][K][L] + s.F[i][1] * C[1][J][K][L] + s.F[i][2] * C[2][J][K][L];
+  A.assign(nr * nr, 0.0);
   for (size_t r = 0; r < nr; ++r)
     for (size_t q = 0; q < nr; ++q) {
       const int i = rows[r].i, J = rows[r].J, kk = rows[q].i, L = rows[q].J;
-      double v = i == kk ? s.response.S[J][L] : 0.0;
-      for (int I = 0; I < 3; ++I) {
-        if (s.F[i][I] == 0.0) continue;
-        for (int K = 0; K < 3; ++K) v += s.F[i][I] * s.F[kk][K] * C[I][J][K][L];
-      }
-      A[r * nr + q] = v;
+      A[r * nr + q] = (i == kk ? s.response.S[J][L] : 0.0) + s.F[kk][0] * T[i][J][0][L] +
+                      s.F[kk][1] * T[i][J][1][L] + s.F[kk][2] * T[i][J][2][L];
     }
 }
 
 // K += w G^T A G with G the gradient rows' values at p.
-void addTangent(Kinematics k, const IsoparametricPoint& p, const std::vector<double>& A, double w, DenseMatrix& K) {
+void addTangent(Kinematics k, const PointView& p, const std::vector<double>& A, double w, DenseMatrix& K) {
   const auto& rows = gradientRows(k);
-  const int nr = static_cast<int>(rows.size()), n = static_cast<int>(p.N.size());
+  const int nr = static_cast<int>(rows.size()), n = p.nodes;
   const int nc = k == Kinematics::ThreeD ? 3 : 2, nd = n * nc;
-  std::vector<double> g(size_t(nr) * n), AG(static_cast<size_t>(nd));
+  thread_local std::vector<double> g, AG;
+  g.resize(size_t(nr) * n);
+  AG.resize(static_cast<size_t>(nd));
   for (int r = 0; r < nr; ++r)
     for (int a = 0; a < n; ++a) g[size_t(r) * n + a] = rowValue(k, rows[size_t(r)], p, a);
   for (int r = 0; r < nr; ++r) {
@@ -109,23 +132,49 @@ FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kin
   checkSolidKinematics(shape_, kin_);
 }
 
-double FiniteStrainSolid::evaluate(const std::vector<Point3>& X, const std::vector<double>& u,
-                                   std::vector<double>& f, DenseMatrix* K) const {
+double FiniteStrainSolid::modulus() const {
+  StressResponse r;
+  material_->respond(identity3(), true, r);
+  return r.tangent[0][0][0][0];
+}
+
+ElementGeometry FiniteStrainSolid::geometry(const std::vector<Point3>& X) const {
   validateSolidNodes(shape_, kin_, X);
   const QuadratureRule& rule = stiffnessRule(shape_, kin_);
-  const int nc = componentsPerNode(), n = numNodes(), nd = n * nc;
+  ElementGeometry g;
+  g.points = rule.size();
+  g.nodes = numNodes();
+  const bool axi = kin_ == Kinematics::Axisymmetric;
+  IsoparametricPoint p;
+  for (int q = 0; q < rule.size(); ++q) {
+    g.weight.push_back(solidVolumeWeight(shape_, kin_, X, rule, q, p));
+    for (int a = 0; a < g.nodes; ++a)
+      for (int J = 0; J < 3; ++J) g.dNdX.push_back(p.dNdx[size_t(a)][size_t(J)]);
+    if (!axi) continue;
+    g.N.insert(g.N.end(), p.N.begin(), p.N.end());
+    g.radius.push_back(p.x[0]);
+  }
+  return g;
+}
+
+double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f,
+                                   DenseMatrix* K) const {
+  const QuadratureRule& rule = stiffnessRule(shape_, kin_);
+  const int nc = componentsPerNode(), n = g.nodes, nd = n * nc;
   f.assign(size_t(nd), 0.0);
   if (K) K->resize(nd, nd);
-  IsoparametricPoint p;
   PointState s;
-  std::vector<double> A;
+  thread_local std::vector<double> A;
   double energy = 0.0;
-  for (int q = 0; q < rule.size(); ++q) {
-    const double w = solidVolumeWeight(shape_, kin_, X, rule, q, p);
+  for (int q = 0; q < g.points; ++q) {
+    const double w = g.weight[size_t(q)];
+    const PointView p = pointOf(g, q);
     evaluatePoint(kin_, *material_, shape_, rule.points[size_t(q)], p, u, K != nullptr, s);
     energy += w * s.response.energy;
-    for (const GradientRow& r : gradientRows(kin_))
-      for (int a = 0; a < n; ++a) f[size_t(a * nc + r.comp)] += w * s.P[r.i][r.J] * rowValue(kin_, r, p, a);
+    for (const GradientRow& r : gradientRows(kin_)) {
+      const double wp = w * s.P[r.i][r.J];
+      for (int a = 0; a < n; ++a) f[size_t(a * nc + r.comp)] += wp * rowValue(kin_, r, p, a);
+    }
     if (!K) continue;
     firstElasticity(kin_, s, A);
     addTangent(kin_, p, A, w, *K);
@@ -133,18 +182,16 @@ double FiniteStrainSolid::evaluate(const std::vector<Point3>& X, const std::vect
   return energy;
 }
 
-void FiniteStrainSolid::averageStress(const std::vector<Point3>& X, const std::vector<double>& u,
+void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vector<double>& u,
                                       std::array<double, 6>& sigma, double& energyDensity) const {
-  validateSolidNodes(shape_, kin_, X);
   const QuadratureRule& rule = stiffnessRule(shape_, kin_);
-  IsoparametricPoint p;
   PointState s;
   sigma.fill(0.0);
   energyDensity = 0.0;
   double volume = 0.0;
-  for (int q = 0; q < rule.size(); ++q) {
-    const double w = solidVolumeWeight(shape_, kin_, X, rule, q, p);
-    evaluatePoint(kin_, *material_, shape_, rule.points[size_t(q)], p, u, false, s);
+  for (int q = 0; q < g.points; ++q) {
+    const double w = g.weight[size_t(q)];
+    evaluatePoint(kin_, *material_, shape_, rule.points[size_t(q)], pointOf(g, q), u, false, s);
     const Mat3 c = cauchyStress(s.F, s.response.S);
     const double v[6] = {c[0][0], c[1][1], c[2][2], c[0][1], c[1][2], c[2][0]};
     for (int i = 0; i < 6; ++i) sigma[size_t(i)] += w * v[i];

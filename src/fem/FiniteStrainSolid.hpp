@@ -32,6 +32,17 @@ class InvertedElement : public std::domain_error {
   using std::domain_error::domain_error;
 };
 
+// The reference geometry of one element at its quadrature points, computed once (the total
+// Lagrangian integrals never change): per point q the weight w_q dV_q, dN_a/dX_J (J < 3, zero
+// beyond the parametric dimension) and, axisymmetric, N_a and the radius R.
+struct ElementGeometry {
+  int points = 0, nodes = 0;
+  std::vector<double> weight;  // [q]
+  std::vector<double> dNdX;    // [(q nodes + a) 3 + J]
+  std::vector<double> N;       // [q nodes + a], axisymmetric only
+  std::vector<double> radius;  // [q], axisymmetric only
+};
+
 class FiniteStrainSolid {
  public:
   // Throws std::invalid_argument for an unknown topology or one that does not fit the
@@ -41,18 +52,31 @@ class FiniteStrainSolid {
   int numNodes() const { return nodeCount(shape_); }
   int componentsPerNode() const { return kin_ == Kinematics::ThreeD ? 3 : 2; }
   const HyperelasticMaterial& material() const { return *material_; }
+  // The material's modulus at C = I, dS_11/dE_11 = lambda + 2 mu: the size of the stress's terms
+  // per unit of strain.
+  double modulus() const;
 
+  // The element's reference geometry; throws std::invalid_argument like the small-strain
+  // kernel (inverted or degenerate reference element, axisymmetric radii).
+  ElementGeometry geometry(const std::vector<Point3>& X) const;
   // f (resized to numNodes() * componentsPerNode()) at the nodal displacements u (same
-  // order) of the element with reference nodes X; K = df/du when K is not null. Returns the
-  // element's strain energy int W dV. Throws InvertedElement (det F <= 0) and, for the
-  // reference geometry, std::invalid_argument like the small-strain kernel.
-  double evaluate(const std::vector<Point3>& X, const std::vector<double>& u, std::vector<double>& f,
+  // order); K = df/du when K is not null. Returns the element's strain energy int W dV.
+  // Throws InvertedElement (det F <= 0).
+  double evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f,
                   DenseMatrix* K) const;
+  double evaluate(const std::vector<Point3>& X, const std::vector<double>& u, std::vector<double>& f,
+                  DenseMatrix* K) const {
+    return evaluate(geometry(X), u, f, K);
+  }
 
   // The Cauchy stress (xx, yy, zz, xy, yz, zx; for axisymmetric rr, zz, thetatheta, rz, 0, 0)
   // and the strain-energy density W, both averaged over the element's reference volume.
-  void averageStress(const std::vector<Point3>& X, const std::vector<double>& u, std::array<double, 6>& sigma,
+  void averageStress(const ElementGeometry& g, const std::vector<double>& u, std::array<double, 6>& sigma,
                      double& energyDensity) const;
+  void averageStress(const std::vector<Point3>& X, const std::vector<double>& u, std::array<double, 6>& sigma,
+                     double& energyDensity) const {
+    averageStress(geometry(X), u, sigma, energyDensity);
+  }
 
  private:
   SolidShape shape_;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -34,11 +35,12 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
     if (!kernels[size_t(b)]) continue;
     const ElementBlock& blk = mesh.blocks[size_t(b)];
     Element el{kernels[size_t(b)].get(), ge, b, false, {}, {}, {}, {}};
+    std::vector<Point3> X;
     const int* conn = &blk.connectivity[size_t(e) * blk.nodesPerElement];
     const int nc = el.kernel->componentsPerNode();
     el.owner = model.dofs().ownerOfNode(conn[0]) == rows.getComm()->getRank();
     for (int k = 0; k < blk.nodesPerElement; ++k) {
-      el.X.push_back(mesh.coords[size_t(conn[k])]);
+      X.push_back(mesh.coords[size_t(conn[k])]);
       for (int c = 0; c < nc; ++c) {
         const long long d = model.dof(conn[k], c);
         el.col.push_back(d < 0 ? LO(-1) : cols.getLocalElement(GO(d)));
@@ -48,7 +50,20 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
     for (LO& r : el.row)
       if (r == Teuchos::OrdinalTraits<LO>::invalid()) r = -1;
     DenseMatrix M;
-    model.elementKernel(b)->mass(el.X, MassKind::Lumped, M);
+    model.elementKernel(b)->mass(X, MassKind::Lumped, M);
+    el.geometry = el.kernel->geometry(X);
+    // The strain E = (C - I) / 2 is computed from C = F^T F, whose entries are of size 1, so it
+    // errs by about eps whatever the deformation: the stress by eps (lambda + 2 mu), node a's
+    // force by that times int |grad N_a| dV. termsNorm reports it in the units of its callers,
+    // who take 1e-12 of the terms' size as the round-off floor: times eps / 1e-12.
+    const double floor = std::numeric_limits<double>::epsilon() / 1e-12 * el.kernel->modulus();
+    const ElementGeometry& g = el.geometry;
+    for (int a = 0; a < g.nodes; ++a) {
+      double s = 0.0;
+      for (int q = 0; q < g.points; ++q)
+        for (int J = 0; J < 3; ++J) s += g.weight[size_t(q)] * std::abs(g.dNdX[(size_t(q) * g.nodes + a) * 3 + J]);
+      for (int c = 0; c < nc; ++c) el.roundoff.push_back(floor * s);
+    }
     for (int i = 0; i < M.rows(); ++i) el.lumpedMass.push_back(M(i, i));
     elements_.push_back(std::move(el));
   }
@@ -81,7 +96,7 @@ std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTange
       if (e.col[k] >= 0) ue[k] = data[e.col[k]];
     double energy = 0.0;
     try {
-      energy = e.kernel->evaluate(e.X, ue, fe, withTangent ? &Ke : nullptr);
+      energy = e.kernel->evaluate(e.geometry, ue, fe, withTangent ? &Ke : nullptr);
     } catch (const InvertedElement& err) {
       return describe(e, err.what());
     }
@@ -90,15 +105,30 @@ std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTange
   return "";
 }
 
+bool FiniteStrainForce::sameState(const RCP<Vector>& at, const Vector& u) const {
+  if (at.is_null()) return false;
+  auto a = at->getData(), b = u.getData();
+  int differ = 0;
+  for (size_t i = 0; i < size_t(b.size()) && !differ; ++i) differ = a[i] != b[i];
+  int any = 0;
+  Teuchos::reduceAll<int, int>(*K0_->getComm(), Teuchos::REDUCE_MAX, differ, Teuchos::outArg(any));
+  return any == 0;
+}
+
 void FiniteStrainForce::internalForce(const Vector& u, Vector& out) const {
   Klin_->apply(u, out);
   auto o = out.getDataNonConst();
+  double energy = 0.0;
   const std::string failure = forEachElement(onColumns(u), false, [&](const Element& e, const std::vector<double>& f,
-                                                                      const DenseMatrix&, double) {
+                                                                      const DenseMatrix&, double w) {
     for (size_t k = 0; k < e.row.size(); ++k)
       if (e.row[k] >= 0) o[e.row[k]] += f[k];
+    if (e.owner) energy += w;
   });
   throwIfFailed(failure);
+  if (forceAt_.is_null()) forceAt_ = rcp(new Vector(u.getMap()));
+  forceAt_->assign(u);
+  forceAtEnergy_ = energy;
 }
 
 RCP<const CrsMatrix> FiniteStrainForce::tangent(const Vector& u) {
@@ -138,11 +168,15 @@ double FiniteStrainForce::strainEnergy(const Vector& u, const Vector* /*internal
   Klin_->apply(u, *tmp_);
   const double linear = 0.5 * u.dot(*tmp_);
   double local = 0.0;
-  const std::string failure = forEachElement(onColumns(u), false, [&](const Element& e, const std::vector<double>&,
-                                                                      const DenseMatrix&, double energy) {
-    if (e.owner) local += energy;
-  });
-  throwIfFailed(failure);
+  if (sameState(forceAt_, u)) {
+    local = forceAtEnergy_;
+  } else {
+    const std::string failure = forEachElement(onColumns(u), false, [&](const Element& e, const std::vector<double>&,
+                                                                        const DenseMatrix&, double energy) {
+      if (e.owner) local += energy;
+    });
+    throwIfFailed(failure);
+  }
   double global = 0.0;
   Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
   return linear + global;
@@ -161,7 +195,7 @@ double FiniteStrainForce::termsNorm(const Vector& u) const {
   const std::string failure = forEachElement(uc, false, [&](const Element& e, const std::vector<double>& f,
                                                             const DenseMatrix&, double) {
     for (size_t k = 0; k < e.row.size(); ++k)
-      if (e.row[k] >= 0) terms[size_t(e.row[k])] += std::abs(f[k]);
+      if (e.row[k] >= 0) terms[size_t(e.row[k])] += std::abs(f[k]) + e.roundoff[k];
   });
   throwIfFailed(failure);
   double local = 0.0;
@@ -211,7 +245,7 @@ void FiniteStrainForce::elementFields(const Vector& u, std::vector<std::vector<d
     for (size_t k = 0; k < e.col.size(); ++k)
       if (e.col[k] >= 0) ue[k] = data[e.col[k]];
     try {
-      e.kernel->averageStress(e.X, ue, sigma, w);
+      e.kernel->averageStress(e.geometry, ue, sigma, w);
     } catch (const InvertedElement& err) {
       failure = describe(e, err.what());
       break;

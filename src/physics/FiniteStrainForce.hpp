@@ -39,6 +39,8 @@ class FiniteStrainForce : public InternalForce {
   bool linear() const override { return false; }
   // 1/2 u.K_lin u + the elements' int W dV (each element counted on the rank owning its first node).
   double strainEnergy(const Vector& u, const Vector* internalForceAtU) const override;
+  // || |K_lin| |u| + sum_e (|f_e| + its round-off) || (see the constructor: E = (C - I) / 2
+  // errs by eps whatever u).
   double termsNorm(const Vector& u) const override;
   // max over the finite-strain elements of lambda_max(K_e(u), M_e), M_e the block's lumped mass.
   double stateEigenvalueBound(const Vector& u) const override;
@@ -58,10 +60,11 @@ class FiniteStrainForce : public InternalForce {
     int number;   // global element index (0-based)
     int block;
     bool owner;   // this rank owns its first node: it counts its energy and its output
-    std::vector<Point3> X;
+    ElementGeometry geometry;  // the reference geometry at the quadrature points
     std::vector<LO> col;  // local column of each element DOF in K's column map (-1: fixed)
     std::vector<LO> row;  // local row when this rank owns that DOF (-1: not owned or fixed)
     std::vector<double> lumpedMass;  // the element's lumped mass per DOF (reference configuration)
+    std::vector<double> roundoff;    // per DOF: the round-off of its force (termsNorm)
   };
   // Per element: the displacements from u on the column map, the force (and tangent when K).
   // Returns this rank's first failure ("" if none); the callers make it collective.
@@ -81,6 +84,11 @@ class FiniteStrainForce : public InternalForce {
   bool threeD_ = true;
   long long version_ = 0;
   RCP<Vector> tangentAt_;  // the u of KT_'s values (null before the first tangent)
+  // The elements' energy (this rank's share) at the u of the last internal force, for the
+  // energies of the state a step ended at without a second pass over the elements.
+  mutable RCP<Vector> forceAt_;
+  mutable double forceAtEnergy_ = 0.0;
+  bool sameState(const RCP<Vector>& at, const Vector& u) const;
   mutable RCP<Vector> uCol_, tmp_;
 };
 

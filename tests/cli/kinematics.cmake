@@ -25,3 +25,10 @@ add_test(NAME cli.tumbling_block
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tumbling_block.py
                  $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/tumbling_block)
 set_tests_properties(cli.tumbling_block PROPERTIES TIMEOUT 300 LABELS cli)
+
+# SDNL111 C's 3D bars in finite strain (Saint Venant-Kirchhoff) give the small-strain motion of
+# A to the order of the strain, 1/5064 (scripts/finite_small_sdnl111c.py).
+add_test(NAME cli.finite_small_sdnl111c
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/finite_small_sdnl111c.py
+                 $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/finite_small_sdnl111c)
+set_tests_properties(cli.finite_small_sdnl111c PROPERTIES TIMEOUT 300 LABELS cli)
