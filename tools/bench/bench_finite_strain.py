@@ -44,37 +44,8 @@ def count_3d_elements(msh):
 
 def deck(mesh, block, centre, strain, scheme, steps, dt):
     law = "neo-Hookean" if strain == "finite" else "linear elastic"
-    return f"""<ParameterList name="finite_strain_bench">
-  <ParameterList name="Mesh"><Parameter name="File" type="string" value="{mesh}"/></ParameterList>
-  <ParameterList name="Model">
-    <ParameterList name="Materials"><ParameterList name="steel">
-      <Parameter name="Young's Modulus" type="double" value="2e11"/>
-      <Parameter name="Poisson's Ratio" type="double" value="0.3"/>
-      <Parameter name="Density" type="double" value="7800"/>
-      <Parameter name="Model" type="string" value="{law}"/>
-    </ParameterList></ParameterList>
-    <ParameterList name="Blocks"><ParameterList name="{block}">
-      <Parameter name="Material" type="string" value="steel"/>
-      <Parameter name="Strain" type="string" value="{strain}"/>
-      <Parameter name="Mass" type="string" value="lumped"/>
-    </ParameterList></ParameterList>
-  </ParameterList>
-  <ParameterList name="Analyses"><ParameterList name="spin">
-    <Parameter name="Type" type="string" value="Transient"/>
-    <Parameter name="Scheme" type="string" value="{scheme}"/>
-    <Parameter name="Stability Check" type="string" value="substep"/>
-    <Parameter name="Time Step" type="double" value="{dt}"/>
-    <Parameter name="End Time" type="double" value="{steps * dt}"/>
-    <Parameter name="Exodus Interval" type="int" value="0"/>
-    <ParameterList name="Initial Conditions"><ParameterList name="spin">
-      <Parameter name="Node Set" type="string" value="{block}"/>
-      <Parameter name="Field" type="string" value="Rigid Velocity"/>
-      <Parameter name="Angular Velocity" type="string" value="0 0 100"/>
-      <Parameter name="Centre" type="string" value="{centre}"/>
-    </ParameterList></ParameterList>
-  </ParameterList></ParameterList>
-</ParameterList>
-"""
+    return chocrun.spin_deck(mesh, block, (0, 0, 100), centre, scheme, dt, steps * dt, strain, law,
+                             extra='\n    <Parameter name="Stability Check" type="string" value="substep"/>')
 
 
 def main():
@@ -86,9 +57,9 @@ def main():
     choc = chocrun.choc_path(a.build)
     os.makedirs(a.out, exist_ok=True)
     meshes = [("HEX8 cube", chocrun.gmsh_mesh("compact_block.geo", os.path.join(a.out, "cube.msh"), order=1, n=a.cube),
-               "block", "0.05 0.05 0.05"),
+               "block", (0.05, 0.05, 0.05)),
               ("TET10 sphere", chocrun.gmsh_mesh("oblique_sphere.geo", os.path.join(a.out, "sphere.msh"), order=2),
-               "SPHERE", "0 0.01 0")]
+               "SPHERE", (0, 0.01, 0))]
     rows = []
     for label, mesh, block, centre in meshes:
         elements = count_3d_elements(mesh)

@@ -781,3 +781,43 @@ def report_bench(name, title, rows, tables, args):
     print_tables(rows, tables)
     write_bench_json(name, title, rows, tables, vars(args), args.json,
                      choc_commit=rows[0]["choc_commit"] if rows else None)
+
+
+def spin_deck(mesh, block, omega, centre, scheme, dt, end, strain="finite", law="neo-Hookean", E=2e11, nu=0.3,
+              rho=7800.0, history="", exodus=0, extra=""):
+    """The deck (text) of one free elastic block of the mesh spun rigidly: Initial Conditions
+    'Rigid Velocity' with Angular Velocity omega about centre (3-vectors), lumped mass, one
+    transient 'spin' by `scheme`; the block's Strain and the material's Model as given. Used by
+    the tumbling body's test and the finite-strain benchmark."""
+    vec = lambda x: " ".join(repr(float(v)) for v in x)  # noqa: E731
+    return f"""<ParameterList name="spin_{block}">
+  <ParameterList name="Mesh"><Parameter name="File" type="string" value="{mesh}"/></ParameterList>
+  <ParameterList name="Model">
+    <ParameterList name="Materials"><ParameterList name="material">
+      <Parameter name="Young's Modulus" type="double" value="{E}"/>
+      <Parameter name="Poisson's Ratio" type="double" value="{nu}"/>
+      <Parameter name="Density" type="double" value="{rho}"/>
+      <Parameter name="Model" type="string" value="{law}"/>
+    </ParameterList></ParameterList>
+    <ParameterList name="Blocks"><ParameterList name="{block}">
+      <Parameter name="Material" type="string" value="material"/>
+      <Parameter name="Strain" type="string" value="{strain}"/>
+      <Parameter name="Mass" type="string" value="lumped"/>
+    </ParameterList></ParameterList>
+  </ParameterList>
+  <ParameterList name="Analyses"><ParameterList name="spin">
+    <Parameter name="Type" type="string" value="Transient"/>
+    <Parameter name="Scheme" type="string" value="{scheme}"/>
+    <Parameter name="Time Step" type="double" value="{dt}"/>
+    <Parameter name="End Time" type="double" value="{end}"/>
+    <Parameter name="History" type="string" value="{history}"/>
+    <Parameter name="Exodus Interval" type="int" value="{exodus}"/>{extra}
+    <ParameterList name="Initial Conditions"><ParameterList name="spin">
+      <Parameter name="Node Set" type="string" value="{block}"/>
+      <Parameter name="Field" type="string" value="Rigid Velocity"/>
+      <Parameter name="Angular Velocity" type="string" value="{vec(omega)}"/>
+      <Parameter name="Centre" type="string" value="{vec(centre)}"/>
+    </ParameterList></ParameterList>
+  </ParameterList></ParameterList>
+</ParameterList>
+"""

@@ -80,37 +80,8 @@ def deck(scheme, dt, strain="finite", law="neo-Hookean", end=END, exodus=0, R=No
     R = np.eye(3) if R is None else R
     omega, centre = R @ np.array([0, 0, OMEGA]), R @ np.array([A / 2, A / 2, A / 2])
     msh = mesh if R is None or np.allclose(R, np.eye(3)) else turned_mesh(mesh, os.path.join(work, "cube_turned.msh"), R)
-    return f"""<ParameterList name="tumbling_block">
-  <ParameterList name="Mesh"><Parameter name="File" type="string" value="{msh}"/></ParameterList>
-  <ParameterList name="Model">
-    <ParameterList name="Materials"><ParameterList name="steel">
-      <Parameter name="Young's Modulus" type="double" value="{E}"/>
-      <Parameter name="Poisson's Ratio" type="double" value="0.3"/>
-      <Parameter name="Density" type="double" value="{RHO}"/>
-      <Parameter name="Model" type="string" value="{law}"/>
-    </ParameterList></ParameterList>
-    <ParameterList name="Blocks"><ParameterList name="block">
-      <Parameter name="Material" type="string" value="steel"/>
-      <Parameter name="Strain" type="string" value="{strain}"/>
-      <Parameter name="Mass" type="string" value="lumped"/>
-    </ParameterList></ParameterList>
-  </ParameterList>
-  <ParameterList name="Analyses"><ParameterList name="spin">
-    <Parameter name="Type" type="string" value="Transient"/>
-    <Parameter name="Scheme" type="string" value="{scheme}"/>
-    <Parameter name="Time Step" type="double" value="{dt}"/>
-    <Parameter name="End Time" type="double" value="{end}"/>
-    <Parameter name="History" type="string" value="corner:DX corner:DY corner:DZ"/>
-    <Parameter name="Exodus Interval" type="int" value="{exodus}"/>
-    <ParameterList name="Initial Conditions"><ParameterList name="spin">
-      <Parameter name="Node Set" type="string" value="block"/>
-      <Parameter name="Field" type="string" value="Rigid Velocity"/>
-      <Parameter name="Angular Velocity" type="string" value="{' '.join(repr(float(v)) for v in omega)}"/>
-      <Parameter name="Centre" type="string" value="{' '.join(repr(float(v)) for v in centre)}"/>
-    </ParameterList></ParameterList>
-  </ParameterList></ParameterList>
-</ParameterList>
-"""
+    return chocrun.spin_deck(msh, "block", omega, centre, scheme, dt, end, strain, law, E=E, rho=RHO,
+                             history="corner:DX corner:DY corner:DZ", exodus=exodus)
 
 
 def write(name, text):
