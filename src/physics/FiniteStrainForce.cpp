@@ -85,15 +85,20 @@ void FiniteStrainForce::throwIfFailed(const std::string& localFailure) const {
   if (!failure.empty()) throw InadmissibleState(failure);
 }
 
+void FiniteStrainForce::gather(const Element& e, const Teuchos::ArrayRCP<const double>& uCol,
+                               std::vector<double>& ue) {
+  ue.assign(e.col.size(), 0.0);
+  for (size_t k = 0; k < e.col.size(); ++k)
+    if (e.col[k] >= 0) ue[k] = uCol[e.col[k]];
+}
+
 template <class Visit>
 std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTangent, Visit&& visit) const {
   auto data = uCol.getData();
   std::vector<double> ue, fe;
   DenseMatrix Ke;
   for (const Element& e : elements_) {
-    ue.assign(e.col.size(), 0.0);
-    for (size_t k = 0; k < e.col.size(); ++k)
-      if (e.col[k] >= 0) ue[k] = data[e.col[k]];
+    gather(e, data, ue);
     double energy = 0.0;
     try {
       energy = e.kernel->evaluate(e.geometry, ue, fe, withTangent ? &Ke : nullptr);
@@ -132,11 +137,7 @@ void FiniteStrainForce::internalForce(const Vector& u, Vector& out) const {
 }
 
 RCP<const CrsMatrix> FiniteStrainForce::tangent(const Vector& u) {
-  if (!tangentAt_.is_null()) {
-    tmp_ = tmp_.is_null() ? rcp(new Vector(u.getMap())) : tmp_;
-    tmp_->update(1.0, u, -1.0, *tangentAt_, 0.0);
-    if (tmp_->normInf() == 0.0) return KT_;  // the values are those at u already
-  }
+  if (tangentValid_ && sameState(tangentAt_, u)) return KT_;  // the values are those at u already
   KT_->resumeFill();
   {
     const auto A = KT_->getLocalMatrixHost();
@@ -158,7 +159,9 @@ RCP<const CrsMatrix> FiniteStrainForce::tangent(const Vector& u) {
   });
   KT_->fillComplete(K0_->getDomainMap(), K0_->getRangeMap());
   ++version_;
-  tangentAt_ = failure.empty() ? rcp(new Vector(u, Teuchos::Copy)) : Teuchos::null;
+  if (tangentAt_.is_null()) tangentAt_ = rcp(new Vector(u.getMap()));
+  tangentAt_->assign(u);
+  tangentValid_ = failure.empty();
   throwIfFailed(failure);
   return KT_;
 }
@@ -241,9 +244,7 @@ void FiniteStrainForce::elementFields(const Vector& u, std::vector<std::vector<d
   double w = 0.0;
   for (const Element& e : elements_) {
     if (!e.owner) continue;
-    ue.assign(e.col.size(), 0.0);
-    for (size_t k = 0; k < e.col.size(); ++k)
-      if (e.col[k] >= 0) ue[k] = data[e.col[k]];
+    gather(e, data, ue);
     try {
       e.kernel->averageStress(e.geometry, ue, sigma, w);
     } catch (const InvertedElement& err) {

@@ -13,11 +13,10 @@
 // on any rank throws InadmissibleState on every rank, naming the element, its block and det F.
 // Hyperelastic blocks carry no history: commit, revert and the checkpoints have nothing to keep.
 #pragma once
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <array>
 
 #include <Tpetra_Import.hpp>
 
@@ -71,6 +70,8 @@ class FiniteStrainForce : public InternalForce {
   template <class Visit>
   std::string forEachElement(const Vector& uCol, bool withTangent, Visit&& visit) const;
   const Vector& onColumns(const Vector& u) const;
+  // The element's displacements (element DOF order, 0 where fixed) from u on the column map.
+  static void gather(const Element& e, const Teuchos::ArrayRCP<const double>& uCol, std::vector<double>& ue);
   void throwIfFailed(const std::string& localFailure) const;
   std::string describe(const Element& e, const std::string& what) const;
 
@@ -83,7 +84,8 @@ class FiniteStrainForce : public InternalForce {
   int numElements_ = 0;
   bool threeD_ = true;
   long long version_ = 0;
-  RCP<Vector> tangentAt_;  // the u of KT_'s values (null before the first tangent)
+  RCP<Vector> tangentAt_;       // the u of KT_'s values
+  bool tangentValid_ = false;  // KT_ holds the complete tangent at tangentAt_
   // The elements' energy (this rank's share) at the u of the last internal force, for the
   // energies of the state a step ended at without a second pass over the elements.
   mutable RCP<Vector> forceAt_;

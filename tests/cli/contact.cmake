@@ -1,9 +1,6 @@
 # choc_contact_script(<name> <timeout>): cli.<name> runs scripts/<name>.py CHOC SOURCE WORK.
 function(choc_contact_script name timeout)
-  add_test(NAME cli.${name}
-           COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/scripts/${name}.py
-                   $<TARGET_FILE:choc> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/work/${name})
-  set_tests_properties(cli.${name} PROPERTIES TIMEOUT ${timeout} LABELS cli)
+  choc_cli_script(${name} ${timeout})
 endfunction()
 
 # choc_frame_invariance(<name> <timeout> [args...]): cli.frame_invariance_<name> runs

@@ -783,6 +783,13 @@ def report_bench(name, title, rows, tables, args):
                      choc_commit=rows[0]["choc_commit"] if rows else None)
 
 
+def write_text(path, text):
+    """Writes text to path (a deck written as text); returns path."""
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
 def spin_deck(mesh, block, omega, centre, scheme, dt, end, strain="finite", law="neo-Hookean", E=2e11, nu=0.3,
               rho=7800.0, history="", exodus=0, extra=""):
     """The deck (text) of one free elastic block of the mesh spun rigidly: Initial Conditions

@@ -72,10 +72,7 @@ def deck(extra=None, translation=V, centre=C, field="Rigid Velocity"):
 
 
 def write(name, text):
-    path = os.path.join(work, name + ".xml")
-    with open(path, "w") as f:
-        f.write(text)
-    return path
+    return chocrun.write_text(os.path.join(work, name + ".xml"), text)
 
 
 failures = []
