@@ -33,6 +33,12 @@ gmsh -2 -order 2 -format msh41 "$here/hertz_two_spheres.geo" -o "$here/hertz_two
 gmsh -3 -order 2 -format msh41 "$here/oblique_sphere.geo" -o "$here/oblique_sphere.msh" > /dev/null
 # A steel L-bracket (TET10) for the drop tests.
 gmsh -3 -order 2 -format msh41 "$here/bracket.geo" -o "$here/bracket.msh" > /dev/null
+# A thick-walled neo-Hookean sphere inflated (finite strain): axisymmetric QUAD8 and a 3D TET10 octant.
+gmsh -2 -order 2 -format msh41 "$here/thick_sphere_axisymmetric.geo" -o "$here/thick_sphere_axisymmetric.msh" > /dev/null
+gmsh -3 -order 2 -format msh41 "$here/thick_sphere_octant.geo" -o "$here/thick_sphere_octant.msh" > /dev/null
+# A rubber ball (finite strain): the Hertz half disc in TRI6 of 0.5 mm throughout.
+gmsh -2 -order 2 -format msh41 -setnumber h 5e-4 -setnumber H 5e-4 "$here/hertz_axisymmetric.geo" \
+  -o "$here/rubber_ball.msh" > /dev/null
 # SDND101: the oscillator on a stop, one beam standing for the discrete spring and mass.
 gmsh -1 -format msh41 "$here/sdnd101.geo" -o "$here/sdnd101.msh" > /dev/null
 # SDNL32: the articulated beam, the deck's 11 nodes.

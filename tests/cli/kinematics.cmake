@@ -24,3 +24,10 @@ choc_cli_script(tumbling_block 300)
 # SDNL111 C's 3D bars in finite strain (Saint Venant-Kirchhoff) give the small-strain motion of
 # A to the order of the strain, 1/5064 (scripts/finite_small_sdnl111c.py).
 choc_cli_script(finite_small_sdnl111c 300)
+
+# Finite strain: a thick-walled neo-Hookean sphere inflated until its inner radius is 1.9 A,
+# axisymmetric (QUAD8, 2, 4, 8 across the wall) and 3D (TET10 octant, two sizes), against the
+# radial equilibrium of the same material (tools/oracles/thick_sphere.py, itself checked against
+# the incompressible closed form): the errors fall at quadratic order and the finest mesh's is
+# within twice its Richardson estimate (scripts/thick_sphere.py).
+choc_cli_script(thick_sphere 300)

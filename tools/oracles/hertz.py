@@ -36,19 +36,23 @@ import numpy as np
 R, E, NU, RHO, V = 0.01, 2e11, 0.3, 7800.0, 5.0
 
 
-def hertz():
-    es = E / (1 - NU * NU)
-    m = RHO * 4.0 / 3.0 * math.pi * R ** 3
-    k = 4.0 / 3.0 * es * math.sqrt(R)
-    dmax = (15.0 * m * V * V / (16.0 * es * math.sqrt(R))) ** 0.4
-    return {"m": m, "k": k, "dmax": dmax, "fmax": k * dmax ** 1.5, "tc": 2.9432 * dmax / V}
+def hertz(radius=R, young=E, poisson=NU, density=RHO, speed=V):
+    """Hertz's figures for a sphere (the steel sphere of input/hertz.xml by default)."""
+    es = young / (1 - poisson * poisson)
+    m = density * 4.0 / 3.0 * math.pi * radius ** 3
+    k = 4.0 / 3.0 * es * math.sqrt(radius)
+    dmax = (15.0 * m * speed * speed / (16.0 * es * math.sqrt(radius))) ** 0.4
+    return {"m": m, "k": k, "dmax": dmax, "fmax": k * dmax ** 1.5, "tc": 2.9432 * dmax / speed,
+            "v": speed, "R": radius}
 
 
-def hertz_curve(h, dt=1e-9):
-    """F(t) of m d'' = -k d^1.5, d(0) = 0, d'(0) = V, until d returns to 0 (RK4)."""
+def hertz_curve(h, dt=None):
+    """F(t) of m d'' = -k d^1.5, d(0) = 0, d'(0) = v, until d returns to 0 (RK4, by default
+    with 40,000 steps over Hertz's duration)."""
+    dt = dt or h["tc"] / 4e4
     def acc(d):
         return -h["k"] * max(d, 0.0) ** 1.5 / h["m"]
-    t, d, v, ts, fs = 0.0, 0.0, V, [0.0], [0.0]
+    t, d, v, ts, fs = 0.0, 0.0, h["v"], [0.0], [0.0]
     while True:
         k1 = (v, acc(d))
         k2 = (v + 0.5 * dt * k1[1], acc(d + 0.5 * dt * k1[0]))
@@ -76,7 +80,7 @@ def measure(path, h, fraction=1.0):
         "peak force": (float(f.max()), h["fmax"]),
         "contact duration": (float(t[on[-1]] - t[on[0]]) if len(on) else 0.0, h["tc"]),
         "largest approach": (float(-d["CDY"].min()), h["dmax"]),
-        "rebound velocity": (-V + impulse / h["m"], V),
+        "rebound velocity": (-h["v"] + impulse / h["m"], h["v"]),
         "_balance": float(d["energybalance"].max() / e0),
         "_t": t, "_f": f,
     }
