@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction docs clean
+.PHONY: all deps configure build run test study bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
 
 all: build
 
@@ -111,6 +111,11 @@ study: build
 	$(PYTHON) tools/study/sdnv100_explicit_study.py --build $(BUILD) --out results/study/sdnv100-explicit
 	$(PYTHON) tools/study/hertz_3d_study.py --build $(BUILD) --out results/study/hertz-3d
 	$(PYTHON) tools/study/explicit_implicit_study.py --build $(BUILD) --out results/study/explicit-implicit
+	$(PYTHON) tools/study/small_vs_finite_study.py --build $(BUILD) --out results/study/small-vs-finite
+
+# Small against finite strain: the rubber ball at rising speeds (docs/verification/rubber-ball.md).
+study-finite: build
+	$(PYTHON) tools/study/small_vs_finite_study.py --build $(BUILD) --out results/study/small-vs-finite
 
 # A ~1M-unknown TET10 gmsh mesh read, partitioned and assembled on 2 ranks (time, memory per phase).
 bench-mesh: build

@@ -456,6 +456,7 @@ void DirectTransient::summarize(RunSummary& s, const TransientSummary& sum, cons
   } else {
     s.set("newton/iterations", sum.newtonIterations);
     s.set("newton/max_per_step", sum.maxNewtonPerStep);
+    s.set("newton/backtracks", sum.backtracks);
     s.set("active_set_passes", sum.activeSetIterations);
     s.set("failed_attempts", sum.failedSteps);
     s.set("factorizations", figures_.refactorizations);
@@ -580,6 +581,8 @@ void DirectTransient::logFigures(const TransientSummary& sum, const Model& model
                                  "kept, see Update Budget)", f.keptFactorizations).c_str()
                         : "",
                     sum.failedSteps, sum.smallestStep);
+  if (sum.backtracks > 0)
+    log() << format("  %d Newton correction(s) halved because they inverted an element\n", sum.backtracks);
   if (b_->links && b_->links->dashpotDrops() > 0)
     log() << format("  shock links: a dashpot was dropped in %lld step(s): closing while approaching, the "
                     "law's force jumps and the step had no solution with it\n",

@@ -117,6 +117,7 @@ void NewmarkStepper::countIterations(const NewtonOutcome& out, TransientSummary&
   sum.activeSetIterations += out.activeSetIterations;
   sum.refactorizations += out.refactorizations;
   sum.krylovIterations += out.krylovIterations;
+  sum.backtracks += out.backtracks;
 }
 
 // A failed attempt: back to the accepted state; the run stops when no cut of dt is left.

@@ -6,6 +6,7 @@
 
 #include <Tpetra_Vector.hpp>
 
+#include "core/Errors.hpp"
 #include "core/Format.hpp"
 
 namespace choc {
@@ -65,8 +66,33 @@ struct ActiveSetWalk {
   Increments increments;
   int correctionsInPass = 0;
   bool statusCurrent = false;
+  bool corrected = false;  // u is the last correction's iterate, not yet evaluated
   std::string lastSummary;
 };
+
+// The residual at u. Where a correction has carried u outside the model's domain (an inverted
+// element: InadmissibleState), the correction is halved, up to kMaxBacktracks times, so that
+// Newton goes on from inside it; at the predictor, or beyond the last halving, the state is
+// rethrown and the attempt fails (the stepper then cuts dt).
+constexpr int kMaxBacktracks = 8;
+
+ResidualNorms evaluate(const ResidualFunction& residual, Vector& u, Vector& r, Vector& du, ActiveSetWalk& w,
+                       NewtonOutcome& out) {
+  for (int halvings = 0;; ++halvings) {
+    try {
+      const ResidualNorms n = residual(u, r);
+      w.corrected = false;
+      return n;
+    } catch (const InadmissibleState&) {
+      if (!w.corrected || halvings == kMaxBacktracks) throw;
+      u.update(-0.5, du, 1.0);
+      du.scale(0.5);
+      w.increments.last *= 0.5;
+      w.statusCurrent = false;
+      ++out.backtracks;
+    }
+  }
+}
 
 // Evaluates the status at u; when it changes, a new pass starts (false: too many passes).
 bool evaluateStatus(SecondOrderOperator& op, const Vector& u, const NewtonSettings& s, ActiveSetWalk& w,
@@ -103,6 +129,7 @@ bool correct(SecondOrderOperator& op, const EffectiveCoefficients& c, const Resi
   u.update(1.0, du, 1.0);
   w.increments.push(du.norm2());
   w.statusCurrent = false;
+  w.corrected = true;
   if (!std::isfinite(w.increments.last)) {
     out.message = "the Newton correction is not finite";
     return false;
@@ -123,7 +150,7 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
       (s.convergence == Convergence::Auto && !op.linearWithinPass());
   ActiveSetWalk w;
   for (;;) {
-    const ResidualNorms n = residual(u, r);
+    const ResidualNorms n = evaluate(residual, u, r, du, w, out);
     out.residual = n.residual;
     out.reference = n.reference;
     if (!std::isfinite(n.residual)) {

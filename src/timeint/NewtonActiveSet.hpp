@@ -58,6 +58,7 @@ struct NewtonOutcome {
   int activeSetIterations = 0;  // Newton solves (status evaluations)
   int refactorizations = 0;
   int krylovIterations = 0;
+  int backtracks = 0;  // halvings of corrections that had inverted an element
   double residual = 0.0, reference = 0.0;
   std::string message;  // why it failed
 };

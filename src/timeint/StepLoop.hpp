@@ -49,6 +49,7 @@ struct TransientSummary {
   int refactorizations = 0;  // counted by the operator's solves (effective matrix changes)
   int krylovIterations = 0;
   int failedSteps = 0;       // attempts that were cut
+  int backtracks = 0;        // Newton corrections halved because they inverted an element
   int maxNewtonPerStep = 0;
   double smallestStep = 0.0;
 };

@@ -147,3 +147,10 @@ choc_contact_script(oblique_sphere 300)
 # one impact, the energy balance at or below +0.1 % of E0, 2 ranks equal to 1e-8 of the peaks.
 choc_contact_script(bracket_explicit 300)
 set_tests_properties(cli.bracket_explicit PROPERTIES PROCESSORS 2)
+
+# Finite strain in contact: a neo-Hookean rubber ball (nu = 0.45) dropped at 4 m/s on a rigid
+# plane, a contact radius of 0.35 R (input/rubber_ball.xml): no energy created at default
+# settings (balance <= 1e-3 E0), one impact with a rebound within 2 %, force, duration and approach
+# within a/R of Hertz, the small-strain model reported against it, 2 ranks and the mesh numbered
+# backwards equal to 1e-6 (scripts/rubber_ball.py).
+choc_cli_script(rubber_ball 400)

@@ -618,6 +618,31 @@ def gmsh_mesh(geo, out, order=1, **numbers):
     return out
 
 
+def renumbered_mesh(src_msh, out_msh):
+    """The gmsh 4.1 mesh src_msh written to out_msh with node tag t renamed N + 1 - t, in the
+    nodes and the elements (the numbering-invariance tests); returns out_msh."""
+    lines = open(src_msh).read().split("\n")
+    i = lines.index("$Nodes") + 1
+    blocks, total = (int(v) for v in lines[i].split()[:2])
+    flip = lambda t: str(total + 1 - int(t))  # noqa: E731
+    i += 1
+    for _ in range(blocks):
+        n = int(lines[i].split()[3])
+        for k in range(i + 1, i + 1 + n):
+            lines[k] = flip(lines[k])
+        i += 1 + 2 * n
+    i = lines.index("$Elements") + 2
+    while lines[i] != "$EndElements":
+        n = int(lines[i].split()[3])
+        for k in range(i + 1, i + 1 + n):
+            tags = lines[k].split()
+            lines[k] = " ".join([tags[0]] + [flip(t) for t in tags[1:]])
+        i += 1 + n
+    with open(out_msh, "w") as f:
+        f.write("\n".join(lines))
+    return out_msh
+
+
 def step_record(choc, path, out, analysis, ranks=1):
     """Runs a transient deck and returns its per-step figures: unknowns, step_s (the slowest
     rank's analysis time per step), solve_s, factorizations, krylov, newton_per_step,

@@ -91,30 +91,6 @@ def write(name, text):
     return chocrun.write_text(os.path.join(work, name + ".xml"), text)
 
 
-def renumbered_mesh(src_msh, out_msh):
-    """The gmsh 4.1 mesh with node tag t renamed N + 1 - t, in the nodes and the elements."""
-    lines = open(src_msh).read().split("\n")
-    i = lines.index("$Nodes") + 1
-    blocks, total = (int(v) for v in lines[i].split()[:2])
-    flip = lambda t: str(total + 1 - int(t))  # noqa: E731
-    i += 1
-    for _ in range(blocks):
-        n = int(lines[i].split()[3])
-        for k in range(i + 1, i + 1 + n):
-            lines[k] = flip(lines[k])
-        i += 1 + 2 * n
-    i = lines.index("$Elements") + 2
-    while lines[i] != "$EndElements":
-        n = int(lines[i].split()[3])
-        for k in range(i + 1, i + 1 + n):
-            tags = lines[k].split()
-            lines[k] = " ".join([tags[0]] + [flip(t) for t in tags[1:]])
-        i += 1 + n
-    with open(out_msh, "w") as f:
-        f.write("\n".join(lines))
-    return out_msh
-
-
 failures = []
 
 
@@ -246,7 +222,7 @@ if not frame <= 1e-9:
     failures.append(f"frame invariance: the turned run's corner motion differs by {frame:.1e} a (at most 1e-9)")
 
 # Numbering invariance: the explicit run with the nodes numbered backwards.
-renumbered = renumbered_mesh(mesh, os.path.join(work, "cube_renumbered.msh"))
+renumbered = chocrun.renumbered_mesh(mesh, os.path.join(work, "cube_renumbered.msh"))
 text = deck("central differences", 5e-6).replace(f'value="{mesh}"', f'value="{renumbered}"')
 out = os.path.join(work, "renumbered")
 chocrun.run(choc, write("renumbered", text), out)
