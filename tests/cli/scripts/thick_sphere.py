@@ -55,6 +55,7 @@ def run(deck, analysis, mesh, label, dt=None):
     d = chocrun.load_deck(os.path.join(src, "input", deck))
     chocrun.set_param(d, "Mesh/File", mesh)
     chocrun.set_param(d, f"Analyses/{analysis}/Exodus Interval", 0)
+    chocrun.remove_sublist(d, f"Analyses/{analysis}/Checks")  # the deck's, for its own mesh
     if dt:
         chocrun.set_param(d, f"Analyses/{analysis}/Time Step", dt)
     out = os.path.join(work, label)
