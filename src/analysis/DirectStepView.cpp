@@ -3,8 +3,12 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include <array>
+#include <map>
+
 #include "core/Format.hpp"
 #include "core/TimerScope.hpp"
+#include "observers/SetMomentum.hpp"
 
 namespace choc {
 
@@ -94,11 +98,22 @@ StepPoint DirectStepView::point() const {
   return p;
 }
 
-// Owned values summed across ranks.
+// Owned values summed across ranks; a set's momenta (observers/SetMomentum.hpp) once per set.
 std::vector<double> DirectStepView::probeValues() const {
   std::vector<double> mine(probes_.size(), 0.0), vals(probes_.size(), 0.0);
   auto map = u_->getMap();
+  std::map<std::string, std::array<double, 6>> momenta;
   for (size_t k = 0; k < probes_.size(); ++k) {
+    const Probe& p = probes_[k];
+    if (p.field == ProbeField::Momentum || p.field == ProbeField::AngularMomentum) {
+      const std::string set = p.column.substr(0, p.column.find(':'));
+      if (!momenta.count(set))
+        momenta[set] = setMomentum(p, *u_, *vScheme_, [&](const Vector& x, Vector& y) { op_.massTimes(x, y); });
+      // The same on every rank already: rank 0's share of the sum below.
+      if (map->getComm()->getRank() == 0)
+        mine[k] = momenta[set][size_t((p.field == ProbeField::Momentum ? 0 : 3) + p.component)];
+      continue;
+    }
     if (probes_[k].dof < 0) continue;
     const LO l = map->getLocalElement(GO(probes_[k].dof));
     if (l == Teuchos::OrdinalTraits<LO>::invalid()) continue;

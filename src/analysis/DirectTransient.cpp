@@ -228,7 +228,7 @@ void DirectTransient::setup(SetupContext& ctx) {
   if (!links.empty()) b_->links = std::make_unique<DirectLinks>(std::move(links), model, model.map());
   buildSolver(model);  // an explicit run never uses it (no effective matrix is built)
   if (s_.explicitScheme) setupExplicit(model);
-  b_->probes = parseProbes(s_.output.history, model, path("History"));
+  b_->probes = parseProbes(s_.output.history, model, path("History"), true);
   std::vector<std::string> probeColumns;
   for (const auto& p : b_->probes) probeColumns.push_back(p.column);
   std::vector<std::string> interactionColumns;

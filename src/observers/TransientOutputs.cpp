@@ -14,7 +14,11 @@ namespace choc {
 
 void declareTransientOutput(Teuchos::ParameterList& p) {
   declareString(p, "History", "",
-                "recorded quantities '<node set>:<DX|DY|DZ|DRX|...|VX|...|AX|...>', e.g. 'A:DX A:VX'");
+                "recorded quantities '<node set>:<DX|DY|DZ|DRX|...|VX|...|AX|...>' (at the set's first "
+                "node), e.g. 'A:DX A:VX'; in a 'Transient', also the whole set's linear momentum "
+                "'<node set>:<PX|PY|PZ>' [kg m/s] and angular momentum about its centre of mass "
+                "'<node set>:<LX|LY|LZ>' [kg m2/s] (3D and plane strain; M v with the analysis' mass "
+                "matrix)");
   declareInt(p, "Exodus Interval", 10,
              "write the Exodus fields every N steps and at the last step (0: no Exodus file)",
              Range::atLeast(0));

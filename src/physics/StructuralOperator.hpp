@@ -95,6 +95,7 @@ class StructuralOperator : public ExplicitOperator {
   // Energies of a state, for the output: 1/2 v.M v, the stored elastic energy, the contact springs' energy,
   // the damping power v.C v (given the kinetic energy).
   double kineticEnergy(const Vector& v) const { return mass_.kineticEnergy(v); }
+  void massTimes(const Vector& x, Vector& out) const { mass_.applyMass(x, out); }  // out = M x
   double strainEnergy(const Vector& u) const;
   double contactEnergy(const Vector& u) const { return contact_ ? contact_->energy(u) : 0.0; }
   // Work of the contact pairs' friction dissipated since the start [J].

@@ -324,3 +324,7 @@ choc_cli_input_error(finite_beam check bad_finite_beam.xml
   "parameter 'Model/Blocks/POU1/Strain' = 'finite': beams .BEAM2. are small-strain in choc. set 'Strain' = 'small' on block 'POU1'")
 choc_cli_input_error(finite_modal_transient check bad_finite_modal_transient.xml
   "parameter 'Model/Blocks/POU1/Strain' = 'finite': a modal transient .'reduced'. superposes the modes of the linear model. use a direct 'Transient' analysis for finite strain, or 'Strain' = 'small'")
+choc_cli_input_error(momentum_axisymmetric check bad_momentum_axisymmetric.xml
+  "parameter 'Analyses/axisymmetric/History' = 'SPHERE:PY': a node set's momentum is not recorded in axisymmetry. use a 3D or plane-strain model")
+choc_cli_input_error(momentum_modal check bad_momentum_modal.xml
+  "parameter 'Analyses/reduced/History' = 'N1:PZ': a node set's momentum is recorded by the direct transient only. record it in a 'Transient' analysis, or record velocities here")

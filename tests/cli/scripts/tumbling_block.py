@@ -27,7 +27,8 @@ from a rigid start). Checked, with the tolerances that follows from eps:
     the linear momentum and the angular momentum about the centre of mass exactly for forces
     derived from a frame-invariant energy: both to 1e-8 of m r0 omega and I omega (from the
     Exodus file's positions and velocities and the lumped masses, m_e / 8 per node of each
-    cube element); average acceleration's angular momentum is reported;
+    cube element); average acceleration's angular momentum is reported; the history's own
+    block:LZ (choc's M v about the centre of mass) equals that Exodus-based value to 1e-12;
   - the explicit run's Exodus file holds the Cauchy stress and the strain-energy density of each
     element (element variables SIGMA_XX ... STRAIN_ENERGY_DENSITY): the density times the
     element volume, summed, is the history's strain energy at the same time (to 1e-9 of it:
@@ -84,7 +85,7 @@ def deck(scheme, dt, strain="finite", law="neo-Hookean", end=END, exodus=0, R=No
     omega, centre = R @ np.array([0, 0, OMEGA]), R @ np.array([A / 2, A / 2, A / 2])
     msh = mesh if R is None or np.allclose(R, np.eye(3)) else turned_mesh(mesh, os.path.join(work, "cube_turned.msh"), R)
     return chocrun.spin_deck(msh, "block", omega, centre, scheme, dt, end, strain, law, E=E, rho=RHO,
-                             history="corner:DX corner:DY corner:DZ", exodus=exodus)
+                             history="corner:DX corner:DY corner:DZ block:PX block:PY block:LZ", exodus=exodus)
 
 
 def write(name, text):
@@ -142,6 +143,7 @@ def momenta(out):
         names = [str(n) for n in netCDF4.chartostring(d.variables["name_nod_var"][:])]
         var = lambda n: np.array(d.variables[f"vals_nod_var{names.index(n) + 1}"][:])  # noqa: E731
         X, Y = np.array(d.variables["coordx"][:]), np.array(d.variables["coordy"][:])
+        times = np.array(d.variables["time_whole"][:])
         conn = np.array(d.variables["connect1"][:]) - 1
         ux, uy, vx, vy = var("DISP_X"), var("DISP_Y"), var("VEL_X"), var("VEL_Y")
     m = np.zeros(X.size)
@@ -152,11 +154,18 @@ def momenta(out):
     px, py = (vx * m).sum(axis=1), (vy * m).sum(axis=1)
     cx, cy = (x * m).sum(axis=1) / M, (y * m).sum(axis=1) / M
     L = (m * ((x - cx[:, None]) * vy - (y - cy[:, None]) * vx)).sum(axis=1)
-    return np.hypot(px, py), L, M
+    return np.hypot(px, py), L, M, times
 
 
-def check_momenta(label, out, tolerance):
-    p, L, M = momenta(out)
+def check_momenta(label, out, tolerance, h):
+    p, L, M, times = momenta(out)
+    # The history's block:LZ (M v about the centre of mass, computed by choc) at the same times:
+    # the same sums over the lumped masses, to round-off (1e-12 of I omega).
+    rows = [int(np.argmin(np.abs(h["time"] - t))) for t in times]
+    dLh = np.max(np.abs(h["block:LZ"][rows] - L)) / abs(L[0])
+    print(f"{label}: the history's block:LZ equals the Exodus file's angular momentum to {dLh:.1e} of I omega")
+    if not dLh <= 1e-12:
+        failures.append(f"{label}: history block:LZ differs from the Exodus angular momentum by {dLh:.1e}")
     scale_p = M * OMEGA * A / math.sqrt(2)
     dp, dL = np.max(p) / scale_p, np.max(np.abs(L - L[0])) / abs(L[0])
     print(f"{label}: linear momentum within {dp:.1e} of m r0 omega, angular momentum within {dL:.1e} of its start"
@@ -198,14 +207,14 @@ for label, (scheme, dt) in runs.items():
     chocrun.run(choc, os.path.join(work, label + ".xml"), out2, ranks=2)
     h2 = chocrun.read_history(out2, "spin")
     worst = 0.0
-    for c in ("corner:DX", "corner:DY", "corner:DZ", "energy:kinetic"):
-        scale = np.max(np.abs(h[c])) if c.startswith("energy") else A
+    for c in ("corner:DX", "corner:DY", "corner:DZ", "energy:kinetic", "block:LZ"):
+        scale = np.max(np.abs(h[c])) if c.startswith(("energy", "block")) else A
         rel = np.max(np.abs(h2[c] - h[c])) / scale
         worst = max(worst, rel)
         if not rel <= 1e-9:
             failures.append(f"{label}: 2 ranks: {c} differs by {rel:.1e} of its scale (at most 1e-9)")
     print(f"{label}: 2 ranks equal 1 rank's histories to {worst:.1e}")
-    check_momenta(label, out, 1e-8 if label == "explicit" else None)
+    check_momenta(label, out, 1e-8 if label == "explicit" else None, h)
     if label == "explicit":
         check_element_fields(out, out2, h)
 
