@@ -328,7 +328,8 @@ void DirectTransient::buildSolver(const Model& model) {
       r.notSymmetricBecause = "shock links";
     // Friction against obstacles alone, the multipliers condensed: W plus the sliding nodes' rows.
     r.nearlySymmetric = !b_->links && b_->contact && b_->contact->hasFriction() && s_.contact.condensable();
-    if (r.unknowns > kAlwaysDirectUpTo && (r.symmetricPositive() || r.nearlySymmetric)) {
+    r.tangentChanges = b_->finiteStrain;
+    if (r.unknowns > r.alwaysDirectUpTo() && (r.symmetricPositive() || r.nearlySymmetric)) {
       const EffectiveCoefficients c = s_.scheme.effectiveCoefficients(s_.time.timeStep);
       // W = ca M + cv C + cd K with C = aK K + aM M: the stiffness and mass parts of W. Measured
       // on the mesh's own mass: a redistributed contact mass leaves the contact surface's nodes

@@ -14,7 +14,8 @@ Teuchos::ParameterList linearSolverParameters() {
   Teuchos::ParameterList p;
   declareChoice(p, "Method", "auto", {"auto", "Direct", "CG", "GMRES", "MINRES"},
                 "Direct: Amesos2 sparse LU; CG/GMRES/MINRES: Belos Krylov solvers; auto (transient; "
-                "it also picks the preconditioner): Direct up to 5,000 unknowns or when the matrix "
+                "it also picks the preconditioner): Direct up to 5,000 unknowns (1,000 with finite-strain "
+                "blocks, a new tangent at each Newton iteration) or when the matrix "
                 "is not symmetric positive definite (contact multipliers between meshed bodies, "
                 "friction, links; multipliers against rigid obstacles alone are condensed out of an "
                 "iterative solve, src/contact/ContactCondensation.hpp, and with friction against "

@@ -39,7 +39,9 @@ SolverChoice chooseLinearSolver(const SolverRegime& r) {
     return {"Direct", "", r.distributedDirect, why + "; " + r.distributedDirect + " factors it on every rank"};
   };
   const std::string size = withCommas(r.unknowns) + " unknowns";
-  if (r.unknowns <= kAlwaysDirectUpTo) return {"Direct", "", "", size + ", at most " + withCommas(kAlwaysDirectUpTo)};
+  if (r.unknowns <= r.alwaysDirectUpTo())
+    return {"Direct", "", "", size + ", at most " + withCommas(r.alwaysDirectUpTo()) +
+                                  (r.tangentChanges ? " (a new tangent at each Newton iteration)" : "")};
   if (!r.symmetricPositive()) {
     const std::string why = size + "; the matrix is not symmetric positive definite (" + r.notSymmetricBecause + ")";
     if (r.nearlySymmetric && r.stiffnessToMass <= kJacobiUpTo)

@@ -1,6 +1,10 @@
 // The 'auto' linear solver ('Linear Solver/Method' = auto, the default): the method and the
 // preconditioner picked by the problem's size and regime, the reason stated in the log.
-//   - up to kAlwaysDirectUpTo unknowns: Direct (Amesos2 KLU2), cheap at that size;
+//   - up to kAlwaysDirectUpTo unknowns: Direct (Amesos2 KLU2), cheap at that size; where the
+//     tangent changes at every Newton iteration (finite-strain blocks: every solve a new
+//     factorisation), only up to kChangingTangentDirectUpTo, then by the regime below (the 3D
+//     TET10 rubber ball, 4,713 unknowns, mass-dominated: CG + Jacobi 0.2 s per step against
+//     KLU2's 3 s);
 //   - a matrix that is not symmetric positive definite (contact multipliers between meshed
 //     bodies, friction, links; multipliers against rigid obstacles alone are condensed out of
 //     an iterative solve, leaving K's and M's regime, contact/ContactCondensation.hpp):
@@ -39,6 +43,7 @@
 namespace choc {
 
 constexpr long long kAlwaysDirectUpTo = 5000;
+constexpr long long kChangingTangentDirectUpTo = 1000;
 constexpr long long kDirectUpTo = 100000;
 constexpr double kJacobiUpTo = 100.0;
 constexpr double kLargeJacobiUpTo = 1e4;
@@ -53,6 +58,9 @@ struct SolverRegime {
   // Not symmetric, but W (K and M) plus a tangent on a few rows (friction against obstacles,
   // the multipliers condensed): GMRES + Jacobi when mass-dominated, as CG + Jacobi would be.
   bool nearlySymmetric = false;
+  // A new tangent at every Newton iteration (finite strain): a direct solve refactors each time.
+  bool tangentChanges = false;
+  long long alwaysDirectUpTo() const { return tangentChanges ? kChangingTangentDirectUpTo : kAlwaysDirectUpTo; }
   bool symmetricPositive() const { return notSymmetricBecause.empty(); }
 };
 

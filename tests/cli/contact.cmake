@@ -160,3 +160,7 @@ choc_cli_script(rubber_ball 400)
 # Coulomb closed form -mu J_n R to 0.2 %, constant after the impact; small strain misses it by
 # more than 1 %.
 choc_cli_script(oblique_spin 600)
+
+# The rubber ball in 3D (TET10, finite strain) turned as a rigid whole gives the same motion,
+# contact force and strain energy to 1e-6 of their peaks (scripts/rubber_ball_frame.py).
+choc_cli_script(rubber_ball_frame 300)

@@ -28,6 +28,23 @@ TEST(SolverChoice, SmallProblemsAreDirect) {
   EXPECT_NE(c.reason.find("mass-dominated"), std::string::npos) << c.reason;
 }
 
+// A tangent that changes at every Newton iteration (finite strain) refactors at every solve: the
+// size below which Direct is taken whatever the regime drops to kChangingTangentDirectUpTo.
+TEST(SolverChoice, AChangingTangentIsDirectOnlyWhenSmall) {
+  SolverRegime r = regime(kChangingTangentDirectUpTo, 1.0);
+  r.tangentChanges = true;
+  EXPECT_EQ(chooseLinearSolver(r).method, "Direct");
+  r.unknowns = kChangingTangentDirectUpTo + 1;
+  const SolverChoice c = chooseLinearSolver(r);
+  EXPECT_EQ(c.method, "CG");
+  EXPECT_EQ(c.preconditioner, "Jacobi");
+  r.stiffnessToMass = 10 * kJacobiUpTo;  // stiffness-dominated: Direct up to kDirectUpTo
+  EXPECT_EQ(chooseLinearSolver(r).method, "Direct");
+  r = regime(kChangingTangentDirectUpTo + 1, 1.0, "contact friction");
+  r.tangentChanges = true;
+  EXPECT_EQ(chooseLinearSolver(r).method, "Direct");  // not symmetric: Direct at any size
+}
+
 TEST(SolverChoice, MatricesThatAreNotSpdAreDirectAtAnySize) {
   const SolverChoice c = chooseLinearSolver(regime(10 * kDirectUpTo, 1.0, "contact method 'Lagrange' has multipliers"));
   EXPECT_EQ(c.method, "Direct");

@@ -618,6 +618,36 @@ def gmsh_mesh(geo, out, order=1, **numbers):
     return out
 
 
+def rotation_matrix(angle, axis):
+    """The rotation by `angle` (radians) about `axis` (Rodrigues), a 3 x 3 numpy array."""
+    import numpy as np
+    k = np.asarray(axis, dtype=float) / np.linalg.norm(axis)
+    kx = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + math.sin(angle) * kx + (1 - math.cos(angle)) * kx @ kx
+
+
+def turned_mesh(src_msh, out_msh, R):
+    """The gmsh 4.1 mesh src_msh written to out_msh with every node at R x (numbering and groups
+    unchanged; the frame-invariance tests); returns out_msh."""
+    import numpy as np
+    lines = open(src_msh).read().split("\n")
+    i = lines.index("$Nodes") + 1
+    blocks = int(lines[i].split()[0])
+    i += 1
+    for _ in range(blocks):
+        _, _, parametric, n = map(int, lines[i].split())
+        if parametric:
+            raise ValueError(f"{src_msh}: parametric nodes are not handled")
+        i += 1 + n
+        for k in range(i, i + n):
+            x = R @ np.array([float(v) for v in lines[k].split()])
+            lines[k] = " ".join(repr(float(v)) for v in x)
+        i += n
+    with open(out_msh, "w") as f:
+        f.write("\n".join(lines))
+    return out_msh
+
+
 def renumbered_mesh(src_msh, out_msh):
     """The gmsh 4.1 mesh src_msh written to out_msh with node tag t renamed N + 1 - t, in the
     nodes and the elements (the numbering-invariance tests); returns out_msh."""

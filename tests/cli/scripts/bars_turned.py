@@ -11,7 +11,6 @@ with the same Newton iterations and factorisations. (The followed pairs' coeffic
 kept while no component moved by more than 1e-6, a test that depends on the frame: 6e-7 of the
 peak apart; they are now compared as vectors.)
 usage: bars_turned.py CHOC SOURCE_DIR WORK_DIR"""
-import math
 import os
 import sys
 
@@ -26,28 +25,7 @@ AXIS, ANGLE = (1.0, 2.0, 0.5), 0.7
 
 
 def rotation():
-    k = np.asarray(AXIS) / np.linalg.norm(AXIS)
-    kx = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
-    return np.eye(3) + math.sin(ANGLE) * kx + (1 - math.cos(ANGLE)) * kx @ kx
-
-
-def turned_mesh(path, out, R):
-    """A copy of the gmsh 4.1 mesh `path` with every node's coordinates turned by R."""
-    lines = open(path).read().split("\n")
-    i = lines.index("$Nodes") + 1
-    blocks = int(lines[i].split()[0])
-    i += 1
-    for _ in range(blocks):
-        _, _, parametric, n = map(int, lines[i].split())
-        if parametric:
-            sys.exit(f"{path}: parametric nodes are not handled")
-        i += 1 + n
-        for k in range(i, i + n):
-            x = R @ np.array([float(v) for v in lines[k].split()])
-            lines[k] = " ".join(repr(float(v)) for v in x)
-        i += n
-    with open(out, "w") as f:
-        f.write("\n".join(lines))
+    return chocrun.rotation_matrix(ANGLE, AXIS)
 
 
 def deck(mesh, velocity):
@@ -77,7 +55,7 @@ def deck(mesh, velocity):
 R = rotation()
 plain_mesh = os.path.join(src, "meshes", "sdnl111_3d_tet10.msh")
 turned = os.path.join(work, "turned.msh")
-turned_mesh(plain_mesh, turned, R)
+chocrun.turned_mesh(plain_mesh, turned, R)
 runs = {}
 for name, mesh, v in (("plain", plain_mesh, np.array([0.0, 0.0, -1.0])), ("turned", turned, R @ [0.0, 0.0, -1.0])):
     out = os.path.join(work, name)

@@ -58,32 +58,13 @@ mesh = chocrun.gmsh_mesh("compact_block.geo", os.path.join(work, "cube.msh"), or
 
 
 def rotation(angle=0.7, axis=(0.3, -0.5, 0.81)):
-    n = np.array(axis) / np.linalg.norm(axis)
-    K = np.array([[0, -n[2], n[1]], [n[2], 0, -n[0]], [-n[1], n[0], 0]])
-    return np.eye(3) + math.sin(angle) * K + (1 - math.cos(angle)) * K @ K
-
-
-def turned_mesh(src_msh, out_msh, R):
-    """The gmsh 4.1 mesh with every node at R x (numbering and groups unchanged)."""
-    lines = open(src_msh).read().split("\n")
-    i = lines.index("$Nodes") + 1
-    blocks = int(lines[i].split()[0])
-    i += 1
-    for _ in range(blocks):
-        n = int(lines[i].split()[3])
-        for k in range(i + 1 + n, i + 1 + 2 * n):
-            x = R @ np.array([float(v) for v in lines[k].split()[:3]])
-            lines[k] = " ".join(repr(float(v)) for v in x)
-        i += 1 + 2 * n
-    with open(out_msh, "w") as f:
-        f.write("\n".join(lines))
-    return out_msh
+    return chocrun.rotation_matrix(angle, axis)
 
 
 def deck(scheme, dt, strain="finite", law="neo-Hookean", end=END, exodus=0, R=None):
     R = np.eye(3) if R is None else R
     omega, centre = R @ np.array([0, 0, OMEGA]), R @ np.array([A / 2, A / 2, A / 2])
-    msh = mesh if R is None or np.allclose(R, np.eye(3)) else turned_mesh(mesh, os.path.join(work, "cube_turned.msh"), R)
+    msh = mesh if R is None or np.allclose(R, np.eye(3)) else chocrun.turned_mesh(mesh, os.path.join(work, "cube_turned.msh"), R)
     return chocrun.spin_deck(msh, "block", omega, centre, scheme, dt, end, strain, law, E=E, rho=RHO,
                              history="corner:DX corner:DY corner:DZ block:PX block:PY block:LZ", exodus=exodus)
 
