@@ -153,7 +153,7 @@ set_tests_properties(cli.bracket_explicit PROPERTIES PROCESSORS 2)
 # settings (balance <= 1e-3 E0), one impact with a rebound within 2 %, force, duration and approach
 # within a/R of Hertz, the small-strain model reported against it, 2 ranks and the mesh numbered
 # backwards equal to 1e-6 (scripts/rubber_ball.py).
-choc_cli_script(rubber_ball 400)
+choc_cli_script(rubber_ball 600)
 
 # The oblique sphere's spin with finite strain (scripts/oblique_spin.py): at 60 and 45 degrees its
 # angular momentum after the impact (SPHERE:LZ, M v about the centre of mass) is the rigid-body
