@@ -39,6 +39,9 @@ gmsh -3 -order 2 -format msh41 "$here/thick_sphere_octant.geo" -o "$here/thick_s
 # A rubber ball (finite strain): the Hertz half disc in TRI6 of 0.5 mm throughout.
 gmsh -2 -order 2 -format msh41 -setnumber h 5e-4 -setnumber H 5e-4 "$here/hertz_axisymmetric.geo" \
   -o "$here/rubber_ball.msh" > /dev/null
+# A slender cantilever (finite strain, the elastica): 16 x 2 x 1 HEX20 along a beam of L / h = 50.
+gmsh -3 -order 2 -format msh41 -setnumber nx 16 -setnumber hex 1 "$here/elastica_beam.geo" \
+  -o "$here/elastica_beam_hex20.msh" > /dev/null
 # SDND101: the oscillator on a stop, one beam standing for the discrete spring and mass.
 gmsh -1 -format msh41 "$here/sdnd101.geo" -o "$here/sdnd101.msh" > /dev/null
 # SDNL32: the articulated beam, the deck's 11 nodes.

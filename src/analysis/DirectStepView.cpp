@@ -68,6 +68,7 @@ void DirectStepView::differenceMassless(const Vector& u, const Vector& v, const 
 void DirectStepView::archive(StateArchive& a, const StateVectors& vectors) const {
   a.putVector("view/integrals", std::vector<double>{dissipated_, lastPower_, obstacleWork_, lastObstaclePower_});
   a.putVector("view/loadWork", loadWork_.state());
+  if (const Vector* uf = loadWork_.followerDisplacement()) vectors.put(a, "view/followerDisplacement", *uf);
   if (uPrev_) {
     vectors.put(a, "view/uPrevious", *uPrev_);
     vectors.put(a, "view/vPrevious", *vPrev_);
@@ -81,6 +82,11 @@ void DirectStepView::unarchive(const StateArchive& a, const StateVectors& vector
   obstacleWork_ = w[2];
   lastObstaclePower_ = w[3];
   loadWork_.restore(a.getVector<double>("view/loadWork", loadWork_.stateSize()));
+  if (loadWork_.hasFollowers() && a.has("view/followerDisplacement")) {
+    Vector uf(map);
+    vectors.get(a, "view/followerDisplacement", uf);
+    loadWork_.restoreFollowers(uf);
+  }
   if (op_.masslessDofs() == 0) return;
   for (RCP<Vector>* v : {&vOut_, &aOut_, &uPrev_, &vPrev_}) *v = rcp(new Vector(map));
   vectors.get(a, "view/uPrevious", *uPrev_);

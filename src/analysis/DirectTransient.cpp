@@ -18,6 +18,7 @@
 #include "fem/MatrixOps.hpp"
 #include "fem/NodalBlocks.hpp"
 #include "input/ParameterSpec.hpp"
+#include "input/Vector3.hpp"
 #include "output/InteractionList.hpp"
 #include "physics/CriticalStep.hpp"
 #include "analysis/DeformedStability.hpp"
@@ -53,6 +54,24 @@ void declareNewton(ParameterList& nw) {
                 "tolerance of the reference, or the round-off floor; never tighter than 'Linear "
                 "Solver/Tolerance'; the Newton tests are unchanged); 'fixed' "
                 "always to 'Linear Solver/Tolerance'. A direct solver is exact either way");
+}
+
+// Analyses/<transient>/Pressures/<name>: dead or follower, uniform or linear in X.
+void declarePressures(ParameterList& p, const char* ramp) {
+  ParameterList& pr = declareNamedSublists(p, "Pressures", "pressures on side sets, by name");
+  declareRequiredString(pr, "Side Set", "faces (3D) or edges (plane strain, axisymmetric) loaded");
+  declareRequiredDouble(pr, "Value",
+                        "pressure [Pa], positive pushing into the body (against the outward normal); "
+                        "consistent nodal forces on the reference faces, or on the current ones with Follower");
+  declareString(pr, "Gradient", "0 0 0",
+                "the pressure's change per metre of the reference position, \"gx gy gz\" [Pa/m]: "
+                "p(X) = Value + Gradient . X at each point X of the faces (a linear pressure: "
+                "hydrostatic, or an end moment with Follower)");
+  declareBool(pr, "Follower", false,
+              "true: the pressure acts on the current faces along their current normal (a follower "
+              "load, its load stiffness in Newton's tangent; needs a block with Strain = finite); "
+              "false: on the reference faces (a dead load)");
+  declareDouble(pr, "Ramp Time", 0.0, ramp, Range::nonNegative());
 }
 
 }  // namespace
@@ -102,12 +121,7 @@ Teuchos::ParameterList DirectTransient::parameters() {
   declareChoice(nf, "Component", "DX", {"DX", "DY", "DZ"}, "direction");
   declareRequiredDouble(nf, "Value", "force per node [N]");
   declareDouble(nf, "Ramp Time", 0.0, ramp, Range::nonNegative());
-  ParameterList& pr = declareNamedSublists(p, "Pressures", "uniform pressures on side sets, by name");
-  declareRequiredString(pr, "Side Set", "faces (3D) or edges (plane strain, axisymmetric) loaded");
-  declareRequiredDouble(pr, "Value",
-                        "pressure [Pa], positive pushing into the body (against the outward normal); "
-                        "consistent nodal forces on the reference faces");
-  declareDouble(pr, "Ramp Time", 0.0, ramp, Range::nonNegative());
+  declarePressures(p, ramp);
   declareInitialConditions(p);
   declareTransientOutput(p);
   declareChecks(p);
@@ -146,6 +160,15 @@ DirectTransient::DirectTransient(const std::string& name, const Teuchos::Paramet
       throwInput(inputFile_, path(key), shortNumber(fp->friction),
                  "the tangent of a sliding node is not symmetric, which CG cannot solve",
                  "use 'Linear Solver/Method' = Direct or GMRES with friction");
+  }
+  {
+    const ParameterList& pr = params_.sublist("Pressures");
+    for (auto it = pr.begin(); it != pr.end(); ++it)
+      if (pr.sublist(pr.name(it)).get<bool>("Follower") && !s_.explicitScheme &&
+          params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
+        throwInput(inputFile_, path("Pressures/" + pr.name(it) + "/Follower"), "true",
+                   "the load stiffness of a follower pressure is not symmetric, which CG cannot solve",
+                   "use 'Linear Solver/Method' = Direct, GMRES or auto with follower pressures");
   }
   // (Central differences make no linear solve: their forward increments need no solver.)
   // Multipliers against rigid obstacles alone are condensed out of an iterative solve; others
@@ -249,7 +272,7 @@ void DirectTransient::setup(SetupContext& ctx) {
 }
 
 // Nodal forces and pressures, each a load group (null when there are none).
-std::shared_ptr<const Loads> DirectTransient::assembleLoads(const Model& model) const {
+std::shared_ptr<const Loads> DirectTransient::assembleLoads(Model& model) const {
   auto loads = std::make_shared<Loads>();
   const ParameterList& nf = params_.sublist("Nodal Forces");
   for (auto it = nf.begin(); it != nf.end(); ++it) {
@@ -273,8 +296,16 @@ std::shared_ptr<const Loads> DirectTransient::assembleLoads(const Model& model) 
     } catch (const std::invalid_argument& e) {
       throwInput(inputFile_, path("Pressures/" + pr.name(it) + "/Side Set"), side, e.what());
     }
+    const std::string key = path("Pressures/" + pr.name(it));
+    PressureField field;
+    field.value = q.get<double>("Value");
+    field.gradient = parseVector3(q.get<std::string>("Gradient"), inputFile_, key + "/Gradient");
+    if (q.get<bool>("Follower")) {
+      loads->addFollower(followerPressure(model, pr.name(it), std::move(faces), field));
+      continue;
+    }
     auto force = rcp(new Vector(model.map()));
-    const auto nodal = pressureForces(faces, q.get<double>("Value"), model.kinematics() == Kinematics::Axisymmetric);
+    const auto nodal = pressureForces(faces, field, model.kinematics() == Kinematics::Axisymmetric);
     for (const auto& [n, fn] : nodal) {
       if (!model.dofs().ownsNode(n)) continue;
       for (int c = 0; c < 3; ++c) {
@@ -286,6 +317,32 @@ std::shared_ptr<const Loads> DirectTransient::assembleLoads(const Model& model) 
   }
   if (loads->empty()) return nullptr;
   return loads;
+}
+
+// The follower pressure `name` (Pressures/<name>, Follower = true) on its faces: finite-strain
+// blocks under every face, or an input error.
+std::shared_ptr<const FollowerPressure> DirectTransient::followerPressure(Model& model, const std::string& name,
+                                                                          std::vector<Face> faces,
+                                                                          const PressureField& field) const {
+  const std::string key = path("Pressures/" + name);
+  const ParameterList& q = params_.sublist("Pressures").sublist(name);
+  const std::string side = q.get<std::string>("Side Set");
+  if (!model.finiteStrain())
+    throwInput(inputFile_, key + "/Follower", "true",
+               "a follower pressure makes the model nonlinear and needs a block with Strain = finite",
+               "set Strain = finite on the loaded block, or Follower = false (a dead load on the reference faces)");
+  for (int e : model.mesh().findSideSet(side)->elements) {  // facesOf found the set
+    const int b = model.mesh().locateElement(e).first;
+    if (!model.finiteStrainKernels()[size_t(b)])
+      throwInput(inputFile_, key + "/Side Set", side,
+                 "has faces of block '" + model.mesh().blocks[size_t(b)].name +
+                     "', whose Strain is small: a follower pressure loads finite-strain blocks",
+                 "set Strain = finite on that block, or Follower = false");
+  }
+  const int components = static_cast<int>(spatialComponents(model.mesh().dimension).size());
+  return std::make_shared<FollowerPressure>(name, std::move(faces), field, q.get<double>("Ramp Time"),
+                                            model.kinematics() == Kinematics::Axisymmetric, model.dofs(),
+                                            components, *model.stiffness());
 }
 
 // The contact pairs, and the mass with the contact surfaces massless when redistributed.
@@ -316,6 +373,7 @@ void DirectTransient::setupExplicit(const Model& model) {
 
 void DirectTransient::buildSolver(const Model& model) {
   Teuchos::ParameterList lp = params_.sublist("Linear Solver");
+  const bool hasFollowers = b_->loads && !b_->loads->followers().empty();
   if (lp.get<std::string>("Method") == "auto" && !s_.explicitScheme) {
     SolverRegime r;
     r.unknowns = (long long)b_->K->getGlobalNumRows();
@@ -326,6 +384,8 @@ void DirectTransient::buildSolver(const Model& model) {
       r.notSymmetricBecause = "contact friction";
     else if (b_->links)
       r.notSymmetricBecause = "shock links";
+    else if (hasFollowers)
+      r.notSymmetricBecause = "follower pressures (their load stiffness)";
     // Friction against obstacles alone, the multipliers condensed: W plus the sliding nodes' rows.
     r.nearlySymmetric = !b_->links && b_->contact && b_->contact->hasFriction() && s_.contact.condensable();
     r.tangentChanges = b_->finiteStrain;
@@ -345,10 +405,10 @@ void DirectTransient::buildSolver(const Model& model) {
     if (!choice.package.empty()) lp.set("Direct Package", choice.package);
     b_->solverChoice = "'auto': " + choice.reason;
   }
-  // K, M and the contact rows of Lagrange and penalty contact are symmetric; friction's and the
-  // links' tangents and the continuous method's pressure rows are not.
+  // K, M and the contact rows of Lagrange and penalty contact are symmetric; friction's, the
+  // links' and the follower pressures' tangents and the continuous method's pressure rows are not.
   const bool symmetric = !(b_->contact && (b_->contact->hasFriction() || s_.contact.hasPressureUnknowns())) &&
-                         !b_->links;
+                         !b_->links && !hasFollowers;
   b_->condenseContact = s_.contact.condensable() && lp.get<std::string>("Method") != "Direct";
   std::shared_ptr<const NodalBlocks> blocks;
   // (An explicit run builds the solver without using it; multiplier rows were refused with the input.)
@@ -381,7 +441,12 @@ std::unique_ptr<StructuralStepper> DirectTransient::stepper(StructuralOperator& 
 
 // The model's internal force: element by element when some block is finite-strain, else K u.
 std::shared_ptr<InternalForce> DirectTransient::internalForce(Model& model) const {
-  if (model.finiteStrain()) return std::make_shared<FiniteStrainForce>(model);
+  if (model.finiteStrain()) {
+    auto f = std::make_shared<FiniteStrainForce>(model);
+    if (b_->loads)
+      for (const auto& p : b_->loads->followers()) f->addFollowerPressure(p);
+    return f;
+  }
   return std::make_shared<LinearElasticForce>(b_->K);
 }
 

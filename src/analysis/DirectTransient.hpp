@@ -77,7 +77,9 @@ class DirectTransient : public Analysis {
   };
   void readScheme();
   void readTimeSettings();
-  std::shared_ptr<const Loads> assembleLoads(const Model& model) const;
+  std::shared_ptr<const Loads> assembleLoads(Model& model) const;
+  std::shared_ptr<const FollowerPressure> followerPressure(Model& model, const std::string& name,
+                                                           std::vector<Face> faces, const PressureField& field) const;
   void buildContact(Model& model);
   void buildSolver(const Model& model);
   void setupExplicit(const Model& model);

@@ -181,7 +181,7 @@ RCP<Graph> patternGraph(const RCP<const Map>& map, long long first, int owned, c
 // same graph and bits as summing a stored list. Each element matrix is computed twice, which
 // costs less than the stored list's sort did (300k unknowns: 2.6 s against 3.2 s).
 RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs,
-                                   RCP<const Graph> graph) const {
+                                   RCP<const Graph> graph, bool fullPatterns) const {
   const int owned = dofs_.numOwned();
   const long long first = dofs_.firstOwned();
   DenseMatrix Ke;
@@ -192,13 +192,14 @@ RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<
       fn(*el.physics->kernel, el.physics->mass, el.x, el.conn, Ke);
       const std::vector<long long>& gdof = el.gdof;
       const int n = static_cast<int>(gdof.size());
+      const bool all = fullPatterns && el.physics->fullPattern;  // zero entries too (BlockPhysics)
       for (int i = 0; i < n; ++i) {
         const long long gi = gdof[i];
         if (gi < first || gi >= first + owned) continue;
         cols.clear();
         vals.clear();
         for (int j = 0; j < n; ++j)
-          if (gdof[j] >= 0 && Ke(i, j) != 0.0) cols.push_back(GO(gdof[j])), vals.push_back(Ke(i, j));
+          if (gdof[j] >= 0 && (all || Ke(i, j) != 0.0)) cols.push_back(GO(gdof[j])), vals.push_back(Ke(i, j));
         if (!cols.empty()) visit(int(gi - first));
       }
     });
@@ -237,7 +238,7 @@ RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<
 RCP<CrsMatrix> Assembler::stiffness(const std::vector<NodalSpring>& springs) const {
   return assemble([](const ElementKernel& k, MassKind, const std::vector<Point3>& x, const int*,
                      DenseMatrix& Ke) { k.stiffness(x, Ke); },
-                  springs);
+                  springs, RCP<const Graph>(), true);
 }
 
 RCP<CrsMatrix> Assembler::stiffnessWithout(const std::vector<char>& skip, const std::vector<NodalSpring>& springs,

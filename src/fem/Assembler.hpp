@@ -17,6 +17,11 @@ namespace choc {
 struct BlockPhysics {
   std::shared_ptr<const ElementKernel> kernel;  // nullptr: the block carries no unknowns
   MassKind mass = MassKind::Consistent;
+  // Every pair of an element's DOFs is an entry of the stiffness' graph, zero or not: a block
+  // whose tangent later fills entries its small-strain stiffness leaves exactly zero (finite
+  // strain: nu = 0 zeroes the coupling of u_x and u_y terms a rotation brings back, and so do
+  // the symmetries of regular meshes). Without it they would be dropped silently.
+  bool fullPattern = false;
 };
 
 // Mass redistribution (Khenous, Laborde, Renard 2008, "Mass redistribution method for finite
@@ -77,9 +82,10 @@ class Assembler {
  private:
   using ElementMatrixFn = std::function<void(const ElementKernel&, MassKind, const std::vector<Point3>&,
                                              const int* conn, DenseMatrix&)>;
-  // On `graph` when given (else the graph of the nonzero entries).
+  // On `graph` when given (else the graph of the nonzero entries, and with fullPatterns every
+  // entry of the blocks flagged BlockPhysics::fullPattern).
   RCP<CrsMatrix> assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs = {},
-                          RCP<const Tpetra::CrsGraph<LO, GO>> graph = Teuchos::null) const;
+                          RCP<const Tpetra::CrsGraph<LO, GO>> graph = Teuchos::null, bool fullPatterns = false) const;
   // One element this rank computes: its block's physics, nodes, coordinates and the global DOF
   // of each (node, component) in element order (-1: fixed or not carried).
   struct LocalElement {

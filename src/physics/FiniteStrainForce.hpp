@@ -12,6 +12,8 @@
 // Rayleigh damping's stiffness is the model's K at u = 0. An element that inverts (det F <= 0)
 // on any rank throws InadmissibleState on every rank, naming the element, its block and det F.
 // Hyperelastic blocks carry no history: commit, revert and the checkpoints have nothing to keep.
+// Follower pressures (FollowerPressure.hpp), loads that depend on the state, are carried here
+// too: f_int(u) - f_p(u, t) and K_T + K_p(u, t), at the time setTime last gave.
 #pragma once
 #include <array>
 #include <memory>
@@ -21,6 +23,7 @@
 #include <Tpetra_Import.hpp>
 
 #include "fem/FiniteStrainSolid.hpp"
+#include "physics/FollowerPressure.hpp"
 #include "physics/InternalForce.hpp"
 
 namespace choc {
@@ -36,6 +39,8 @@ class FiniteStrainForce : public InternalForce {
   long long tangentVersion() const override { return version_; }
   void applyDampingStiffness(const Vector& x, Vector& out) const override { K0_->apply(x, out); }
   bool linear() const override { return false; }
+  void setTime(double t) override { time_ = t; }
+  void addFollowerPressure(std::shared_ptr<const FollowerPressure> p) { followers_.push_back(std::move(p)); }
   // 1/2 u.K_lin u + the elements' int W dV (each element counted on the rank owning its first node).
   double strainEnergy(const Vector& u, const Vector* internalForceAtU) const override;
   // || |K_lin| |u| + sum_e (|f_e| + its round-off) || (see the constructor: E = (C - I) / 2
@@ -84,6 +89,9 @@ class FiniteStrainForce : public InternalForce {
   int numElements_ = 0;
   bool threeD_ = true;
   long long version_ = 0;
+  std::vector<std::shared_ptr<const FollowerPressure>> followers_;
+  double time_ = 0.0;
+  double tangentTime_ = 0.0;    // the time of KT_'s values (the followers' ramp)
   RCP<Vector> tangentAt_;       // the u of KT_'s values
   bool tangentValid_ = false;  // KT_ holds the complete tangent at tangentAt_
   // The elements' energy (this rank's share) at the u of the last internal force, for the

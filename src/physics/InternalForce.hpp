@@ -41,6 +41,10 @@ class InternalForce {
   virtual long long tangentVersion() const = 0;
   // out = K0 x, the stiffness of Rayleigh damping.
   virtual void applyDampingStiffness(const Vector& x, Vector& out) const = 0;
+  // The time of the states the next internalForce and tangent calls are at: the ramps of the
+  // state-dependent loads a nonlinear model carries (FollowerPressure). The operator sets it
+  // with each residual, so a correction's tangent is at its residual's time.
+  virtual void setTime(double /*t*/) {}
   // Is f_int affine in u (one tangent for the whole run)?
   virtual bool linear() const = 0;
   // The stored elastic energy at u, given f_int(u) when the caller holds it (else null).

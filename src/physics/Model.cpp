@@ -133,6 +133,7 @@ std::vector<BlockPhysics> Model::blockPhysics(const Teuchos::ParameterList& mode
     physics[b].mass = bp.get<std::string>("Mass") == "lumped" ? MassKind::Lumped : MassKind::Consistent;
     physics[b].kernel = blockKernel(blk, kinematics_, m, bp, file);
     finite_.push_back(strainKernel(blk, bp, matName, mp));
+    physics[b].fullPattern = finite_.back() != nullptr;
     kernels_.push_back(physics[b].kernel);
   }
   return physics;

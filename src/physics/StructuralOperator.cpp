@@ -62,6 +62,7 @@ void StructuralOperator::applyMass(const Vector& a, Vector& out) {
 
 void StructuralOperator::applyForces(const Vector& u, const Vector& v, double t, Vector& out) {
   TimerScope ts(timer_, "Transient: assembly");
+  internal_->setTime(t);  // the follower loads' ramp, for this residual and its correction's tangent
   internal_->internalForce(u, out);
   if (keepProducts_) {
     ku_.reset(u);

@@ -1,5 +1,9 @@
 #include "solvers/LinearSolver.hpp"
 
+#include <cmath>
+#include <vector>
+
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 
@@ -76,6 +80,36 @@ double relativeResidual(const CrsMatrix& A, const MultiVector& b, const MultiVec
   for (size_t i = 0; i < nv; ++i) {
     const double rel = nb[i] > 0 ? nr[i] / nb[i] : nr[i];
     if (!(rel <= worst)) worst = rel;  // NaN propagates
+  }
+  return worst;
+}
+
+double productTermsRatio(const CrsMatrix& A, const MultiVector& b, const MultiVector& x) {
+  const size_t nv = b.getNumVectors();
+  MultiVector onCols(A.getColMap(), nv);
+  const auto importer = A.getGraph()->getImporter();
+  if (importer.is_null())
+    onCols.assign(x);
+  else
+    onCols.doImport(x, *importer, Tpetra::INSERT);
+  const auto L = A.getLocalMatrixHost();
+  const size_t rows = size_t(L.graph.row_map.extent(0)) - 1;
+  std::vector<double> local(nv, 0.0), global(nv, 0.0), nb(nv);
+  for (size_t j = 0; j < nv; ++j) {
+    auto xc = onCols.getData(j);
+    for (size_t i = 0; i < rows; ++i) {
+      double t = 0.0;
+      for (auto k = L.graph.row_map(i); k < L.graph.row_map(i + 1); ++k)
+        t += std::abs(L.values(k)) * std::abs(xc[L.graph.entries(k)]);
+      local[j] += t * t;
+    }
+  }
+  Teuchos::reduceAll<int, double>(*A.getComm(), Teuchos::REDUCE_SUM, int(nv), local.data(), global.data());
+  b.norm2(Teuchos::ArrayView<double>(nb));
+  double worst = 0.0;
+  for (size_t j = 0; j < nv; ++j) {
+    const double ratio = nb[j] > 0 ? std::sqrt(global[j]) / nb[j] : 0.0;
+    if (!(ratio <= worst)) worst = ratio;
   }
   return worst;
 }

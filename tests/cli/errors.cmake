@@ -326,5 +326,11 @@ choc_cli_input_error(finite_modal_transient check bad_finite_modal_transient.xml
   "parameter 'Model/Blocks/POU1/Strain' = 'finite': a modal transient .'reduced'. superposes the modes of the linear model. use a direct 'Transient' analysis for finite strain, or 'Strain' = 'small'")
 choc_cli_input_error(momentum_axisymmetric check bad_momentum_axisymmetric.xml
   "parameter 'Analyses/axisymmetric/History' = 'SPHERE:PY': a node set's momentum is not recorded in axisymmetry. use a 3D or plane-strain model")
+choc_cli_input_error(follower_small_strain check bad_follower_small_strain.xml
+  "parameter 'Analyses/bend/Pressures/end/Follower' = 'true': a follower pressure makes the model nonlinear and needs a block with Strain = finite. set Strain = finite on the loaded block, or Follower = false .a dead load on the reference faces.")
+choc_cli_input_error(follower_cg check bad_follower_cg.xml
+  "parameter 'Analyses/bend/Pressures/end/Follower' = 'true': the load stiffness of a follower pressure is not symmetric, which CG cannot solve. use 'Linear Solver/Method' = Direct, GMRES or auto with follower pressures")
+choc_cli_input_error(follower_small_block check bad_follower_small_block.xml
+  "parameter 'Analyses/push/Pressures/face/Side Set' = 'CNT_POU2': has faces of block 'POU2', whose Strain is small: a follower pressure loads finite-strain blocks. set Strain = finite on that block, or Follower = false")
 choc_cli_input_error(momentum_modal check bad_momentum_modal.xml
   "parameter 'Analyses/reduced/History' = 'N1:PZ': a node set's momentum is recorded by the direct transient only. record it in a 'Transient' analysis, or record velocities here")

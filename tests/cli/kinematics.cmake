@@ -30,4 +30,11 @@ choc_cli_script(finite_small_sdnl111c 300)
 # radial equilibrium of the same material (tools/oracles/thick_sphere.py, itself checked against
 # the incompressible closed form): the errors fall at quadratic order and the finest mesh's is
 # within twice its Richardson estimate (scripts/thick_sphere.py).
-choc_cli_script(thick_sphere 300)
+choc_cli_script(thick_sphere 450)
+
+# Finite strain: a cantilever modelled with solids (L / h = 50, neo-Hookean, nu = 0) bent through
+# 101 and 122 degrees by a dead end force at 135 degrees, HEX20 (8, 16, 32 along) and TET10 (16,
+# 32, 64), against Reissner's geometrically exact beam (tools/oracles/elastica.py, itself checked
+# against the elastica's closed forms): the tip converges at order >= 2 and the finest mesh is
+# within twice its Richardson estimate plus beam theory's 2 (h/L)^2 (scripts/elastica.py).
+choc_cli_script(elastica 400)

@@ -61,6 +61,22 @@ class DeckError(KeyError):
         return self.args[0] if self.args else ""
 
 
+# ------------------------------------------------------------------ test scripts
+def save_figure(fig, path, dpi=110):
+    """A study's or test's figure: laid out, written to path, its path printed."""
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    print(f"figure: {path}")
+
+
+def finish(failures, ok):
+    """Ends a test script: its failures (exit 1) or the line `ok` (exit 0)."""
+    if failures:
+        print("FAILED:\n  " + "\n  ".join(failures))
+        sys.exit(1)
+    print(ok)
+
+
 # ------------------------------------------------------------------ paths
 def tool_dir(role):
     """tools/<role> (build, oracles, bench, study, report, docs, lib)."""

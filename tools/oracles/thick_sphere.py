@@ -107,6 +107,25 @@ def inflation(p0, A, B, mu, lam, tol=1e-13, steps=400):
     raise RuntimeError(f"thick_sphere: shooting did not converge for p0 = {p0}")
 
 
+def follower_inflation(p, A, B, mu, lam, tol=1e-12, steps=400):
+    """(a, b) under the true (follower) inner pressure p, on the rising branch of the true
+    pressure (below its maximum, 832.6 kPa at a = 1.83 A for choc's scene): the dead pressure p0
+    with p0 (A / a(p0))^2 = p, by bisection from [p, 4 p] (p0 >= p since a >= A)."""
+    if p == 0:
+        return A, B
+    true = lambda p0: p0 * (A / inflation(p0, A, B, mu, lam, steps=steps)[0]) ** 2  # noqa: E731
+    lo, hi = p, 4 * p
+    if not true(hi) > p:
+        raise ValueError(f"thick_sphere: no inflation under the true pressure {p} below p0 = {hi}")
+    while hi - lo > tol * hi:
+        mid = 0.5 * (lo + hi)
+        if true(mid) < p:
+            lo = mid
+        else:
+            hi = mid
+    return inflation(0.5 * (lo + hi), A, B, mu, lam, steps=steps)
+
+
 def incompressible_pressure(la, A, B, mu):
     """The closed form's true pressure p at the inner hoop stretch la (lambda -> infinity)."""
     lb = (1 + (la ** 3 - 1) * (A / B) ** 3) ** (1 / 3)
