@@ -1,0 +1,215 @@
+// J2 plasticity's return maps and consistent tangents (formulas in the header).
+#include "materials/J2Plasticity.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "materials/SymmetricEigen.hpp"
+
+namespace choc {
+
+namespace {
+
+const double kSqrt23 = std::sqrt(2.0 / 3.0);
+constexpr int kPairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
+
+Mat3 symmetricFromState(const double* s) {
+  Mat3 m{};
+  for (int k = 0; k < 6; ++k) m[kPairs[k][0]][kPairs[k][1]] = m[kPairs[k][1]][kPairs[k][0]] = s[k];
+  return m;
+}
+
+void stateFromSymmetric(const Mat3& m, double* s) {
+  for (int k = 0; k < 6; ++k) s[k] = 0.5 * (m[kPairs[k][0]][kPairs[k][1]] + m[kPairs[k][1]][kPairs[k][0]]);
+}
+
+// The radial return on the deviatoric trial strain's norm ||e||: the multiplier dgamma and the
+// tangent's factors theta and thetabar (header).
+struct RadialReturn {
+  double dgamma = 0.0, theta = 1.0, thetabar = 0.0;
+  bool yielded = false;
+};
+
+RadialReturn radialReturn(double mu, const J2Parameters& p, double normE, double alpha) {
+  RadialReturn r;
+  const double f = 2 * mu * normE - kSqrt23 * (p.yieldStress + p.hardening * alpha);
+  if (!(f > 0)) return r;
+  r.yielded = true;
+  r.dgamma = f / (2 * mu + 2.0 / 3.0 * p.hardening);
+  r.theta = 1 - r.dgamma / normE;
+  r.thetabar = 1 / (1 + p.hardening / (3 * mu)) - (1 - r.theta);
+  return r;
+}
+
+// (eps_A - eps_B) / (x_A - x_B) with eps = ln(x) / 2, continuous where x_B -> x_A (1 / 2 x_A).
+double logSlope(double xA, double xB) {
+  const double t = (xB - xA) / xA;
+  if (std::abs(t) < 1e-4) return (1 - t / 2 + t * t / 3) / (2 * xA);
+  return std::log1p(t) / (2 * t * xA);
+}
+
+Mat3 scaled(Mat3 a, double s) {
+  for (auto& row : a)
+    for (double& v : row) v *= s;
+  return a;
+}
+
+}  // namespace
+
+J2Plasticity::J2Plasticity(const J2Parameters& p, bool finiteStrain) : p_(p), finite_(finiteStrain) {
+  std::ostringstream msg;
+  if (!(p.youngsModulus > 0) || !(p.poissonsRatio > -1.0 && p.poissonsRatio < 0.5))
+    msg << "needs Young's modulus > 0 and Poisson's ratio in (-1, 0.5), got E = " << p.youngsModulus
+        << ", nu = " << p.poissonsRatio;
+  else if (!(p.yieldStress > 0))
+    msg << "needs a yield stress > 0, got " << p.yieldStress << " Pa";
+  else if (!(p.hardening >= 0) || !std::isfinite(p.hardening))
+    msg << "needs a hardening modulus >= 0, got " << p.hardening << " Pa";
+  if (!msg.str().empty()) throw std::invalid_argument("J2 plasticity material: " + msg.str());
+  mu_ = p.youngsModulus / (2 * (1 + p.poissonsRatio));
+  kappa_ = p.youngsModulus / (3 * (1 - 2 * p.poissonsRatio));
+}
+
+std::array<double, kJ2StateSize> J2Plasticity::initialState() const {
+  std::array<double, kJ2StateSize> s{};
+  if (finite_) s[0] = s[1] = s[2] = 1.0;  // C_p^-1 = I
+  return s;
+}
+
+void J2Plasticity::respond(const Mat3& F, const double* old, bool withTangent, J2Response& out) const {
+  if (finite_)
+    respondFinite(F, old, withTangent, out);
+  else
+    respondSmall(F, old, withTangent, out);
+}
+
+void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTangent, J2Response& out) const {
+  const Mat3 epsP = symmetricFromState(old);
+  Mat3 e{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) e[i][j] = 0.5 * (F[i][j] + F[j][i]) - (i == j ? 1.0 : 0.0) - epsP[i][j];
+  const double tr = trace(e);
+  for (int i = 0; i < 3; ++i) e[i][i] -= tr / 3;
+  const double normE = std::sqrt(contract(e, e));
+  const RadialReturn r = radialReturn(mu_, p_, normE, old[6]);
+  const Mat3 n = r.yielded ? scaled(e, 1 / normE) : Mat3{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out.P[i][j] = 2 * mu_ * r.theta * e[i][j] + (i == j ? kappa_ * tr : 0.0);
+  out.cauchy = out.P;
+  Mat3 epsPNew = epsP;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) epsPNew[i][j] += r.dgamma * n[i][j];
+  stateFromSymmetric(epsPNew, out.state.data());
+  const double alpha = old[6] + kSqrt23 * r.dgamma;
+  out.state[6] = alpha;
+  out.yielded = r.yielded;
+  out.energy = 0.5 * kappa_ * tr * tr + mu_ * r.theta * r.theta * normE * normE;
+  out.plasticWork = (p_.yieldStress + p_.hardening * alpha) * kSqrt23 * r.dgamma;
+  if (!withTangent) return;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) {
+          const double dd = (i == j) * (k == l);
+          const double sym = 0.5 * ((i == k) * (j == l) + (i == l) * (j == k));
+          out.A[3 * i + j][3 * k + l] =
+              kappa_ * dd + 2 * mu_ * r.theta * (sym - dd / 3) - 2 * mu_ * r.thetabar * n[i][j] * n[k][l];
+        }
+}
+
+void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTangent, J2Response& out) const {
+  const double J = determinant(F);
+  if (!(J > 0)) {
+    std::ostringstream msg;
+    msg << "J2 plasticity material: det F = " << J << " <= 0 (an inverted or collapsed point)";
+    throw std::domain_error(msg.str());
+  }
+  const Mat3 Fi = inverse(F, J);
+  const Mat3 FG = multiply(F, symmetricFromState(old));
+  Mat3 be = multiply(FG, transpose(F));
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j) be[i][j] = be[j][i] = 0.5 * (be[i][j] + be[j][i]);
+  const SymmetricEigen eig = symmetricEigen(be);
+  double x[3], eps[3], e[3], n[3] = {0, 0, 0};
+  for (int A = 0; A < 3; ++A) {
+    x[A] = eig.values[A];
+    if (!(x[A] > 0)) throw std::domain_error("J2 plasticity material: the elastic stretch is not positive");
+    eps[A] = 0.5 * std::log(x[A]);
+  }
+  const double tr = eps[0] + eps[1] + eps[2];
+  for (int A = 0; A < 3; ++A) e[A] = eps[A] - tr / 3;
+  const double normE = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+  const RadialReturn r = radialReturn(mu_, p_, normE, old[6]);
+  if (r.yielded)
+    for (int A = 0; A < 3; ++A) n[A] = e[A] / normE;
+  const Mat3& v = eig.vectors;
+  double tau[3];
+  Mat3 tauM{}, beNew{};
+  for (int A = 0; A < 3; ++A) {
+    tau[A] = kappa_ * tr + 2 * mu_ * r.theta * e[A];
+    const double xe = std::exp(2 * (eps[A] - r.dgamma * n[A]));
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        tauM[i][j] += tau[A] * v[i][A] * v[j][A];
+        beNew[i][j] += xe * v[i][A] * v[j][A];
+      }
+  }
+  out.P = multiply(tauM, transpose(Fi));
+  out.cauchy = scaled(tauM, 1 / J);
+  stateFromSymmetric(multiply(multiply(Fi, beNew), transpose(Fi)), out.state.data());
+  const double alpha = old[6] + kSqrt23 * r.dgamma;
+  out.state[6] = alpha;
+  out.yielded = r.yielded;
+  out.energy = 0.5 * kappa_ * tr * tr + mu_ * r.theta * r.theta * normE * normE;
+  out.plasticWork = (p_.yieldStress + p_.hardening * alpha) * kSqrt23 * r.dgamma;
+  if (!withTangent) return;
+  // D = d tau / d b_e^tr on the principal axes (header), then dP/dF by the chain
+  // d b_e^tr = dF G F^T + F G dF^T and P = tau F^-T.
+  double dtdx[3][3], c[3][3];
+  for (int A = 0; A < 3; ++A)
+    for (int B = 0; B < 3; ++B) {
+      const double dtde =
+          kappa_ + 2 * mu_ * r.theta * ((A == B) - 1.0 / 3.0) - 2 * mu_ * r.thetabar * n[A] * n[B];
+      dtdx[A][B] = dtde / (2 * x[B]);
+      c[A][B] = A == B ? 0.0 : 2 * mu_ * r.theta * logSlope(x[A], x[B]);
+    }
+  static thread_local double D[3][3][3][3], T[3][3][3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k)
+      for (int m = 0; m < 3; ++m)
+        for (int q = 0; q < 3; ++q) {
+          double d = 0.0;
+          for (int A = 0; A < 3; ++A)
+            for (int B = 0; B < 3; ++B) {
+              d += dtdx[A][B] * v[i][A] * v[k][A] * v[m][B] * v[q][B];
+              if (A != B)
+                d += 0.5 * c[A][B] * (v[i][A] * v[m][A] * v[q][B] * v[k][B] + v[i][A] * v[q][A] * v[m][B] * v[k][B]);
+            }
+          D[i][k][m][q] = d;
+        }
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k)
+      for (int m = 0; m < 3; ++m)
+        for (int N = 0; N < 3; ++N)
+          T[i][k][m][N] = 2 * (D[i][k][m][0] * FG[0][N] + D[i][k][m][1] * FG[1][N] + D[i][k][m][2] * FG[2][N]);
+  for (int i = 0; i < 3; ++i)
+    for (int Jc = 0; Jc < 3; ++Jc)
+      for (int m = 0; m < 3; ++m)
+        for (int N = 0; N < 3; ++N)
+          out.A[3 * i + Jc][3 * m + N] = T[i][0][m][N] * Fi[Jc][0] + T[i][1][m][N] * Fi[Jc][1] +
+                                         T[i][2][m][N] * Fi[Jc][2] - out.P[i][N] * Fi[Jc][m];
+}
+
+double vonMises(const Mat3& s) {
+  const double p = trace(s) / 3;
+  double q = 0.0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double d = s[i][j] - (i == j ? p : 0.0);
+      q += d * d;
+    }
+  return std::sqrt(1.5 * q);
+}
+
+}  // namespace choc

@@ -1,0 +1,78 @@
+// J2 (von Mises) plasticity with linear isotropic hardening: a pure function of the
+// deformation gradient F and the point's committed state, returning the first Piola-Kirchhoff
+// stress, its consistent (algorithmic) tangent dP/dF, the new state and the plastic work
+// (STYLE.md "Shape of nonlinear physics"). Yield: ||dev tau|| <= sqrt(2/3) (sigma_y + H alpha),
+// alpha the equivalent plastic strain; the flow is associative and isochoric, integrated by
+// backward Euler (the radial return: exact for proportional loading).
+//
+// Finite strain (Simo 1992; Simo and Hughes, Computational Inelasticity, ch. 9): the
+// multiplicative split F = F_e F_p with the elastic left Cauchy-Green tensor b_e and the
+// Hencky (logarithmic) elastic energy
+//     W = K/2 (tr eps_e)^2 + mu ||dev eps_e||^2,   eps_e = 1/2 ln b_e,   tau = dW/d eps_e,
+// tau the Kirchhoff stress. The trial state b_e^tr = F C_p^-1 F^T (C_p^-1 committed); in the
+// principal axes of b_e^tr the exponential map's return is the small-strain radial return
+// on the logarithmic strains, and the new C_p^-1 = F^-1 b_e F^-T. The state is C_p^-1 (6)
+// and alpha: 7 numbers, C_p^-1 = I at the start.
+//
+// Small strain: eps = sym(F - I) (F - I the displacement gradient), the additive split
+// eps = eps_e + eps_p, sigma = K tr(eps_e) I + 2 mu dev(eps_e), P = sigma; the state is eps_p (6)
+// and alpha.
+//
+// The tangent is the exact derivative of the return map (the consistent tangent), in closed
+// form: on the principal axes dtau_A/d eps_B = K + 2 mu theta (delta_AB - 1/3)
+// - 2 mu thetabar n_A n_B, theta = 1 - 2 mu dgamma / ||s_tr||, thetabar = 1 / (1 + H / 3 mu)
+// - (1 - theta) (0 when elastic), and the spin terms 2 mu theta (eps_A - eps_B) / (x_A - x_B)
+// between axes (x_A the eigenvalues of b_e^tr), whose limit for equal x is mu theta / x_A.
+#pragma once
+#include <array>
+#include <string>
+
+#include "materials/Tensor2.hpp"
+
+namespace choc {
+
+struct J2Parameters {
+  double youngsModulus = 0.0, poissonsRatio = 0.0;
+  double yieldStress = 0.0;  // sigma_y [Pa]
+  double hardening = 0.0;    // H = d sigma_y / d alpha [Pa]
+};
+
+constexpr int kJ2StateSize = 7;  // the plastic tensor (xx yy zz xy yz zx) and alpha
+
+struct J2Response {
+  Mat3 P{};                  // first Piola-Kirchhoff stress (small strain: sigma)
+  double A[9][9]{};          // dP_iJ / dF_kL at [3 i + J][3 k + L], when asked
+  Mat3 cauchy{};             // sigma = tau / det F (small strain: sigma)
+  double energy = 0.0;       // the stored elastic energy W per reference volume [J/m^3]
+  double plasticWork = 0.0;  // this increment's dissipation per reference volume, (sigma_y + H alpha) d alpha
+  bool yielded = false;
+  std::array<double, kJ2StateSize> state{};  // the state after the increment
+};
+
+class J2Plasticity {
+ public:
+  // Throws std::invalid_argument (naming the value) for E <= 0, nu outside (-1, 0.5),
+  // sigma_y <= 0 or H < 0.
+  J2Plasticity(const J2Parameters& p, bool finiteStrain);
+  bool finiteStrain() const { return finite_; }
+  const J2Parameters& parameters() const { return p_; }
+  double shearModulus() const { return mu_; }
+  double bulkModulus() const { return kappa_; }
+  // The state of a virgin point.
+  std::array<double, kJ2StateSize> initialState() const;
+  // The response at F from the committed state `old`. Throws std::domain_error for
+  // det F <= 0 in finite strain.
+  void respond(const Mat3& F, const double* old, bool withTangent, J2Response& out) const;
+
+ private:
+  void respondFinite(const Mat3& F, const double* old, bool withTangent, J2Response& out) const;
+  void respondSmall(const Mat3& F, const double* old, bool withTangent, J2Response& out) const;
+  J2Parameters p_;
+  bool finite_;
+  double mu_, kappa_;
+};
+
+// The von Mises equivalent stress sqrt(3/2) ||dev sigma||.
+double vonMises(const Mat3& sigma);
+
+}  // namespace choc
