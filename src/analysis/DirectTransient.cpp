@@ -327,13 +327,14 @@ std::shared_ptr<const FollowerPressure> DirectTransient::followerPressure(Model&
   const std::string key = path("Pressures/" + name);
   const ParameterList& q = params_.sublist("Pressures").sublist(name);
   const std::string side = q.get<std::string>("Side Set");
-  if (!model.finiteStrain())
+  if (model.firstFiniteStrainBlock().empty())
     throwInput(inputFile_, key + "/Follower", "true",
                "a follower pressure makes the model nonlinear and needs a block with Strain = finite",
                "set Strain = finite on the loaded block, or Follower = false (a dead load on the reference faces)");
   for (int e : model.mesh().findSideSet(side)->elements) {  // facesOf found the set
     const int b = model.mesh().locateElement(e).first;
-    if (!model.finiteStrainKernels()[size_t(b)])
+    const auto& kernel = model.finiteStrainKernels()[size_t(b)];
+    if (!kernel || !kernel->finiteKinematics())
       throwInput(inputFile_, key + "/Side Set", side,
                  "has faces of block '" + model.mesh().blocks[size_t(b)].name +
                      "', whose Strain is small: a follower pressure loads finite-strain blocks",

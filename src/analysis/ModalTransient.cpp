@@ -103,6 +103,11 @@ void ModalTransient::readTimeGrid() {
 }
 
 void ModalTransient::setup(SetupContext& ctx) {
+  if (const std::string plastic = ctx.model.firstPlasticBlock(); !plastic.empty())
+    throwInput(inputFile_, "Model/Blocks/" + plastic, "",
+               "a modal transient ('" + name_ + "') superposes the modes of the linear model; block '" + plastic +
+                   "' is plastic",
+               "use a direct 'Transient' analysis for plasticity, or a 'linear elastic' material");
   if (ctx.model.finiteStrain())
     throwInput(inputFile_, "Model/Blocks/" + ctx.model.firstFiniteStrainBlock() + "/Strain", "finite",
                "a modal transient ('" + name_ + "') superposes the modes of the linear model",

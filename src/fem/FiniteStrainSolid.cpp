@@ -44,44 +44,69 @@ double rowValue(Kinematics k, const GradientRow& r, const PointView& p, int a) {
   return p.dNdX[a * 3 + r.J];
 }
 
-// The state at one quadrature point: F, the material's response to C = F^T F, and P = F S.
+// The state at one quadrature point: F, the material's response (hyperelastic: to C = F^T F,
+// plastic: to F and the point's committed state) and P.
 struct PointState {
   Mat3 F;
-  StressResponse response;
+  StressResponse response;  // hyperelastic
+  J2Response plastic;       // J2 plasticity
   Mat3 P;
+  double energy;
 };
 
-void evaluatePoint(Kinematics k, const HyperelasticMaterial& m, SolidShape t, const Point3& xi, const PointView& p,
-                   const std::vector<double>& u, bool withTangent, PointState& s) {
-  s.F = identity3();
+Mat3 deformationGradient(Kinematics k, const PointView& p, const std::vector<double>& u) {
+  Mat3 F = identity3();
   const int nc = k == Kinematics::ThreeD ? 3 : 2;
   for (const GradientRow& r : gradientRows(k)) {
     double v = 0.0;
     for (int a = 0; a < p.nodes; ++a) v += rowValue(k, r, p, a) * u[size_t(a * nc + r.comp)];
-    s.F[r.i][r.J] += v;
+    F[r.i][r.J] += v;
   }
+  return F;
+}
+
+void evaluatePoint(Kinematics k, const SolidMaterial& m, SolidShape t, const Point3& xi, const PointView& p,
+                   const std::vector<double>& u, const double* old, bool withTangent, PointState& s) {
+  s.F = deformationGradient(k, p, u);
+  const bool finite = !m.plastic || m.plastic->finiteStrain();
   const double J = determinant(s.F);
-  if (!(J > 0)) {
+  if (finite && !(J > 0)) {
     std::ostringstream msg;
     msg << "inverted " << topologyName(t) << " element: det F = " << J << " <= 0 at natural point "
         << naturalPointText(t, xi);
     throw InvertedElement(msg.str());
   }
   try {
-    m.respond(transposeTimes(s.F), withTangent, s.response);
+    if (m.plastic) {
+      std::array<double, kJ2StateSize> virgin{};
+      if (!old) virgin = m.plastic->initialState(), old = virgin.data();
+      m.plastic->respond(s.F, old, withTangent, s.plastic);
+      s.P = s.plastic.P;
+      s.energy = s.plastic.energy;
+      return;
+    }
+    m.elastic->respond(transposeTimes(s.F), withTangent, s.response);
   } catch (const std::domain_error& e) {
     throw InvertedElement(std::string(topologyName(t)) + " element at natural point " + naturalPointText(t, xi) +
                           ": " + e.what());
   }
   s.P = multiply(s.F, s.response.S);
+  s.energy = s.response.energy;
 }
 
 // A_rs = dP_r / dF_s for the kinematics' rows: delta_ik S_JL + F_iI F_kK CC_IJKL, the
 // contraction in two passes (T_iJKL = F_iI CC_IJKL, then F_kK T_iJKL): 486 products instead of
 // 6,561.
-void firstElasticity(Kinematics k, const PointState& s, std::vector<double>& A) {
+void firstElasticity(Kinematics k, const PointState& s, bool plastic, std::vector<double>& A) {
   const auto& rows = gradientRows(k);
   const size_t nr = rows.size();
+  if (plastic) {  // the material gives dP/dF itself
+    A.assign(nr * nr, 0.0);
+    for (size_t r = 0; r < nr; ++r)
+      for (size_t q = 0; q < nr; ++q)
+        A[r * nr + q] = s.plastic.A[3 * rows[r].i + rows[r].J][3 * rows[q].i + rows[q].J];
+    return;
+  }
   const auto& C = s.response.tangent;
   double T[3][3][3][3];
   for (int i = 0; i < 3; ++i)
@@ -128,13 +153,30 @@ void addTangent(Kinematics k, const PointView& p, const std::vector<double>& A, 
 
 FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
                                      std::shared_ptr<const HyperelasticMaterial> material)
-    : shape_(solidTopology(topology)), kin_(kinematics), material_(std::move(material)) {
+    : shape_(solidTopology(topology)), kin_(kinematics), material_{std::move(material), nullptr} {
   checkSolidKinematics(shape_, kin_);
 }
 
+FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
+                                     std::shared_ptr<const J2Plasticity> material)
+    : shape_(solidTopology(topology)), kin_(kinematics), material_{nullptr, std::move(material)} {
+  checkSolidKinematics(shape_, kin_);
+}
+
+int FiniteStrainSolid::stateSize() const {
+  return plastic() ? kJ2StateSize * stiffnessRule(shape_, kin_).size() : 0;
+}
+
+void FiniteStrainSolid::initialState(double* state) const {
+  if (!plastic()) return;
+  const auto s0 = material_.plastic->initialState();
+  for (int q = 0; q < stiffnessRule(shape_, kin_).size(); ++q) std::copy(s0.begin(), s0.end(), state + kJ2StateSize * q);
+}
+
 double FiniteStrainSolid::modulus() const {
+  if (plastic()) return material_.plastic->bulkModulus() + 4.0 / 3.0 * material_.plastic->shearModulus();
   StressResponse r;
-  material_->respond(identity3(), true, r);
+  material_.elastic->respond(identity3(), true, r);
   return r.tangent[0][0][0][0];
 }
 
@@ -158,7 +200,7 @@ ElementGeometry FiniteStrainSolid::geometry(const std::vector<Point3>& X) const 
 }
 
 double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f,
-                                   DenseMatrix* K) const {
+                                   DenseMatrix* K, const double* old, double* next, double* plasticWork) const {
   const QuadratureRule& rule = stiffnessRule(shape_, kin_);
   const int nc = componentsPerNode(), n = g.nodes, nd = n * nc;
   f.assign(size_t(nd), 0.0);
@@ -169,37 +211,50 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
   for (int q = 0; q < g.points; ++q) {
     const double w = g.weight[size_t(q)];
     const PointView p = pointOf(g, q);
-    evaluatePoint(kin_, *material_, shape_, rule.points[size_t(q)], p, u, K != nullptr, s);
-    energy += w * s.response.energy;
+    evaluatePoint(kin_, material_, shape_, rule.points[size_t(q)], p, u, old ? old + kJ2StateSize * q : nullptr,
+                  K != nullptr, s);
+    energy += w * s.energy;
+    if (plastic()) {
+      if (next) std::copy(s.plastic.state.begin(), s.plastic.state.end(), next + kJ2StateSize * q);
+      if (plasticWork) *plasticWork += w * s.plastic.plasticWork;
+    }
     for (const GradientRow& r : gradientRows(kin_)) {
       const double wp = w * s.P[r.i][r.J];
       for (int a = 0; a < n; ++a) f[size_t(a * nc + r.comp)] += wp * rowValue(kin_, r, p, a);
     }
     if (!K) continue;
-    firstElasticity(kin_, s, A);
+    firstElasticity(kin_, s, plastic(), A);
     addTangent(kin_, p, A, w, *K);
   }
   return energy;
 }
 
 void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vector<double>& u,
-                                      std::array<double, 6>& sigma, double& energyDensity) const {
+                                      std::array<double, 6>& sigma, double& energyDensity, const double* old,
+                                      PlasticAverages* plastic) const {
   const QuadratureRule& rule = stiffnessRule(shape_, kin_);
   PointState s;
+  if (plastic) *plastic = PlasticAverages{};
   sigma.fill(0.0);
   energyDensity = 0.0;
   double volume = 0.0;
   for (int q = 0; q < g.points; ++q) {
     const double w = g.weight[size_t(q)];
-    evaluatePoint(kin_, *material_, shape_, rule.points[size_t(q)], pointOf(g, q), u, false, s);
-    const Mat3 c = cauchyStress(s.F, s.response.S);
+    evaluatePoint(kin_, material_, shape_, rule.points[size_t(q)], pointOf(g, q), u,
+                  old ? old + kJ2StateSize * q : nullptr, false, s);
+    const Mat3 c = this->plastic() ? s.plastic.cauchy : cauchyStress(s.F, s.response.S);
     const double v[6] = {c[0][0], c[1][1], c[2][2], c[0][1], c[1][2], c[2][0]};
     for (int i = 0; i < 6; ++i) sigma[size_t(i)] += w * v[i];
-    energyDensity += w * s.response.energy;
+    energyDensity += w * s.energy;
+    if (plastic && this->plastic()) {
+      plastic->vonMises += w * vonMises(c);
+      plastic->equivalentPlasticStrain += w * s.plastic.state[kJ2Alpha];
+    }
     volume += w;
   }
   for (double& v : sigma) v /= volume;
   energyDensity /= volume;
+  if (plastic) plastic->vonMises /= volume, plastic->equivalentPlasticStrain /= volume;
 }
 
 }  // namespace choc

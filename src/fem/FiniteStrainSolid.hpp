@@ -11,6 +11,12 @@
 // kernel (SolidElement.hpp). Plane strain: F_zz = 1, the in-plane F only. Axisymmetric
 // (x = R, y = Z): F_thetatheta = 1 + u_r / R, whose variation N_a / R adds to the radial
 // rows, integrals over the full ring. Element DOFs node-major like every kernel.
+//
+// With a J2 plasticity material (materials/J2Plasticity.hpp) the material gives P and dP/dF
+// from F and each quadrature point's committed state (kJ2StateSize numbers per point, in the
+// caller's arrays: old in, new out); in small strain (the material's finiteStrain() false) the
+// same integrals with P = sigma(sym(F - I)) and A = dsigma/deps are the small-strain plastic
+// element (no geometric stiffness, no det F check).
 #pragma once
 #include <array>
 #include <memory>
@@ -22,6 +28,7 @@
 #include "fem/Kinematics.hpp"
 #include "fem/ShapeFunctions.hpp"
 #include "materials/Hyperelastic.hpp"
+#include "materials/J2Plasticity.hpp"
 
 namespace choc {
 
@@ -43,15 +50,33 @@ struct ElementGeometry {
   std::vector<double> radius;  // [q], axisymmetric only
 };
 
+// A block's material: hyperelastic or plastic (one of the two).
+struct SolidMaterial {
+  std::shared_ptr<const HyperelasticMaterial> elastic;
+  std::shared_ptr<const J2Plasticity> plastic;
+};
+
+// Element averages of a plastic material's fields.
+struct PlasticAverages {
+  double vonMises = 0.0;                // of the Cauchy stress [Pa]
+  double equivalentPlasticStrain = 0.0;  // alpha [-]
+};
+
 class FiniteStrainSolid {
  public:
   // Throws std::invalid_argument for an unknown topology or one that does not fit the
   // kinematics.
   FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
                     std::shared_ptr<const HyperelasticMaterial> material);
+  FiniteStrainSolid(const std::string& topology, Kinematics kinematics, std::shared_ptr<const J2Plasticity> material);
   int numNodes() const { return nodeCount(shape_); }
   int componentsPerNode() const { return kin_ == Kinematics::ThreeD ? 3 : 2; }
-  const HyperelasticMaterial& material() const { return *material_; }
+  bool plastic() const { return material_.plastic != nullptr; }
+  // Finite-strain kinematics (every hyperelastic kernel; a plastic one with a finite-strain material).
+  bool finiteKinematics() const { return !plastic() || material_.plastic->finiteStrain(); }
+  // The numbers of state an element keeps (0 for a hyperelastic material), and their virgin values.
+  int stateSize() const;
+  void initialState(double* state) const;
   // The material's modulus at C = I, dS_11/dE_11 = lambda + 2 mu: the size of the stress's terms
   // per unit of strain.
   double modulus() const;
@@ -61,9 +86,11 @@ class FiniteStrainSolid {
   ElementGeometry geometry(const std::vector<Point3>& X) const;
   // f (resized to numNodes() * componentsPerNode()) at the nodal displacements u (same
   // order); K = df/du when K is not null. Returns the element's strain energy int W dV.
-  // Throws InvertedElement (det F <= 0).
-  double evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f,
-                  DenseMatrix* K) const;
+  // Throws InvertedElement (det F <= 0). A plastic material reads the committed state `old`
+  // (stateSize() numbers) and, when given, writes the new one to `next` and adds the
+  // increment's plastic work int (sigma_y + H alpha) d alpha dV to *plasticWork.
+  double evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f, DenseMatrix* K,
+                  const double* old = nullptr, double* next = nullptr, double* plasticWork = nullptr) const;
   double evaluate(const std::vector<Point3>& X, const std::vector<double>& u, std::vector<double>& f,
                   DenseMatrix* K) const {
     return evaluate(geometry(X), u, f, K);
@@ -71,8 +98,9 @@ class FiniteStrainSolid {
 
   // The Cauchy stress (xx, yy, zz, xy, yz, zx; for axisymmetric rr, zz, thetatheta, rz, 0, 0)
   // and the strain-energy density W, both averaged over the element's reference volume.
+  // A plastic material: from the state `old`, with its von Mises stress and alpha in *plastic.
   void averageStress(const ElementGeometry& g, const std::vector<double>& u, std::array<double, 6>& sigma,
-                     double& energyDensity) const;
+                     double& energyDensity, const double* old = nullptr, PlasticAverages* plastic = nullptr) const;
   void averageStress(const std::vector<Point3>& X, const std::vector<double>& u, std::array<double, 6>& sigma,
                      double& energyDensity) const {
     averageStress(geometry(X), u, sigma, energyDensity);
@@ -81,7 +109,7 @@ class FiniteStrainSolid {
  private:
   SolidShape shape_;
   Kinematics kin_;
-  std::shared_ptr<const HyperelasticMaterial> material_;
+  SolidMaterial material_;
 };
 
 }  // namespace choc

@@ -49,6 +49,21 @@ double logSlope(double xA, double xB) {
   return std::log1p(t) / (2 * t * xA);
 }
 
+// The increment's dissipated work (header) from the last accepted W, P, F in `old`, and the new
+// W, P, F into the state.
+void recordIncrement(const Mat3& F, const double* old, J2Response& out) {
+  double work = -(out.energy - old[kJ2Energy]);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const int k = 3 * i + j;
+      work += 0.5 * (old[kJ2Stress + k] + out.P[i][j]) * (F[i][j] - old[kJ2Deformation + k]);
+      out.state[size_t(kJ2Stress + k)] = out.P[i][j];
+      out.state[size_t(kJ2Deformation + k)] = F[i][j];
+    }
+  out.state[kJ2Energy] = out.energy;
+  out.plasticWork = work;
+}
+
 Mat3 scaled(Mat3 a, double s) {
   for (auto& row : a)
     for (double& v : row) v *= s;
@@ -74,6 +89,7 @@ J2Plasticity::J2Plasticity(const J2Parameters& p, bool finiteStrain) : p_(p), fi
 std::array<double, kJ2StateSize> J2Plasticity::initialState() const {
   std::array<double, kJ2StateSize> s{};
   if (finite_) s[0] = s[1] = s[2] = 1.0;  // C_p^-1 = I
+  s[kJ2Deformation] = s[kJ2Deformation + 4] = s[kJ2Deformation + 8] = 1.0;  // F = I
   return s;
 }
 
@@ -92,7 +108,7 @@ void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTange
   const double tr = trace(e);
   for (int i = 0; i < 3; ++i) e[i][i] -= tr / 3;
   const double normE = std::sqrt(contract(e, e));
-  const RadialReturn r = radialReturn(mu_, p_, normE, old[6]);
+  const RadialReturn r = radialReturn(mu_, p_, normE, old[kJ2Alpha]);
   const Mat3 n = r.yielded ? scaled(e, 1 / normE) : Mat3{};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) out.P[i][j] = 2 * mu_ * r.theta * e[i][j] + (i == j ? kappa_ * tr : 0.0);
@@ -101,11 +117,10 @@ void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTange
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) epsPNew[i][j] += r.dgamma * n[i][j];
   stateFromSymmetric(epsPNew, out.state.data());
-  const double alpha = old[6] + kSqrt23 * r.dgamma;
-  out.state[6] = alpha;
+  out.state[kJ2Alpha] = old[kJ2Alpha] + kSqrt23 * r.dgamma;
   out.yielded = r.yielded;
   out.energy = 0.5 * kappa_ * tr * tr + mu_ * r.theta * r.theta * normE * normE;
-  out.plasticWork = (p_.yieldStress + p_.hardening * alpha) * kSqrt23 * r.dgamma;
+  recordIncrement(F, old, out);
   if (!withTangent) return;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -140,7 +155,7 @@ void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTang
   const double tr = eps[0] + eps[1] + eps[2];
   for (int A = 0; A < 3; ++A) e[A] = eps[A] - tr / 3;
   const double normE = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-  const RadialReturn r = radialReturn(mu_, p_, normE, old[6]);
+  const RadialReturn r = radialReturn(mu_, p_, normE, old[kJ2Alpha]);
   if (r.yielded)
     for (int A = 0; A < 3; ++A) n[A] = e[A] / normE;
   const Mat3& v = eig.vectors;
@@ -158,11 +173,10 @@ void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTang
   out.P = multiply(tauM, transpose(Fi));
   out.cauchy = scaled(tauM, 1 / J);
   stateFromSymmetric(multiply(multiply(Fi, beNew), transpose(Fi)), out.state.data());
-  const double alpha = old[6] + kSqrt23 * r.dgamma;
-  out.state[6] = alpha;
+  out.state[kJ2Alpha] = old[kJ2Alpha] + kSqrt23 * r.dgamma;
   out.yielded = r.yielded;
   out.energy = 0.5 * kappa_ * tr * tr + mu_ * r.theta * r.theta * normE * normE;
-  out.plasticWork = (p_.yieldStress + p_.hardening * alpha) * kSqrt23 * r.dgamma;
+  recordIncrement(F, old, out);
   if (!withTangent) return;
   // D = d tau / d b_e^tr on the principal axes (header), then dP/dF by the chain
   // d b_e^tr = dF G F^T + F G dF^T and P = tau F^-T.

@@ -11,12 +11,12 @@
 //     W = K/2 (tr eps_e)^2 + mu ||dev eps_e||^2,   eps_e = 1/2 ln b_e,   tau = dW/d eps_e,
 // tau the Kirchhoff stress. The trial state b_e^tr = F C_p^-1 F^T (C_p^-1 committed); in the
 // principal axes of b_e^tr the exponential map's return is the small-strain radial return
-// on the logarithmic strains, and the new C_p^-1 = F^-1 b_e F^-T. The state is C_p^-1 (6)
-// and alpha: 7 numbers, C_p^-1 = I at the start.
+// on the logarithmic strains, and the new C_p^-1 = F^-1 b_e F^-T. The state holds C_p^-1 (I at
+// the start) and alpha.
 //
 // Small strain: eps = sym(F - I) (F - I the displacement gradient), the additive split
-// eps = eps_e + eps_p, sigma = K tr(eps_e) I + 2 mu dev(eps_e), P = sigma; the state is eps_p (6)
-// and alpha.
+// eps = eps_e + eps_p, sigma = K tr(eps_e) I + 2 mu dev(eps_e), P = sigma; the state holds
+// eps_p and alpha.
 //
 // The tangent is the exact derivative of the return map (the consistent tangent), in closed
 // form: on the principal axes dtau_A/d eps_B = K + 2 mu theta (delta_AB - 1/3)
@@ -37,14 +37,21 @@ struct J2Parameters {
   double hardening = 0.0;    // H = d sigma_y / d alpha [Pa]
 };
 
-constexpr int kJ2StateSize = 7;  // the plastic tensor (xx yy zz xy yz zx) and alpha
+// A point's state: the plastic tensor (C_p^-1 or eps_p: xx yy zz xy yz zx), alpha, and the
+// last accepted W, P and F (for the increment's dissipated work, below).
+constexpr int kJ2StateSize = 26;
+constexpr int kJ2Alpha = 6, kJ2Energy = 7, kJ2Stress = 8, kJ2Deformation = 17;
 
 struct J2Response {
   Mat3 P{};                  // first Piola-Kirchhoff stress (small strain: sigma)
   double A[9][9]{};          // dP_iJ / dF_kL at [3 i + J][3 k + L], when asked
   Mat3 cauchy{};             // sigma = tau / det F (small strain: sigma)
   double energy = 0.0;       // the stored elastic energy W per reference volume [J/m^3]
-  double plasticWork = 0.0;  // this increment's dissipation per reference volume, (sigma_y + H alpha) d alpha
+  // This increment's dissipated work per reference volume, by the trapezoidal rule the energy
+  // balance measures the external work with: 1/2 (P_n + P) : (F - F_n) - (W - W_n). In small
+  // strain it is 1/2 (sigma_n + sigma) : d eps_p >= 0 exactly (W is quadratic); in finite strain
+  // it adds, at an elastic point, the trapezoid's O(|dF|^3) error of the Hencky energy.
+  double plasticWork = 0.0;
   bool yielded = false;
   std::array<double, kJ2StateSize> state{};  // the state after the increment
 };

@@ -35,7 +35,7 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
     const auto [b, e] = mesh.locateElement(ge);
     if (!kernels[size_t(b)]) continue;
     const ElementBlock& blk = mesh.blocks[size_t(b)];
-    Element el{kernels[size_t(b)].get(), ge, b, false, {}, {}, {}, {}};
+    Element el{kernels[size_t(b)].get(), ge, b, false, {}, {}, {}, {}, {}, 0};
     std::vector<Point3> X;
     const int* conn = &blk.connectivity[size_t(e) * blk.nodesPerElement];
     const int nc = el.kernel->componentsPerNode();
@@ -69,8 +69,57 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
       for (int c = 0; c < nc; ++c) el.roundoff.push_back(floor * s);
     }
     for (int i = 0; i < M.rows(); ++i) el.lumpedMass.push_back(M(i, i));
+    el.state = committed_.size();
+    committed_.resize(committed_.size() + size_t(el.kernel->stateSize()));
+    el.kernel->initialState(committed_.data() + el.state);
     elements_.push_back(std::move(el));
   }
+  trial_ = committed_;
+  globalState_.assign(size_t(numElements_), size_t(-1));
+  for (int ge = 0; ge < numElements_; ++ge) {
+    const auto [b, e] = mesh.locateElement(ge);
+    const int n = kernels[size_t(b)] ? kernels[size_t(b)]->stateSize() : 0;
+    if (n == 0) continue;
+    plastic_ = true;
+    globalState_[size_t(ge)] = globalStateSize_;
+    globalStateSize_ += size_t(n);
+  }
+}
+
+void FiniteStrainForce::commit() {
+  if (!plastic_ || !trialValid_) return;
+  committed_ = trial_;
+  double work = 0.0;
+  Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_SUM, trialWork_, Teuchos::outArg(work));
+  plasticWork_ += work;
+  trialValid_ = false;
+}
+
+// Each element's committed state by its owner, summed over the ranks into one array in global
+// element order.
+void FiniteStrainForce::archive(StateArchive& a) const {
+  if (!plastic_) return;
+  std::vector<double> local(globalStateSize_, 0.0), global(globalStateSize_, 0.0);
+  for (const Element& e : elements_) {
+    if (!e.owner) continue;
+    const size_t n = size_t(e.kernel->stateSize());
+    std::copy_n(committed_.begin() + long(e.state), n, local.begin() + long(globalState_[size_t(e.number)]));
+  }
+  if (!local.empty())
+    Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(),
+                                    global.data());
+  a.putVector("internal/plasticState", global);
+  a.putDouble("internal/plasticWork", plasticWork_);
+}
+
+void FiniteStrainForce::unarchive(const StateArchive& a) {
+  if (!plastic_) return;
+  const std::vector<double> global = a.getVector<double>("internal/plasticState", globalStateSize_);
+  for (const Element& e : elements_)
+    std::copy_n(global.begin() + long(globalState_[size_t(e.number)]), size_t(e.kernel->stateSize()),
+                committed_.begin() + long(e.state));
+  plasticWork_ = a.getDouble("internal/plasticWork");
+  trialValid_ = false;
 }
 
 const Vector& FiniteStrainForce::onColumns(const Vector& u) const {
@@ -97,15 +146,18 @@ void FiniteStrainForce::gather(const Element& e, const Teuchos::ArrayRCP<const d
 }
 
 template <class Visit>
-std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTangent, Visit&& visit) const {
+std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTangent, Visit&& visit, bool trial) const {
   auto data = uCol.getData();
   std::vector<double> ue, fe;
   DenseMatrix Ke;
+  if (trial) trialWork_ = 0.0;
   for (const Element& e : elements_) {
     gather(e, data, ue);
-    double energy = 0.0;
+    double energy = 0.0, work = 0.0;
     try {
-      energy = e.kernel->evaluate(e.geometry, ue, fe, withTangent ? &Ke : nullptr);
+      energy = e.kernel->evaluate(e.geometry, ue, fe, withTangent ? &Ke : nullptr, committed_.data() + e.state,
+                                  trial ? trial_.data() + e.state : nullptr, &work);
+      if (trial && e.owner) trialWork_ += work;
     } catch (const InvertedElement& err) {
       return describe(e, err.what());
     }
@@ -135,7 +187,8 @@ void FiniteStrainForce::internalForce(const Vector& u, Vector& out) const {
     for (size_t k = 0; k < e.row.size(); ++k)
       if (e.row[k] >= 0) o[e.row[k]] += f[k];
     if (e.owner) energy += w;
-  });
+  }, true);
+  trialValid_ = failure.empty();
   throwIfFailed(failure);
   if (forceAt_.is_null()) forceAt_ = rcp(new Vector(u.getMap()));
   forceAt_->assign(u);
@@ -242,29 +295,34 @@ std::vector<std::string> FiniteStrainForce::elementFieldNames() const {
   std::vector<std::string> names = {"SIGMA_XX", "SIGMA_YY", "SIGMA_ZZ", "SIGMA_XY"};
   if (threeD_) names.insert(names.end(), {"SIGMA_YZ", "SIGMA_ZX"});
   names.push_back("STRAIN_ENERGY_DENSITY");
+  if (plastic_) names.insert(names.end(), {"VON_MISES", "EQ_PLASTIC_STRAIN"});
   return names;
 }
 
 void FiniteStrainForce::elementFields(const Vector& u, std::vector<std::vector<double>>& values) const {
   const int stresses = threeD_ ? 6 : 4;
-  values.assign(size_t(stresses + 1), std::vector<double>(size_t(numElements_), 0.0));
+  values.assign(size_t(stresses + 1 + (plastic_ ? 2 : 0)), std::vector<double>(size_t(numElements_), 0.0));
   const Vector& uc = onColumns(u);
   auto data = uc.getData();
   std::string failure;
   std::vector<double> ue;
   std::array<double, 6> sigma{};
   double w = 0.0;
+  PlasticAverages pa;
   for (const Element& e : elements_) {
     if (!e.owner) continue;
     gather(e, data, ue);
     try {
-      e.kernel->averageStress(e.geometry, ue, sigma, w);
+      e.kernel->averageStress(e.geometry, ue, sigma, w, committed_.data() + e.state, &pa);
     } catch (const InvertedElement& err) {
       failure = describe(e, err.what());
       break;
     }
     for (int c = 0; c < stresses; ++c) values[size_t(c)][size_t(e.number)] = sigma[size_t(c)];
     values[size_t(stresses)][size_t(e.number)] = w;
+    if (!plastic_) continue;
+    values[size_t(stresses + 1)][size_t(e.number)] = pa.vonMises;
+    values[size_t(stresses + 2)][size_t(e.number)] = pa.equivalentPlasticStrain;
   }
   throwIfFailed(failure);
 }

@@ -11,7 +11,14 @@
 // its nodes (the Assembler's elements) and sums their rows it owns in global element order.
 // Rayleigh damping's stiffness is the model's K at u = 0. An element that inverts (det F <= 0)
 // on any rank throws InadmissibleState on every rank, naming the element, its block and det F.
-// Hyperelastic blocks carry no history: commit, revert and the checkpoints have nothing to keep.
+// Hyperelastic blocks carry no history. Plastic blocks (J2 plasticity, small or finite strain)
+// keep kJ2StateSize numbers per quadrature point, in two copies: every evaluation starts from
+// the committed copy (the state at the last accepted step), and internalForce writes the
+// trial copy, the state at its u. commit() makes the trial of the LAST internalForce call the
+// committed state (the steppers call it right after the force at the accepted u), revert()
+// drops it. The plastic work of the committed increments is summed in dissipatedWork(); the
+// committed states and that work are in the checkpoint, stored by global element number, so a
+// run restarts on any number of ranks.
 // Follower pressures (FollowerPressure.hpp), loads that depend on the state, are carried here
 // too: f_int(u) - f_p(u, t) and K_T + K_p(u, t), at the time setTime last gave.
 #pragma once
@@ -48,12 +55,18 @@ class FiniteStrainForce : public InternalForce {
   double termsNorm(const Vector& u) const override;
   // max over the finite-strain elements of lambda_max(K_e(u), M_e), M_e the block's lumped mass.
   double stateEigenvalueBound(const Vector& u) const override;
+  double dissipatedWork() const override { return plasticWork_; }
+  void commit() override;
+  void revert() override { trialValid_ = false; }
+  void archive(StateArchive& a) const override;
+  void unarchive(const StateArchive& a) override;
 
   // The Cauchy stress averaged over each finite-strain element (FiniteStrainSolid::
   // averageStress) and its strain-energy density: SIGMA_XX, SIGMA_YY, SIGMA_ZZ, SIGMA_XY
   // (and SIGMA_YZ, SIGMA_ZX in 3D; axisymmetric: XX radial, YY axial, ZZ hoop, XY the rz
-  // shear), STRAIN_ENERGY_DENSITY; on the finite-strain blocks, each element by the rank
-  // owning its first node.
+  // shear), STRAIN_ENERGY_DENSITY (the stored elastic energy), and with plastic blocks
+  // VON_MISES and EQ_PLASTIC_STRAIN; on the nonlinear blocks, each element by the rank owning
+  // its first node.
   std::vector<std::string> elementFieldNames() const override;
   std::vector<char> elementFieldBlocks() const override { return finiteBlocks_; }
   void elementFields(const Vector& u, std::vector<std::vector<double>>& values) const override;
@@ -69,11 +82,14 @@ class FiniteStrainForce : public InternalForce {
     std::vector<LO> row;  // local row when this rank owns that DOF (-1: not owned or fixed)
     std::vector<double> lumpedMass;  // the element's lumped mass per DOF (reference configuration)
     std::vector<double> roundoff;    // per DOF: the round-off of its force (termsNorm)
+    size_t state = 0;                // its plastic state's offset in committed_ and trial_
   };
-  // Per element: the displacements from u on the column map, the force (and tangent when K).
-  // Returns this rank's first failure ("" if none); the callers make it collective.
+  // Per element: the displacements from u on the column map, the force (and tangent when K),
+  // from the committed state; with `trial`, the new states go to trial_ and the owners'
+  // plastic work to trialWork_. Returns this rank's first failure ("" if none); the callers
+  // make it collective.
   template <class Visit>
-  std::string forEachElement(const Vector& uCol, bool withTangent, Visit&& visit) const;
+  std::string forEachElement(const Vector& uCol, bool withTangent, Visit&& visit, bool trial = false) const;
   const Vector& onColumns(const Vector& u) const;
   // The element's displacements (element DOF order, 0 where fixed) from u on the column map.
   static void gather(const Element& e, const Teuchos::ArrayRCP<const double>& uCol, std::vector<double>& ue);
@@ -99,6 +115,15 @@ class FiniteStrainForce : public InternalForce {
   mutable RCP<Vector> forceAt_;
   mutable double forceAtEnergy_ = 0.0;
   bool sameState(const RCP<Vector>& at, const Vector& u) const;
+  // The plastic states: committed, and the trial of the last internal force (see above).
+  bool plastic_ = false;
+  std::vector<double> committed_;
+  mutable std::vector<double> trial_;
+  mutable bool trialValid_ = false;
+  mutable double trialWork_ = 0.0;  // the owners' plastic work of the trial increment (this rank)
+  double plasticWork_ = 0.0;        // the committed increments' plastic work, all ranks [J]
+  std::vector<size_t> globalState_;  // per global element: its state's offset in the archive (-1: none)
+  size_t globalStateSize_ = 0;
   mutable RCP<Vector> uCol_, tmp_;
 };
 

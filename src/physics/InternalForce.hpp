@@ -65,6 +65,8 @@ class InternalForce {
   virtual void elementFields(const Vector& /*u*/, std::vector<std::vector<double>>& /*values*/) const {}
   // Explicit runs stream the products of a symmetric model from half its entries.
   virtual void preferSymmetricProducts() {}
+  // The work dissipated inside the material since the start (plastic work) [J], all ranks.
+  virtual double dissipatedWork() const { return 0.0; }
   virtual void commit() {}
   virtual void revert() {}
   virtual void archive(StateArchive& /*a*/) const {}

@@ -37,14 +37,17 @@ class Model {
   const std::string& inputFile() const { return inputFile_; }
   RCP<const CrsMatrix> stiffness();  // assembled once, cached
   RCP<const CrsMatrix> mass();
-  // Per mesh block: the total Lagrangian kernel of a block whose 'Strain' is 'finite', else
-  // null. stiffness() is every block's small-strain stiffness all the same: the tangent at u = 0.
+  // Per mesh block: the element-by-element kernel of a block whose 'Strain' is 'finite' (total
+  // Lagrangian) or whose material is plastic (small or finite strain), else null. stiffness() is every block's small-strain stiffness all the same: the tangent at u = 0.
   const std::vector<std::shared_ptr<const FiniteStrainSolid>>& finiteStrainKernels() const { return finite_; }
   // The small-strain kernel of a block (its mass, its stiffness at u = 0); null without unknowns.
   const ElementKernel* elementKernel(int block) const { return kernels_[size_t(block)].get(); }
-  bool finiteStrain() const;  // some block has 'Strain' = 'finite'
+  // Some block is computed element by element: 'Strain' = 'finite', or a plastic material.
+  bool finiteStrain() const;
   // The first block with 'Strain' = 'finite' ("" when none), for messages.
   std::string firstFiniteStrainBlock() const;
+  // The first block with a plastic material ("" when none), for messages.
+  std::string firstPlasticBlock() const;
   // The small-strain blocks' stiffness and the springs, on stiffness()'s graph (the entries
   // finite-strain blocks alone give are zero).
   RCP<const CrsMatrix> smallStrainStiffness();

@@ -23,12 +23,22 @@ void declareMaterialParameters(ParameterList& model) {
   declareRequiredDouble(mat, "Young's Modulus", "E [Pa]", Range::positive());
   declareDouble(mat, "Poisson's Ratio", 0.0, "nu [-]", {-1.0, 0.5, true, true});
   declareRequiredDouble(mat, "Density", "rho [kg/m^3]", Range::positive());
-  declareChoice(mat, "Model", "linear elastic", {"linear elastic", "Saint Venant-Kirchhoff", "neo-Hookean"},
+  declareChoice(mat, "Model", "linear elastic",
+                {"linear elastic", "Saint Venant-Kirchhoff", "neo-Hookean", "J2 plasticity"},
                 "the material law: 'linear elastic' (small strain: blocks with 'Strain' = 'small'); "
                 "in finite strain ('Strain' = 'finite'), 'Saint Venant-Kirchhoff' (S = lambda tr(E) I "
                 "+ 2 mu E, E the Green-Lagrange strain: exact for large rotations, for moderate "
                 "strains) or compressible 'neo-Hookean' (W = mu/2 (I1 - 3) - mu ln J + lambda/2 "
-                "(ln J)^2); mu and lambda are the Lame constants of E and nu");
+                "(ln J)^2); mu and lambda are the Lame constants of E and nu. 'J2 plasticity' (von "
+                "Mises, linear isotropic hardening; direct transients) on either kinematics: additive "
+                "split in small strain, multiplicative with Hencky elasticity in finite strain");
+  declareDouble(mat, "Yield Stress", 0.0,
+                "'J2 plasticity': the initial yield stress sigma_y [Pa] (required, > 0, with that model)",
+                Range::nonNegative());
+  declareDouble(mat, "Hardening Modulus", 0.0,
+                "'J2 plasticity': the linear isotropic hardening H = d sigma_y / d alpha [Pa], alpha "
+                "the equivalent plastic strain (0: perfectly plastic)",
+                Range::nonNegative());
 }
 
 void declareSectionParameters(ParameterList& blk) {

@@ -14,27 +14,32 @@ std::shared_ptr<const FiniteStrainSolid> Model::strainKernel(const ElementBlock&
                                                              const std::string& materialName,
                                                              const Teuchos::ParameterList& mp) const {
   const std::string strain = bp.get<std::string>("Strain"), law = mp.get<std::string>("Model");
-  const std::string path = "Model/Blocks/" + blk.name;
-  const bool finite = strain == "finite", linearLaw = law == "linear elastic";
-  if (finite && blk.topology == "BEAM2")
-    throwInput(inputFile_, path + "/Strain", strain, "beams (BEAM2) are small-strain in choc",
-               "set 'Strain' = 'small' on block '" + blk.name + "'");
+  const std::string path = "Model/Blocks/" + blk.name, lawPath = "Model/Materials/" + materialName + "/Model";
+  const bool finite = strain == "finite", linearLaw = law == "linear elastic", plastic = law == "J2 plasticity";
+  if (blk.topology == "BEAM2" && (finite || plastic))
+    throwInput(inputFile_, finite ? path + "/Strain" : lawPath, finite ? strain : law,
+               "beams (BEAM2) are small-strain and linear elastic in choc",
+               finite ? "set 'Strain' = 'small' on block '" + blk.name + "'"
+                      : "give block '" + blk.name + "' a 'linear elastic' material");
   if (finite && linearLaw)
     throwInput(inputFile_, path + "/Strain", strain,
                "material '" + materialName + "' is 'linear elastic', a small-strain law",
-               "set 'Model/Materials/" + materialName +
-                   "/Model' = 'Saint Venant-Kirchhoff' (the same E and nu in finite strain) or 'neo-Hookean'");
-  if (!finite && !linearLaw)
-    throwInput(inputFile_, "Model/Materials/" + materialName + "/Model", law,
-               "a finite-strain law on block '" + blk.name + "', whose 'Strain' is 'small'",
-               "set '" + path + "/Strain' = 'finite', or the material's 'Model' = 'linear elastic'");
-  if (!finite) return nullptr;
+               "set '" + lawPath + "' = 'Saint Venant-Kirchhoff' (the same E and nu in finite strain), 'neo-Hookean' "
+               "or 'J2 plasticity'");
+  if (!finite && !linearLaw && !plastic)
+    throwInput(inputFile_, lawPath, law, "a finite-strain law on block '" + blk.name + "', whose 'Strain' is 'small'",
+               "set '" + path + "/Strain' = 'finite', or the material's 'Model' = 'linear elastic' or 'J2 plasticity'");
+  if (!finite && !plastic) return nullptr;
   try {
-    return std::make_shared<const FiniteStrainSolid>(
-        blk.topology, kinematics_,
-        makeHyperelastic(law, mp.get<double>("Young's Modulus"), mp.get<double>("Poisson's Ratio")));
+    const double E = mp.get<double>("Young's Modulus"), nu = mp.get<double>("Poisson's Ratio");
+    if (plastic)
+      return std::make_shared<const FiniteStrainSolid>(
+          blk.topology, kinematics_,
+          std::make_shared<const J2Plasticity>(
+              J2Parameters{E, nu, mp.get<double>("Yield Stress"), mp.get<double>("Hardening Modulus")}, finite));
+    return std::make_shared<const FiniteStrainSolid>(blk.topology, kinematics_, makeHyperelastic(law, E, nu));
   } catch (const std::invalid_argument& e) {
-    throwInput(inputFile_, path, "", e.what());
+    throwInput(inputFile_, plastic ? "Model/Materials/" + materialName : path, "", e.what());
   }
 }
 
@@ -44,7 +49,13 @@ bool Model::finiteStrain() const {
 
 std::string Model::firstFiniteStrainBlock() const {
   for (size_t b = 0; b < finite_.size(); ++b)
-    if (finite_[b]) return mesh_.blocks[b].name;
+    if (finite_[b] && finite_[b]->finiteKinematics()) return mesh_.blocks[b].name;
+  return "";
+}
+
+std::string Model::firstPlasticBlock() const {
+  for (size_t b = 0; b < finite_.size(); ++b)
+    if (finite_[b] && finite_[b]->plastic()) return mesh_.blocks[b].name;
   return "";
 }
 

@@ -38,3 +38,11 @@ choc_cli_script(thick_sphere 450)
 # against the elastica's closed forms): the tip converges at order >= 2 and the finest mesh is
 # within twice its Richardson estimate plus beam theory's 2 (h/L)^2 (scripts/elastica.py).
 choc_cli_script(elastica 400)
+
+# Plasticity: a thick-walled elastic-perfectly plastic sphere (J2, small strain) pressurized until
+# the plastic front reaches 0.8 of the wall, axisymmetric (QUAD8, 2 to 16 across) and 3D (TET10
+# octant, two sizes), against Hill's closed form of the outer radius' motion
+# (tools/oracles/plastic_sphere.py): the errors fall with the mesh, the finest is within twice its
+# Richardson estimate, the energy balance closes with the plastic work, 2 ranks equal 1
+# (scripts/plastic_sphere.py).
+choc_cli_script(plastic_sphere 300)
