@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "core/Errors.hpp"
+#include "core/Format.hpp"
 #include "core/Resources.hpp"
 #include "physics/Model.hpp"
 
@@ -16,20 +17,24 @@ std::shared_ptr<const FiniteStrainSolid> Model::strainKernel(const ElementBlock&
   const std::string strain = bp.get<std::string>("Strain"), law = mp.get<std::string>("Model");
   const std::string path = "Model/Blocks/" + blk.name, lawPath = "Model/Materials/" + materialName + "/Model";
   const bool finite = strain == "finite", linearLaw = law == "linear elastic", plastic = law == "J2 plasticity";
-  if (blk.topology == "BEAM2" && (finite || plastic))
-    throwInput(inputFile_, finite ? path + "/Strain" : lawPath, finite ? strain : law,
-               "beams (BEAM2) are small-strain and linear elastic in choc",
-               finite ? "set 'Strain' = 'small' on block '" + blk.name + "'"
-                      : "give block '" + blk.name + "' a 'linear elastic' material");
+  if (blk.topology == "BEAM2" && finite)
+    throwInput(inputFile_, path + "/Strain", strain, "beams (BEAM2) are small-strain in choc",
+               "set 'Strain' = 'small' on block '" + blk.name + "'");
+  if (blk.topology == "BEAM2" && plastic)
+    throwInput(inputFile_, lawPath, law, "beams (BEAM2) are linear elastic in choc (block '" + blk.name + "')",
+               "give the beams a 'linear elastic' material");
   if (finite && linearLaw)
     throwInput(inputFile_, path + "/Strain", strain,
                "material '" + materialName + "' is 'linear elastic', a small-strain law",
-               "set '" + lawPath + "' = 'Saint Venant-Kirchhoff' (the same E and nu in finite strain), 'neo-Hookean' "
-               "or 'J2 plasticity'");
+               "set '" + lawPath + "' = 'Saint Venant-Kirchhoff' (the same E and nu in finite strain) or 'neo-Hookean'");
   if (!finite && !linearLaw && !plastic)
     throwInput(inputFile_, lawPath, law, "a finite-strain law on block '" + blk.name + "', whose 'Strain' is 'small'",
-               "set '" + path + "/Strain' = 'finite', or the material's 'Model' = 'linear elastic' or 'J2 plasticity'");
+               "set '" + path + "/Strain' = 'finite', or the material's 'Model' = 'linear elastic'");
   if (!finite && !plastic) return nullptr;
+  if (plastic && !(mp.get<double>("Yield Stress") > 0))
+    throwInput(inputFile_, "Model/Materials/" + materialName + "/Yield Stress",
+               format("%g", mp.get<double>("Yield Stress")), "'J2 plasticity' needs the initial yield stress",
+               "give 'Yield Stress' > 0 [Pa]");
   try {
     const double E = mp.get<double>("Young's Modulus"), nu = mp.get<double>("Poisson's Ratio");
     if (plastic)

@@ -332,5 +332,11 @@ choc_cli_input_error(follower_cg check bad_follower_cg.xml
   "parameter 'Analyses/bend/Pressures/end/Follower' = 'true': the load stiffness of a follower pressure is not symmetric, which CG cannot solve. use 'Linear Solver/Method' = Direct, GMRES or auto with follower pressures")
 choc_cli_input_error(follower_small_block check bad_follower_small_block.xml
   "parameter 'Analyses/push/Pressures/face/Side Set' = 'CNT_POU2': has faces of block 'POU2', whose Strain is small: a follower pressure loads finite-strain blocks. set Strain = finite on that block, or Follower = false")
+choc_cli_input_error(plastic_no_yield check bad_plastic_no_yield.xml
+  "parameter 'Model/Materials/steel/Yield Stress' = '0': 'J2 plasticity' needs the initial yield stress. give 'Yield Stress' > 0 .Pa.")
+choc_cli_input_error(plastic_hardening check bad_plastic_hardening.xml
+  "parameter 'Model/Materials/steel/Hardening Modulus' = '-1e.09': out of range. valid: a number in .0, inf.")
+choc_cli_input_error(plastic_modal_transient check bad_plastic_modal.xml
+  "parameter 'Model/Blocks/BEAM': a modal transient .'bend'. superposes the modes of the linear model. block 'BEAM' is plastic. use a direct 'Transient' analysis for plasticity, or a 'linear elastic' material")
 choc_cli_input_error(momentum_modal check bad_momentum_modal.xml
   "parameter 'Analyses/reduced/History' = 'N1:PZ': a node set's momentum is recorded by the direct transient only. record it in a 'Transient' analysis, or record velocities here")
