@@ -9,6 +9,26 @@
 
 namespace choc {
 
+// One quadrature point of an ElementGeometry.
+struct PointView {
+  int nodes;
+  const double* dNdX;  // [a 3 + J]
+  const double* N;     // axisymmetric only
+  double R;
+};
+
+// The state at one quadrature point: F, the material's response (hyperelastic: to C = F^T F,
+// plastic: to F and the point's committed state) and P.
+struct PointState {
+  Mat3 F;                   // the material's F: F-bar's (J0 / J)^(1/3) F, else F
+  Mat3 Fstd;                // the point's own F = I + du/dX
+  double ratio = 1.0;       // (J0 / J)^(1/3) with F-bar, else 1
+  StressResponse response;  // hyperelastic
+  J2Response plastic;       // J2 plasticity
+  Mat3 P;
+  double energy;
+};
+
 namespace {
 
 // A component F_iJ that the kinematics lets vary, and the element component it varies with:
@@ -25,14 +45,6 @@ const std::vector<GradientRow>& gradientRows(Kinematics k) {
   return k == Kinematics::ThreeD ? threeD : (k == Kinematics::PlaneStrain ? plane : axi);
 }
 
-// One quadrature point of an ElementGeometry.
-struct PointView {
-  int nodes;
-  const double* dNdX;  // [a 3 + J]
-  const double* N;     // axisymmetric only
-  double R;
-};
-
 PointView pointOf(const ElementGeometry& g, int q) {
   const bool axi = !g.radius.empty();
   return {g.nodes, &g.dNdX[size_t(q) * g.nodes * 3], axi ? &g.N[size_t(q) * g.nodes] : nullptr,
@@ -43,16 +55,6 @@ double rowValue(Kinematics k, const GradientRow& r, const PointView& p, int a) {
   if (k == Kinematics::Axisymmetric && r.J == 2) return p.N[a] / p.R;
   return p.dNdX[a * 3 + r.J];
 }
-
-// The state at one quadrature point: F, the material's response (hyperelastic: to C = F^T F,
-// plastic: to F and the point's committed state) and P.
-struct PointState {
-  Mat3 F;
-  StressResponse response;  // hyperelastic
-  J2Response plastic;       // J2 plasticity
-  Mat3 P;
-  double energy;
-};
 
 Mat3 deformationGradient(Kinematics k, const PointView& p, const std::vector<double>& u) {
   Mat3 F = identity3();
@@ -65,9 +67,11 @@ Mat3 deformationGradient(Kinematics k, const PointView& p, const std::vector<dou
   return F;
 }
 
+// J0 > 0: F-bar, the material gets (J0 / J)^(1/3) F (J0 the element's mean dilatation).
 void evaluatePoint(Kinematics k, const SolidMaterial& m, SolidShape t, const Point3& xi, const PointView& p,
-                   const std::vector<double>& u, const double* old, bool withTangent, PointState& s) {
-  s.F = deformationGradient(k, p, u);
+                   const std::vector<double>& u, const double* old, bool withTangent, PointState& s,
+                   double J0 = 0.0) {
+  s.Fstd = s.F = deformationGradient(k, p, u);
   const bool finite = !m.plastic || m.plastic->finiteStrain();
   const double J = determinant(s.F);
   if (finite && !(J > 0)) {
@@ -75,6 +79,12 @@ void evaluatePoint(Kinematics k, const SolidMaterial& m, SolidShape t, const Poi
     msg << "inverted " << topologyName(t) << " element: det F = " << J << " <= 0 at natural point "
         << naturalPointText(t, xi);
     throw InvertedElement(msg.str());
+  }
+  s.ratio = 1.0;
+  if (J0 > 0) {
+    s.ratio = std::cbrt(J0 / J);
+    for (auto& row : s.F)
+      for (double& v : row) v *= s.ratio;
   }
   try {
     if (m.plastic) {
@@ -152,15 +162,24 @@ void addTangent(Kinematics k, const PointView& p, const std::vector<double>& A, 
 }  // namespace
 
 FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
-                                     std::shared_ptr<const HyperelasticMaterial> material)
-    : shape_(solidTopology(topology)), kin_(kinematics), material_{std::move(material), nullptr} {
+                                     std::shared_ptr<const HyperelasticMaterial> material, bool fbar)
+    : shape_(solidTopology(topology)), kin_(kinematics), material_{std::move(material), nullptr}, fbar_(fbar) {
   checkSolidKinematics(shape_, kin_);
+  checkFBar();
 }
 
 FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
-                                     std::shared_ptr<const J2Plasticity> material)
-    : shape_(solidTopology(topology)), kin_(kinematics), material_{nullptr, std::move(material)} {
+                                     std::shared_ptr<const J2Plasticity> material, bool fbar)
+    : shape_(solidTopology(topology)), kin_(kinematics), material_{nullptr, std::move(material)}, fbar_(fbar) {
   checkSolidKinematics(shape_, kin_);
+  checkFBar();
+}
+
+void FiniteStrainSolid::checkFBar() const {
+  if (!fbar_) return;
+  if (shape_ != SolidShape::Hex8 && shape_ != SolidShape::Quad4)
+    throw std::invalid_argument(std::string("F-bar is for HEX8 and QUAD4 elements, not ") + topologyName(shape_));
+  if (!finiteKinematics()) throw std::invalid_argument("F-bar needs finite-strain kinematics ('Strain' = 'finite')");
 }
 
 int FiniteStrainSolid::stateSize() const {
@@ -199,6 +218,47 @@ ElementGeometry FiniteStrainSolid::geometry(const std::vector<Point3>& X) const 
   return g;
 }
 
+// F-bar's mean dilatation: Jbar = int J dV / V, and dJbar/du_a / Jbar (header) into B.
+double FiniteStrainSolid::meanDilatation(const ElementGeometry& g, const std::vector<double>& u,
+                                         std::vector<double>& B) const {
+  if (!fbar_) return 0.0;
+  const int nc = componentsPerNode();
+  B.assign(size_t(g.nodes * nc), 0.0);
+  double V = 0.0, JV = 0.0;
+  for (int q = 0; q < g.points; ++q) {
+    const PointView p = pointOf(g, q);
+    const Mat3 F = deformationGradient(kin_, p, u);
+    const double J = determinant(F), w = g.weight[size_t(q)];
+    if (!(J > 0)) {
+      std::ostringstream msg;
+      msg << "inverted " << topologyName(shape_) << " element: det F = " << J << " <= 0 at a quadrature point";
+      throw InvertedElement(msg.str());
+    }
+    const Mat3 Fi = inverse(F, J);
+    V += w;
+    JV += w * J;
+    for (const GradientRow& r : gradientRows(kin_))
+      for (int a = 0; a < g.nodes; ++a) B[size_t(a * nc + r.comp)] += w * J * Fi[r.J][r.i] * rowValue(kin_, r, p, a);
+  }
+  for (double& v : B) v /= JV;
+  return JV / V;
+}
+
+// F-bar's force at one point: with Fbar = (Jbar / J)^(1/3) F and P = P(Fbar),
+//   f_a,i += w [ (Jbar / J)^(1/3) P_iJ g_a,iJ - (P : Fbar) / 3 F^-1_Ji g_a,iJ ] + w (P : Fbar) / 3 B_a,i,
+// the derivative of int W(Fbar) dV (d ln J = F^-T : dF; B = d ln Jbar / du).
+void FiniteStrainSolid::addFBarForce(const PointView& p, const PointState& s, const std::vector<double>& B, double w,
+                                     std::vector<double>& f) const {
+  const int nc = componentsPerNode();
+  const Mat3 Finv = inverse(s.Fstd, determinant(s.Fstd));
+  const double third = contract(s.P, s.F) / 3;
+  for (const GradientRow& r : gradientRows(kin_)) {
+    const double own = w * (s.ratio * s.P[r.i][r.J] - third * Finv[r.J][r.i]);
+    for (int a = 0; a < p.nodes; ++a) f[size_t(a * nc + r.comp)] += own * rowValue(kin_, r, p, a);
+  }
+  for (size_t k = 0; k < f.size(); ++k) f[k] += w * third * B[k];
+}
+
 double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f,
                                    DenseMatrix* K, const double* old, double* next, double* plasticWork) const {
   const QuadratureRule& rule = stiffnessRule(shape_, kin_);
@@ -208,19 +268,25 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
   PointState s;
   thread_local std::vector<double> A;
   double energy = 0.0;
+  thread_local std::vector<double> B;
+  const double J0 = meanDilatation(g, u, B);
   for (int q = 0; q < g.points; ++q) {
     const double w = g.weight[size_t(q)];
     const PointView p = pointOf(g, q);
     evaluatePoint(kin_, material_, shape_, rule.points[size_t(q)], p, u, old ? old + kJ2StateSize * q : nullptr,
-                  K != nullptr, s);
+                  K != nullptr, s, J0);
     energy += w * s.energy;
     if (plastic()) {
       if (next) std::copy(s.plastic.state.begin(), s.plastic.state.end(), next + kJ2StateSize * q);
       if (plasticWork) *plasticWork += w * s.plastic.plasticWork;
     }
-    for (const GradientRow& r : gradientRows(kin_)) {
-      const double wp = w * s.P[r.i][r.J];
-      for (int a = 0; a < n; ++a) f[size_t(a * nc + r.comp)] += wp * rowValue(kin_, r, p, a);
+    if (fbar_) {
+      addFBarForce(p, s, B, w, f);
+    } else {
+      for (const GradientRow& r : gradientRows(kin_)) {
+        const double wp = w * s.P[r.i][r.J];
+        for (int a = 0; a < n; ++a) f[size_t(a * nc + r.comp)] += wp * rowValue(kin_, r, p, a);
+      }
     }
     if (!K) continue;
     firstElasticity(kin_, s, plastic(), A);
@@ -234,6 +300,8 @@ void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vecto
                                       PlasticAverages* plastic) const {
   const QuadratureRule& rule = stiffnessRule(shape_, kin_);
   PointState s;
+  std::vector<double> B;
+  const double J0 = meanDilatation(g, u, B);
   if (plastic) *plastic = PlasticAverages{};
   sigma.fill(0.0);
   energyDensity = 0.0;
@@ -241,7 +309,7 @@ void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vecto
   for (int q = 0; q < g.points; ++q) {
     const double w = g.weight[size_t(q)];
     evaluatePoint(kin_, material_, shape_, rule.points[size_t(q)], pointOf(g, q), u,
-                  old ? old + kJ2StateSize * q : nullptr, false, s);
+                  old ? old + kJ2StateSize * q : nullptr, false, s, J0);
     const Mat3 c = this->plastic() ? s.plastic.cauchy : cauchyStress(s.F, s.response.S);
     const double v[6] = {c[0][0], c[1][1], c[2][2], c[0][1], c[1][2], c[2][0]};
     for (int i = 0; i < 6; ++i) sigma[size_t(i)] += w * v[i];

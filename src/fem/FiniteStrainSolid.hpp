@@ -17,6 +17,17 @@
 // caller's arrays: old in, new out); in small strain (the material's finiteStrain() false) the
 // same integrals with P = sigma(sym(F - I)) and A = dsigma/deps are the small-strain plastic
 // element (no geometric stiffness, no det F check).
+//
+// F-bar (de Souza Neto, Peric, Dutko and Owen 1996) in its mean-dilatation form, for HEX8 and
+// QUAD4 in finite strain: each point's material sees Fbar = (Jbar / J)^(1/3) F, Jbar = int J dV /
+// V the element's volume ratio (its current volume over its reference volume), so the volume
+// change is the element's mean alone and isochoric (plastic, nearly incompressible) flow does not
+// lock the bilinear elements; the force is the exact derivative of int W(Fbar) dV. The mean
+// (rather than det F at the centre) keeps the patch test on distorted and axisymmetric elements:
+// under a homogeneous F, Fbar = F and the force is the standard element's. Its
+// tangent is given as the standard element's at Fbar, which is not F-bar's consistent tangent:
+// it serves the explicit transients' critical-step estimate only, and F-bar is refused in the
+// implicit schemes.
 #pragma once
 #include <array>
 #include <memory>
@@ -50,6 +61,9 @@ struct ElementGeometry {
   std::vector<double> radius;  // [q], axisymmetric only
 };
 
+struct PointView;
+struct PointState;
+
 // A block's material: hyperelastic or plastic (one of the two).
 struct SolidMaterial {
   std::shared_ptr<const HyperelasticMaterial> elastic;
@@ -67,8 +81,10 @@ class FiniteStrainSolid {
   // Throws std::invalid_argument for an unknown topology or one that does not fit the
   // kinematics.
   FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
-                    std::shared_ptr<const HyperelasticMaterial> material);
-  FiniteStrainSolid(const std::string& topology, Kinematics kinematics, std::shared_ptr<const J2Plasticity> material);
+                    std::shared_ptr<const HyperelasticMaterial> material, bool fbar = false);
+  FiniteStrainSolid(const std::string& topology, Kinematics kinematics, std::shared_ptr<const J2Plasticity> material,
+                    bool fbar = false);
+  bool fbar() const { return fbar_; }
   int numNodes() const { return nodeCount(shape_); }
   int componentsPerNode() const { return kin_ == Kinematics::ThreeD ? 3 : 2; }
   bool plastic() const { return material_.plastic != nullptr; }
@@ -110,6 +126,12 @@ class FiniteStrainSolid {
   SolidShape shape_;
   Kinematics kin_;
   SolidMaterial material_;
+  bool fbar_ = false;
+  void checkFBar() const;
+  // F-bar: Jbar and B = d ln Jbar / du (element DOFs); 0 without F-bar. Throws InvertedElement.
+  double meanDilatation(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& B) const;
+  void addFBarForce(const PointView& p, const PointState& s, const std::vector<double>& B, double w,
+                    std::vector<double>& f) const;
 };
 
 }  // namespace choc

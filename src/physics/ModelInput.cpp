@@ -70,6 +70,11 @@ void declareBlockParameters(ParameterList& model) {
                 "Green-Lagrange strain, second Piola-Kirchhoff stress; a hyperelastic material; "
                 "direct transients only). Large rotations need 'finite': a small-strain body turned "
                 "through a large angle is stressed by the rotation itself. Beams are small-strain");
+  declareChoice(blk, "Formulation", "standard", {"standard", "F-bar"},
+                "the element formulation: 'standard' (full integration), or 'F-bar' for HEX8 and QUAD4 "
+                "blocks in finite strain (the volume change of each element taken at its centre, so "
+                "that plastic or nearly incompressible flow does not lock the bilinear elements; "
+                "central differences only)");
   declareSectionParameters(blk);
 }
 

@@ -30,6 +30,12 @@ std::shared_ptr<const FiniteStrainSolid> Model::strainKernel(const ElementBlock&
   if (!finite && !linearLaw && !plastic)
     throwInput(inputFile_, lawPath, law, "a finite-strain law on block '" + blk.name + "', whose 'Strain' is 'small'",
                "set '" + path + "/Strain' = 'finite', or the material's 'Model' = 'linear elastic'");
+  const bool fbar = bp.get<std::string>("Formulation") == "F-bar";
+  if (fbar && (!finite || (blk.topology != "HEX8" && blk.topology != "QUAD4")))
+    throwInput(inputFile_, path + "/Formulation", "F-bar",
+               "F-bar is for HEX8 and QUAD4 blocks in finite strain; block '" + blk.name + "' has " + blk.topology +
+                   " elements and 'Strain' = '" + strain + "'",
+               "set 'Formulation' = 'standard', or 'Strain' = 'finite' on a HEX8 or QUAD4 block");
   if (!finite && !plastic) return nullptr;
   if (plastic && !(mp.get<double>("Yield Stress") > 0))
     throwInput(inputFile_, "Model/Materials/" + materialName + "/Yield Stress",
@@ -41,8 +47,9 @@ std::shared_ptr<const FiniteStrainSolid> Model::strainKernel(const ElementBlock&
       return std::make_shared<const FiniteStrainSolid>(
           blk.topology, kinematics_,
           std::make_shared<const J2Plasticity>(
-              J2Parameters{E, nu, mp.get<double>("Yield Stress"), mp.get<double>("Hardening Modulus")}, finite));
-    return std::make_shared<const FiniteStrainSolid>(blk.topology, kinematics_, makeHyperelastic(law, E, nu));
+              J2Parameters{E, nu, mp.get<double>("Yield Stress"), mp.get<double>("Hardening Modulus")}, finite),
+          fbar);
+    return std::make_shared<const FiniteStrainSolid>(blk.topology, kinematics_, makeHyperelastic(law, E, nu), fbar);
   } catch (const std::invalid_argument& e) {
     throwInput(inputFile_, plastic ? "Model/Materials/" + materialName : path, "", e.what());
   }

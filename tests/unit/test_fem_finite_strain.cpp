@@ -182,3 +182,115 @@ INSTANTIATE_TEST_SUITE_P(Elements, FiniteStrain, ::testing::ValuesIn(test::allEl
 
 }  // namespace
 }  // namespace choc
+
+namespace choc {
+namespace {
+
+using test::ElementCase;
+
+std::vector<ElementCase> bilinearCases() {
+  std::vector<ElementCase> cases;
+  for (const ElementCase& c : test::allElementCases())
+    if (c.topology == "HEX8" || c.topology == "QUAD4") cases.push_back(c);
+  return cases;
+}
+
+class FBar : public ::testing::TestWithParam<ElementCase> {};
+
+// F-bar's force is the derivative of int W(Fbar) dV (the energy evaluate returns): central
+// differences of that energy, at a state that is not homogeneous (J varies over the element).
+TEST_P(FBar, ForceIsTheDerivativeOfTheElementEnergy) {
+  const ElementCase& c = GetParam();
+  std::vector<double> u = displacementOf(c, generalGradient(c.kinematics));
+  for (size_t j = 0; j < u.size(); ++j) u[j] += 0.02 * std::sin(1.7 * double(j) + 0.3);
+  const FiniteStrainSolid el(c.topology, c.kinematics, makeHyperelastic("neo-Hookean", kE, kNu), true);
+  auto W = [&](const std::vector<double>& x) {
+    std::vector<double> f;
+    return std::vector<double>{el.evaluate(c.x, x, f, nullptr)};
+  };
+  std::vector<double> f;
+  el.evaluate(c.x, u, f, nullptr);
+  test::Dense J(1, int(f.size()));
+  for (size_t k = 0; k < f.size(); ++k) J(0, int(k)) = f[k];
+  test::TangentCheckOptions o;
+  o.scale = 0.1;
+  EXPECT_TRUE(test::tangentMatches(W, J, u, o));
+  EXPECT_TRUE(test::tangentMismatches(W, test::perturbed(J), u, o));
+  // The standard element's force differs there: F-bar changes the element.
+  const FiniteStrainSolid standard(c.topology, c.kinematics, makeHyperelastic("neo-Hookean", kE, kNu));
+  std::vector<double> fs;
+  standard.evaluate(c.x, u, fs, nullptr);
+  double diff = 0.0, norm = 0.0;
+  for (size_t k = 0; k < f.size(); ++k) diff += std::pow(f[k] - fs[k], 2), norm += f[k] * f[k];
+  EXPECT_GT(std::sqrt(diff), 1e-3 * std::sqrt(norm));
+}
+
+// Under a homogeneous deformation J is the centre's everywhere: F-bar is the standard element.
+TEST_P(FBar, HomogeneousDeformationIsTheStandardElements) {
+  const ElementCase& c = GetParam();
+  const std::vector<double> u = displacementOf(c, generalGradient(c.kinematics));
+  const auto m = makeHyperelastic("neo-Hookean", kE, kNu);
+  std::vector<double> f, fs;
+  FiniteStrainSolid(c.topology, c.kinematics, m, true).evaluate(c.x, u, f, nullptr);
+  FiniteStrainSolid(c.topology, c.kinematics, m).evaluate(c.x, u, fs, nullptr);
+  double scale = 0.0;
+  for (double v : fs) scale = std::max(scale, std::abs(v));
+  for (size_t k = 0; k < f.size(); ++k) EXPECT_NEAR(f[k], fs[k], 1e-12 * scale);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bilinear, FBar, ::testing::ValuesIn(bilinearCases()),
+                         [](const auto& info) { return info.param.label; });
+
+TEST(FBarRefused, OnOtherElementsAndInSmallStrain) {
+  const auto m = makeHyperelastic("neo-Hookean", kE, kNu);
+  EXPECT_THROW(FiniteStrainSolid("TET10", Kinematics::ThreeD, m, true), std::invalid_argument);
+  EXPECT_THROW(FiniteStrainSolid("QUAD8", Kinematics::PlaneStrain, m, true), std::invalid_argument);
+  const auto small = std::make_shared<const J2Plasticity>(J2Parameters{kE, kNu, 1.0, 0.0}, false);
+  EXPECT_THROW(FiniteStrainSolid("HEX8", Kinematics::ThreeD, small, true), std::invalid_argument);
+}
+
+// The plastic element (J2, small and finite strain) on every element type: its tangent against
+// central differences of its force, from a yielded committed state (the points' states after a
+// first deformation), in the plastic branch.
+class PlasticElement : public ::testing::TestWithParam<ElementCase> {};
+
+TEST_P(PlasticElement, TangentMatchesCentralDifferencesOfTheInternalForce) {
+  const ElementCase& c = GetParam();
+  for (bool finite : {false, true}) {
+    // sigma_y = E / 200: the state below strains the element by several times its yield strain
+    const auto m = std::make_shared<const J2Plasticity>(J2Parameters{kE, kNu, kE / 200, kE / 20}, finite);
+    const FiniteStrainSolid el(c.topology, c.kinematics, m);
+    Mat3 F1 = identity3();
+    F1[0][0] = 1.02, F1[1][1] = 0.99;
+    if (c.kinematics != Kinematics::Axisymmetric) F1[0][1] = 0.015;
+    std::vector<double> old(size_t(el.stateSize())), committed(size_t(el.stateSize()));
+    el.initialState(old.data());
+    std::vector<double> f;
+    double work = 0.0;
+    el.evaluate(el.geometry(c.x), displacementOf(c, F1), f, nullptr, old.data(), committed.data(), &work);
+    ASSERT_GT(work, 0.0) << "the first deformation must yield";
+    std::vector<double> u = displacementOf(c, generalGradient(c.kinematics));
+    for (size_t j = 0; j < u.size(); ++j) u[j] = 0.1 * u[j] + 0.003 * std::sin(1.7 * double(j) + 0.3);
+    const ElementGeometry g = el.geometry(c.x);
+    auto R = [&](const std::vector<double>& x) {
+      std::vector<double> r;
+      el.evaluate(g, x, r, nullptr, committed.data());
+      return r;
+    };
+    DenseMatrix K;
+    el.evaluate(g, u, f, &K, committed.data());
+    test::Dense J(K.rows(), K.cols());
+    for (int i = 0; i < K.rows(); ++i)
+      for (int j = 0; j < K.cols(); ++j) J(i, j) = K(i, j);
+    test::TangentCheckOptions o;
+    o.scale = 1e-3;  // the strain over which the plastic response varies (yield strain 5e-3)
+    EXPECT_TRUE(test::tangentMatches(R, J, u, o)) << (finite ? "finite" : "small");
+    EXPECT_TRUE(test::tangentMismatches(R, test::perturbed(J), u, o)) << (finite ? "finite" : "small");
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Elements, PlasticElement, ::testing::ValuesIn(test::allElementCases()),
+                         [](const auto& info) { return info.param.label; });
+
+}  // namespace
+}  // namespace choc
