@@ -70,7 +70,7 @@ Mat3 deformationGradient(Kinematics k, const PointView& p, const std::vector<dou
 // J0 > 0: F-bar, the material gets (J0 / J)^(1/3) F (J0 the element's mean dilatation).
 void evaluatePoint(Kinematics k, const SolidMaterial& m, SolidShape t, const Point3& xi, const PointView& p,
                    const std::vector<double>& u, const double* old, bool withTangent, PointState& s,
-                   double J0 = 0.0) {
+                   double J0 = 0.0, bool elasticTangent = false) {
   s.Fstd = s.F = deformationGradient(k, p, u);
   const bool finite = !m.plastic || m.plastic->finiteStrain();
   const double J = determinant(s.F);
@@ -90,7 +90,7 @@ void evaluatePoint(Kinematics k, const SolidMaterial& m, SolidShape t, const Poi
     if (m.plastic) {
       std::array<double, kJ2StateSize> virgin{};
       if (!old) virgin = m.plastic->initialState(), old = virgin.data();
-      m.plastic->respond(s.F, old, withTangent, s.plastic);
+      m.plastic->respond(s.F, old, withTangent, s.plastic, elasticTangent);
       s.P = s.plastic.P;
       s.energy = s.plastic.energy;
       return;
@@ -260,7 +260,8 @@ void FiniteStrainSolid::addFBarForce(const PointView& p, const PointState& s, co
 }
 
 double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f,
-                                   DenseMatrix* K, const double* old, double* next, double* plasticWork) const {
+                                   DenseMatrix* K, const double* old, double* next, double* plasticWork,
+                                   bool elasticTangent) const {
   const QuadratureRule& rule = stiffnessRule(shape_, kin_);
   const int nc = componentsPerNode(), n = g.nodes, nd = n * nc;
   f.assign(size_t(nd), 0.0);
@@ -274,7 +275,7 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
     const double w = g.weight[size_t(q)];
     const PointView p = pointOf(g, q);
     evaluatePoint(kin_, material_, shape_, rule.points[size_t(q)], p, u, old ? old + kJ2StateSize * q : nullptr,
-                  K != nullptr, s, J0);
+                  K != nullptr, s, J0, elasticTangent);
     energy += w * s.energy;
     if (plastic()) {
       if (next) std::copy(s.plastic.state.begin(), s.plastic.state.end(), next + kJ2StateSize * q);

@@ -104,9 +104,11 @@ class FiniteStrainSolid {
   // order); K = df/du when K is not null. Returns the element's strain energy int W dV.
   // Throws InvertedElement (det F <= 0). A plastic material reads the committed state `old`
   // (stateSize() numbers) and, when given, writes the new one to `next` and adds the
-  // increment's plastic work int (sigma_y + H alpha) d alpha dV to *plasticWork.
+  // increment's dissipated work (J2Response::plasticWork) times dV to *plasticWork. With
+  // `elasticTangent`, K takes a plastic material's elastic tangent (the explicit critical step).
   double evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f, DenseMatrix* K,
-                  const double* old = nullptr, double* next = nullptr, double* plasticWork = nullptr) const;
+                  const double* old = nullptr, double* next = nullptr, double* plasticWork = nullptr,
+                  bool elasticTangent = false) const;
   double evaluate(const std::vector<Point3>& X, const std::vector<double>& u, std::vector<double>& f,
                   DenseMatrix* K) const {
     return evaluate(geometry(X), u, f, K);

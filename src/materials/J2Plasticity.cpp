@@ -93,14 +93,16 @@ std::array<double, kJ2StateSize> J2Plasticity::initialState() const {
   return s;
 }
 
-void J2Plasticity::respond(const Mat3& F, const double* old, bool withTangent, J2Response& out) const {
+void J2Plasticity::respond(const Mat3& F, const double* old, bool withTangent, J2Response& out,
+                          bool elasticTangent) const {
   if (finite_)
-    respondFinite(F, old, withTangent, out);
+    respondFinite(F, old, withTangent, elasticTangent, out);
   else
-    respondSmall(F, old, withTangent, out);
+    respondSmall(F, old, withTangent, elasticTangent, out);
 }
 
-void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTangent, J2Response& out) const {
+void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic,
+                               J2Response& out) const {
   const Mat3 epsP = symmetricFromState(old);
   Mat3 e{};
   for (int i = 0; i < 3; ++i)
@@ -122,6 +124,7 @@ void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTange
   out.energy = 0.5 * kappa_ * tr * tr + mu_ * r.theta * r.theta * normE * normE;
   recordIncrement(F, old, out);
   if (!withTangent) return;
+  const double theta = elastic ? 1.0 : r.theta, thetabar = elastic ? 0.0 : r.thetabar;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k)
@@ -129,11 +132,12 @@ void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTange
           const double dd = (i == j) * (k == l);
           const double sym = 0.5 * ((i == k) * (j == l) + (i == l) * (j == k));
           out.A[3 * i + j][3 * k + l] =
-              kappa_ * dd + 2 * mu_ * r.theta * (sym - dd / 3) - 2 * mu_ * r.thetabar * n[i][j] * n[k][l];
+              kappa_ * dd + 2 * mu_ * theta * (sym - dd / 3) - 2 * mu_ * thetabar * n[i][j] * n[k][l];
         }
 }
 
-void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTangent, J2Response& out) const {
+void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTangent, bool elastic,
+                                J2Response& out) const {
   const double J = determinant(F);
   if (!(J > 0)) {
     std::ostringstream msg;
@@ -181,12 +185,12 @@ void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTang
   // D = d tau / d b_e^tr on the principal axes (header), then dP/dF by the chain
   // d b_e^tr = dF G F^T + F G dF^T and P = tau F^-T.
   double dtdx[3][3], c[3][3];
+  const double theta = elastic ? 1.0 : r.theta, thetabar = elastic ? 0.0 : r.thetabar;
   for (int A = 0; A < 3; ++A)
     for (int B = 0; B < 3; ++B) {
-      const double dtde =
-          kappa_ + 2 * mu_ * r.theta * ((A == B) - 1.0 / 3.0) - 2 * mu_ * r.thetabar * n[A] * n[B];
+      const double dtde = kappa_ + 2 * mu_ * theta * ((A == B) - 1.0 / 3.0) - 2 * mu_ * thetabar * n[A] * n[B];
       dtdx[A][B] = dtde / (2 * x[B]);
-      c[A][B] = A == B ? 0.0 : 2 * mu_ * r.theta * logSlope(x[A], x[B]);
+      c[A][B] = A == B ? 0.0 : 2 * mu_ * theta * logSlope(x[A], x[B]);
     }
   static thread_local double D[3][3][3][3], T[3][3][3][3];
   for (int i = 0; i < 3; ++i)

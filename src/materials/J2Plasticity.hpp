@@ -68,12 +68,15 @@ class J2Plasticity {
   // The state of a virgin point.
   std::array<double, kJ2StateSize> initialState() const;
   // The response at F from the committed state `old`. Throws std::domain_error for
-  // det F <= 0 in finite strain.
-  void respond(const Mat3& F, const double* old, bool withTangent, J2Response& out) const;
+  // det F <= 0 in finite strain. With `elasticTangent`, A is the elastic tangent at the trial
+  // state (theta = 1, thetabar = 0): the stiffness of a point that unloads, the largest it can
+  // show, for the explicit critical step (the consistent tangent of a yielding point is softer).
+  void respond(const Mat3& F, const double* old, bool withTangent, J2Response& out,
+               bool elasticTangent = false) const;
 
  private:
-  void respondFinite(const Mat3& F, const double* old, bool withTangent, J2Response& out) const;
-  void respondSmall(const Mat3& F, const double* old, bool withTangent, J2Response& out) const;
+  void respondFinite(const Mat3& F, const double* old, bool withTangent, bool elastic, J2Response& out) const;
+  void respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic, J2Response& out) const;
   J2Parameters p_;
   bool finite_;
   double mu_, kappa_;

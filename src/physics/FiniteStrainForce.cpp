@@ -146,7 +146,8 @@ void FiniteStrainForce::gather(const Element& e, const Teuchos::ArrayRCP<const d
 }
 
 template <class Visit>
-std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTangent, Visit&& visit, bool trial) const {
+std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTangent, Visit&& visit, bool trial,
+                                              bool elasticTangent) const {
   auto data = uCol.getData();
   std::vector<double> ue, fe;
   DenseMatrix Ke;
@@ -156,7 +157,7 @@ std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTange
     double energy = 0.0, work = 0.0;
     try {
       energy = e.kernel->evaluate(e.geometry, ue, fe, withTangent ? &Ke : nullptr, committed_.data() + e.state,
-                                  trial ? trial_.data() + e.state : nullptr, &work);
+                                  trial ? trial_.data() + e.state : nullptr, &work, elasticTangent);
       if (trial && e.owner) trialWork_ += work;
     } catch (const InvertedElement& err) {
       return describe(e, err.what());
@@ -284,7 +285,7 @@ double FiniteStrainForce::stateEigenvalueBound(const Vector& u) const {
     active.assign(size_t(n), 0);
     for (int i = 0; i < n; ++i) M(i, i) = e.lumpedMass[size_t(i)], active[size_t(i)] = e.col[size_t(i)] >= 0;
     local = std::max(local, elementEigenvalue(K, M, active));
-  });
+  }, false, true);
   throwIfFailed(failure);
   double global = 0.0;
   Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_MAX, local, Teuchos::outArg(global));

@@ -53,7 +53,8 @@ class FiniteStrainForce : public InternalForce {
   // || |K_lin| |u| + sum_e (|f_e| + its round-off) || (see the constructor: E = (C - I) / 2
   // errs by eps whatever u).
   double termsNorm(const Vector& u) const override;
-  // max over the finite-strain elements of lambda_max(K_e(u), M_e), M_e the block's lumped mass.
+  // max over the finite-strain elements of lambda_max(K_e(u), M_e), M_e the block's lumped mass;
+  // plastic points with their elastic tangent (an unloading point is the stiffest).
   double stateEigenvalueBound(const Vector& u) const override;
   double dissipatedWork() const override { return plasticWork_; }
   void commit() override;
@@ -89,7 +90,8 @@ class FiniteStrainForce : public InternalForce {
   // plastic work to trialWork_. Returns this rank's first failure ("" if none); the callers
   // make it collective.
   template <class Visit>
-  std::string forEachElement(const Vector& uCol, bool withTangent, Visit&& visit, bool trial = false) const;
+  std::string forEachElement(const Vector& uCol, bool withTangent, Visit&& visit, bool trial = false,
+                             bool elasticTangent = false) const;
   const Vector& onColumns(const Vector& u) const;
   // The element's displacements (element DOF order, 0 where fixed) from u on the column map.
   static void gather(const Element& e, const Teuchos::ArrayRCP<const double>& uCol, std::vector<double>& ue);

@@ -302,3 +302,38 @@ TEST(J2Plasticity, FiniteStrainTangentIsSymmetric) {
 
 }  // namespace
 }  // namespace choc
+
+namespace choc {
+namespace {
+
+// The elastic tangent of a yielding point (the explicit critical step's stiffness): in small
+// strain the elasticity tensor itself; in finite strain at least as stiff as the consistent
+// tangent along every direction tried (dP : A : dP for the unit directions of F).
+TEST(J2Plasticity, ElasticTangentOfAYieldingPoint) {
+  const J2Plasticity small = material(false);
+  J2Response r;
+  small.respond(kGeneral, small.initialState().data(), true, r, true);
+  ASSERT_TRUE(r.yielded);
+  const double K = small.bulkModulus(), mu = small.shearModulus();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) {
+          const double dd = (i == j) * (k == l), sym = 0.5 * ((i == k) * (j == l) + (i == l) * (j == k));
+          EXPECT_NEAR(r.A[3 * i + j][3 * k + l], K * dd + 2 * mu * (sym - dd / 3), 1e-9 * kE);
+        }
+  const J2Plasticity finite = material(true);
+  J2Response consistent, elastic;
+  finite.respond(kLarge, finite.initialState().data(), true, consistent);
+  finite.respond(kLarge, finite.initialState().data(), true, elastic, true);
+  ASSERT_TRUE(consistent.yielded);
+  bool stiffer = false;
+  for (int a = 0; a < 9; ++a) {
+    EXPECT_GE(elastic.A[a][a], consistent.A[a][a] * (1 - 1e-12)) << "direction " << a;
+    stiffer = stiffer || elastic.A[a][a] > consistent.A[a][a] * (1 + 1e-3);
+  }
+  EXPECT_TRUE(stiffer);
+}
+
+}  // namespace
+}  // namespace choc
