@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
+.PHONY: all deps configure build run test study study-plastic bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
 
 all: build
 
@@ -112,6 +112,12 @@ study: build
 	$(PYTHON) tools/study/hertz_3d_study.py --build $(BUILD) --out results/study/hertz-3d
 	$(PYTHON) tools/study/explicit_implicit_study.py --build $(BUILD) --out results/study/explicit-implicit
 	$(PYTHON) tools/study/small_vs_finite_study.py --build $(BUILD) --out results/study/small-vs-finite
+	$(PYTHON) tools/study/taylor_bar_study.py --build $(BUILD) --out results/study/taylor-bar
+
+# The Taylor bar's mesh convergence, QUAD4 F-bar against standard QUAD4 and QUAD8
+# (docs/verification/taylor-bar.md; about 15 minutes).
+study-plastic: build
+	$(PYTHON) tools/study/taylor_bar_study.py --build $(BUILD) --out results/study/taylor-bar
 
 # Small against finite strain: the rubber ball at rising speeds (docs/verification/rubber-ball.md).
 study-finite: build
