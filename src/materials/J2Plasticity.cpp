@@ -101,6 +101,16 @@ void J2Plasticity::respond(const Mat3& F, const double* old, bool withTangent, J
     respondSmall(F, old, withTangent, elasticTangent, out);
 }
 
+// What both kinematics end a point with: alpha, the stored energy K/2 (tr eps)^2 + mu ||theta e||^2
+// (dev eps_e = theta e), and the increment's work.
+void J2Plasticity::finishPoint(const Mat3& F, const double* old, double dgamma, double theta, bool yielded,
+                               double tr, double normE, J2Response& out) const {
+  out.state[kJ2Alpha] = old[kJ2Alpha] + kSqrt23 * dgamma;
+  out.yielded = yielded;
+  out.energy = 0.5 * kappa_ * tr * tr + mu_ * theta * theta * normE * normE;
+  recordIncrement(F, old, out);
+}
+
 void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic,
                                J2Response& out) const {
   const Mat3 epsP = symmetricFromState(old);
@@ -119,10 +129,7 @@ void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTange
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) epsPNew[i][j] += r.dgamma * n[i][j];
   stateFromSymmetric(epsPNew, out.state.data());
-  out.state[kJ2Alpha] = old[kJ2Alpha] + kSqrt23 * r.dgamma;
-  out.yielded = r.yielded;
-  out.energy = 0.5 * kappa_ * tr * tr + mu_ * r.theta * r.theta * normE * normE;
-  recordIncrement(F, old, out);
+  finishPoint(F, old, r.dgamma, r.theta, r.yielded, tr, normE, out);
   if (!withTangent) return;
   const double theta = elastic ? 1.0 : r.theta, thetabar = elastic ? 0.0 : r.thetabar;
   for (int i = 0; i < 3; ++i)
@@ -177,15 +184,18 @@ void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTang
   out.P = multiply(tauM, transpose(Fi));
   out.cauchy = scaled(tauM, 1 / J);
   stateFromSymmetric(multiply(multiply(Fi, beNew), transpose(Fi)), out.state.data());
-  out.state[kJ2Alpha] = old[kJ2Alpha] + kSqrt23 * r.dgamma;
-  out.yielded = r.yielded;
-  out.energy = 0.5 * kappa_ * tr * tr + mu_ * r.theta * r.theta * normE * normE;
-  recordIncrement(F, old, out);
+  finishPoint(F, old, r.dgamma, r.theta, r.yielded, tr, normE, out);
   if (!withTangent) return;
-  // D = d tau / d b_e^tr on the principal axes (header), then dP/dF by the chain
-  // d b_e^tr = dF G F^T + F G dF^T and P = tau F^-T.
-  double dtdx[3][3], c[3][3];
   const double theta = elastic ? 1.0 : r.theta, thetabar = elastic ? 0.0 : r.thetabar;
+  finiteTangent(eig, x, n, theta, thetabar, FG, Fi, out);
+}
+
+// D = d tau / d b_e^tr on the principal axes (header), then dP/dF by the chain
+// d b_e^tr = dF G F^T + F G dF^T and P = tau F^-T (G = C_p^-1, FG = F G).
+void J2Plasticity::finiteTangent(const SymmetricEigen& eig, const double* x, const double* n, double theta,
+                                 double thetabar, const Mat3& FG, const Mat3& Fi, J2Response& out) const {
+  const Mat3& v = eig.vectors;
+  double dtdx[3][3], c[3][3];
   for (int A = 0; A < 3; ++A)
     for (int B = 0; B < 3; ++B) {
       const double dtde = kappa_ + 2 * mu_ * theta * ((A == B) - 1.0 / 3.0) - 2 * mu_ * thetabar * n[A] * n[B];

@@ -27,6 +27,7 @@
 #include <array>
 #include <string>
 
+#include "materials/SymmetricEigen.hpp"
 #include "materials/Tensor2.hpp"
 
 namespace choc {
@@ -77,6 +78,10 @@ class J2Plasticity {
  private:
   void respondFinite(const Mat3& F, const double* old, bool withTangent, bool elastic, J2Response& out) const;
   void respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic, J2Response& out) const;
+  void finishPoint(const Mat3& F, const double* old, double dgamma, double theta, bool yielded, double tr,
+                   double normE, J2Response& out) const;
+  void finiteTangent(const SymmetricEigen& eig, const double* x, const double* n, double theta, double thetabar,
+                     const Mat3& FG, const Mat3& Fi, J2Response& out) const;
   J2Parameters p_;
   bool finite_;
   double mu_, kappa_;

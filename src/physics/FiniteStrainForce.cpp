@@ -75,6 +75,12 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
     elements_.push_back(std::move(el));
   }
   trial_ = committed_;
+  layoutArchive(mesh, kernels);
+}
+
+// Every element's plastic state's offset in the archive's global array (element order).
+void FiniteStrainForce::layoutArchive(const Mesh& mesh,
+                                      const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels) {
   globalState_.assign(size_t(numElements_), size_t(-1));
   for (int ge = 0; ge < numElements_; ++ge) {
     const auto [b, e] = mesh.locateElement(ge);

@@ -36,6 +36,7 @@
 namespace choc {
 
 class Model;
+struct Mesh;
 
 class FiniteStrainForce : public InternalForce {
  public:
@@ -124,6 +125,7 @@ class FiniteStrainForce : public InternalForce {
   mutable bool trialValid_ = false;
   mutable double trialWork_ = 0.0;  // the owners' plastic work of the trial increment (this rank)
   double plasticWork_ = 0.0;        // the committed increments' plastic work, all ranks [J]
+  void layoutArchive(const Mesh& mesh, const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels);
   std::vector<size_t> globalState_;  // per global element: its state's offset in the archive (-1: none)
   size_t globalStateSize_ = 0;
   mutable RCP<Vector> uCol_, tmp_;
