@@ -13,8 +13,9 @@ Checked:
     97 % of E0 at the end (the bar nearly at rest; the rest is the elastic energy left, the
     kinetic energy and those node impacts);
   - F-bar removes the bilinear element's volumetric locking: on 0.4 mm the standard QUAD4's
-    radius is at least 10 % below F-bar's (locked plastic flow cannot spread the face;
-    measured 6.14 against 7.29 mm);
+    radius lies below F-bar's by more than F-bar's own mesh error |R(0.4) - R(0.8)| (locked
+    plastic flow cannot spread the face; measured 6.14 against 7.29 mm, error estimate 0.12 mm):
+    a difference the discretisation of the same element cannot explain;
   - the F-bar meshes' final length lies within the published 21.4-21.5 mm widened by the mesh's
     own error estimate |L(0.4) - L(0.8)|, and so does the radius within 7.11-7.22 mm widened by
     |R(0.4) - R(0.8)|: a model that disagreed with the published bars by more than its
@@ -64,9 +65,10 @@ def run(n, label, fbar=True, ranks=1):
 r4, l4, h4 = run(4, "fbar_0.8mm")
 r8, l8, _ = run(8, "fbar_0.4mm")
 rs, _, _ = run(8, "standard_0.4mm", fbar=False)
-print(f"locking: standard QUAD4 {rs:.4f} mm against F-bar {r8:.4f} mm ({rs / r8 - 1:+.1%})")
-if not rs <= 0.9 * r8:
-    failures.append(f"standard QUAD4 radius {rs:.4f} mm not 10 % below F-bar's {r8:.4f} mm")
+print(f"locking: standard QUAD4 {rs:.4f} mm against F-bar {r8:.4f} mm ({rs / r8 - 1:+.1%}); "
+      f"F-bar's mesh error estimate {abs(r8 - r4):.4f} mm")
+if not rs < r8 - abs(r8 - r4):
+    failures.append(f"standard QUAD4 radius {rs:.4f} mm not below F-bar's {r8:.4f} mm by more than its mesh error")
 for what, v8, v4, lo, hi in (("length", l8, l4, 21.4, 21.5), ("radius", r8, r4, 7.11, 7.22)):
     est = abs(v8 - v4)
     print(f"{what} on 0.4 mm: {v8:.4f} mm, mesh estimate {est:.4f} mm, published {lo}-{hi} mm")
