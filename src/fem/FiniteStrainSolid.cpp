@@ -45,6 +45,20 @@ const std::vector<GradientRow>& gradientRows(Kinematics k) {
   return k == Kinematics::ThreeD ? threeD : (k == Kinematics::PlaneStrain ? plane : axi);
 }
 
+// The Cauchy stress a plastic point's state records: P F^T / det F from the last accepted P and
+// F (the material's F: F-bar's Fbar), P itself in small strain.
+Mat3 plasticCauchy(const double* st, bool finite) {
+  Mat3 P, F;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) P[i][j] = st[kJ2Stress + 3 * i + j], F[i][j] = st[kJ2Deformation + 3 * i + j];
+  if (!finite) return P;
+  Mat3 c = multiply(P, transpose(F));
+  const double J = determinant(F);
+  for (auto& row : c)
+    for (double& v : row) v /= J;
+  return c;
+}
+
 PointView pointOf(const ElementGeometry& g, int q) {
   const bool axi = !g.radius.empty();
   return {g.nodes, &g.dNdX[size_t(q) * g.nodes * 3], axi ? &g.N[size_t(q) * g.nodes] : nullptr,
@@ -70,7 +84,7 @@ Mat3 deformationGradient(Kinematics k, const PointView& p, const std::vector<dou
 // J0 > 0: F-bar, the material gets (J0 / J)^(1/3) F (J0 the element's mean dilatation).
 void evaluatePoint(Kinematics k, const SolidMaterial& m, SolidShape t, const Point3& xi, const PointView& p,
                    const std::vector<double>& u, const double* old, bool withTangent, PointState& s,
-                   double J0 = 0.0, bool elasticTangent = false) {
+                   double J0 = 0.0, bool elasticTangent = false, double dt = 0.0) {
   s.Fstd = s.F = deformationGradient(k, p, u);
   const bool finite = !m.plastic || m.plastic->finiteStrain();
   const double J = determinant(s.F);
@@ -90,7 +104,7 @@ void evaluatePoint(Kinematics k, const SolidMaterial& m, SolidShape t, const Poi
     if (m.plastic) {
       std::array<double, kJ2StateSize> virgin{};
       if (!old) virgin = m.plastic->initialState(), old = virgin.data();
-      m.plastic->respond(s.F, old, withTangent, s.plastic, elasticTangent);
+      m.plastic->respond(s.F, old, withTangent, s.plastic, elasticTangent, dt);
       s.P = s.plastic.P;
       s.energy = s.plastic.energy;
       return;
@@ -261,7 +275,7 @@ void FiniteStrainSolid::addFBarForce(const PointView& p, const PointState& s, co
 
 double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f,
                                    DenseMatrix* K, const double* old, double* next, double* plasticWork,
-                                   bool elasticTangent) const {
+                                   bool elasticTangent, double dt) const {
   const QuadratureRule& rule = stiffnessRule(shape_, kin_);
   const int nc = componentsPerNode(), n = g.nodes, nd = n * nc;
   f.assign(size_t(nd), 0.0);
@@ -275,7 +289,7 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
     const double w = g.weight[size_t(q)];
     const PointView p = pointOf(g, q);
     evaluatePoint(kin_, material_, shape_, rule.points[size_t(q)], p, u, old ? old + kJ2StateSize * q : nullptr,
-                  K != nullptr, s, J0, elasticTangent);
+                  K != nullptr, s, J0, elasticTangent, dt);
     energy += w * s.energy;
     if (plastic()) {
       if (next) std::copy(s.plastic.state.begin(), s.plastic.state.end(), next + kJ2StateSize * q);
@@ -302,28 +316,40 @@ void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vecto
   const QuadratureRule& rule = stiffnessRule(shape_, kin_);
   PointState s;
   std::vector<double> B;
-  const double J0 = meanDilatation(g, u, B);
+  const double J0 = this->plastic() ? 0.0 : meanDilatation(g, u, B);
+  std::vector<double> virgin;
+  if (this->plastic() && !old) virgin.resize(size_t(stateSize())), initialState(virgin.data()), old = virgin.data();
   if (plastic) *plastic = PlasticAverages{};
   sigma.fill(0.0);
   energyDensity = 0.0;
   double volume = 0.0;
   for (int q = 0; q < g.points; ++q) {
     const double w = g.weight[size_t(q)];
-    evaluatePoint(kin_, material_, shape_, rule.points[size_t(q)], pointOf(g, q), u,
-                  old ? old + kJ2StateSize * q : nullptr, false, s, J0);
-    const Mat3 c = this->plastic() ? s.plastic.cauchy : cauchyStress(s.F, s.response.S);
+    Mat3 c;
+    if (this->plastic()) {  // the stress the last accepted increment ended at, from the point's state
+      const double* st = old + kJ2StateSize * q;
+      c = plasticCauchy(st, material_.plastic->finiteStrain());
+      energyDensity += w * st[kJ2Energy];
+      if (plastic) {
+        plastic->vonMises += w * vonMises(c);
+        plastic->equivalentPlasticStrain += w * st[kJ2Alpha];
+        plastic->temperature += w * st[kJ2Temperature];
+        plastic->pressure -= w * trace(c) / 3;
+      }
+    } else {
+      evaluatePoint(kin_, material_, shape_, rule.points[size_t(q)], pointOf(g, q), u, nullptr, false, s, J0);
+      c = cauchyStress(s.F, s.response.S);
+      energyDensity += w * s.energy;
+    }
     const double v[6] = {c[0][0], c[1][1], c[2][2], c[0][1], c[1][2], c[2][0]};
     for (int i = 0; i < 6; ++i) sigma[size_t(i)] += w * v[i];
-    energyDensity += w * s.energy;
-    if (plastic && this->plastic()) {
-      plastic->vonMises += w * vonMises(c);
-      plastic->equivalentPlasticStrain += w * s.plastic.state[kJ2Alpha];
-    }
     volume += w;
   }
   for (double& v : sigma) v /= volume;
   energyDensity /= volume;
-  if (plastic) plastic->vonMises /= volume, plastic->equivalentPlasticStrain /= volume;
+  if (plastic)
+    for (double* v : {&plastic->vonMises, &plastic->equivalentPlasticStrain, &plastic->temperature, &plastic->pressure})
+      *v /= volume;
 }
 
 }  // namespace choc

@@ -74,6 +74,8 @@ struct SolidMaterial {
 struct PlasticAverages {
   double vonMises = 0.0;                // of the Cauchy stress [Pa]
   double equivalentPlasticStrain = 0.0;  // alpha [-]
+  double temperature = 0.0;              // Johnson-Cook's (0 for the laws without temperature)
+  double pressure = 0.0;                 // -tr(sigma) / 3 [Pa]
 };
 
 class FiniteStrainSolid {
@@ -88,6 +90,8 @@ class FiniteStrainSolid {
   int numNodes() const { return nodeCount(shape_); }
   int componentsPerNode() const { return kin_ == Kinematics::ThreeD ? 3 : 2; }
   bool plastic() const { return material_.plastic != nullptr; }
+  // A plastic material whose flow stress carries a temperature (Johnson-Cook).
+  bool thermal() const { return plastic() && material_.plastic->flowStress().hasTemperature(); }
   // Finite-strain kinematics (every hyperelastic kernel; a plastic one with a finite-strain material).
   bool finiteKinematics() const { return !plastic() || material_.plastic->finiteStrain(); }
   // The numbers of state an element keeps (0 for a hyperelastic material), and their virgin values.
@@ -106,9 +110,10 @@ class FiniteStrainSolid {
   // (stateSize() numbers) and, when given, writes the new one to `next` and adds the
   // increment's dissipated work (J2Response::plasticWork) times dV to *plasticWork. With
   // `elasticTangent`, K takes a plastic material's elastic tangent (the explicit critical step).
+  // dt: the increment's duration (a rate-dependent flow stress; 0: quasi-static).
   double evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f, DenseMatrix* K,
                   const double* old = nullptr, double* next = nullptr, double* plasticWork = nullptr,
-                  bool elasticTangent = false) const;
+                  bool elasticTangent = false, double dt = 0.0) const;
   double evaluate(const std::vector<Point3>& X, const std::vector<double>& u, std::vector<double>& f,
                   DenseMatrix* K) const {
     return evaluate(geometry(X), u, f, K);
@@ -116,7 +121,9 @@ class FiniteStrainSolid {
 
   // The Cauchy stress (xx, yy, zz, xy, yz, zx; for axisymmetric rr, zz, thetatheta, rz, 0, 0)
   // and the strain-energy density W, both averaged over the element's reference volume.
-  // A plastic material: from the state `old`, with its von Mises stress and alpha in *plastic.
+  // A plastic material: the stress and energy its state `old` records (those of the last accepted
+  // increment: the state ends at u), with its von Mises stress, alpha, temperature and pressure
+  // in *plastic.
   void averageStress(const ElementGeometry& g, const std::vector<double>& u, std::array<double, 6>& sigma,
                      double& energyDensity, const double* old = nullptr, PlasticAverages* plastic = nullptr) const;
   void averageStress(const std::vector<Point3>& X, const std::vector<double>& u, std::array<double, 6>& sigma,

@@ -24,24 +24,6 @@ void stateFromSymmetric(const Mat3& m, double* s) {
   for (int k = 0; k < 6; ++k) s[k] = 0.5 * (m[kPairs[k][0]][kPairs[k][1]] + m[kPairs[k][1]][kPairs[k][0]]);
 }
 
-// The radial return on the deviatoric trial strain's norm ||e||: the multiplier dgamma and the
-// tangent's factors theta and thetabar (header).
-struct RadialReturn {
-  double dgamma = 0.0, theta = 1.0, thetabar = 0.0;
-  bool yielded = false;
-};
-
-RadialReturn radialReturn(double mu, const J2Parameters& p, double normE, double alpha) {
-  RadialReturn r;
-  const double f = 2 * mu * normE - kSqrt23 * (p.yieldStress + p.hardening * alpha);
-  if (!(f > 0)) return r;
-  r.yielded = true;
-  r.dgamma = f / (2 * mu + 2.0 / 3.0 * p.hardening);
-  r.theta = 1 - r.dgamma / normE;
-  r.thetabar = 1 / (1 + p.hardening / (3 * mu)) - (1 - r.theta);
-  return r;
-}
-
 // (eps_A - eps_B) / (x_A - x_B) with eps = ln(x) / 2, continuous where x_B -> x_A (1 / 2 x_A).
 double logSlope(double xA, double xB) {
   const double t = (xB - xA) / xA;
@@ -72,46 +54,104 @@ Mat3 scaled(Mat3 a, double s) {
 
 }  // namespace
 
-J2Plasticity::J2Plasticity(const J2Parameters& p, bool finiteStrain) : p_(p), finite_(finiteStrain) {
+namespace {
+
+// The flow-stress law the parameters give (J2Parameters), validated.
+FlowStress flowOf(const J2Parameters& p) {
   std::ostringstream msg;
   if (!(p.youngsModulus > 0) || !(p.poissonsRatio > -1.0 && p.poissonsRatio < 0.5))
     msg << "needs Young's modulus > 0 and Poisson's ratio in (-1, 0.5), got E = " << p.youngsModulus
         << ", nu = " << p.poissonsRatio;
+  else if (p.johnsonCook)
+    return FlowStress::johnsonCook(p.jc);
+  else if (!p.curve.strain.empty())
+    return FlowStress::curve(p.curve);
   else if (!(p.yieldStress > 0))
     msg << "needs a yield stress > 0, got " << p.yieldStress << " Pa";
   else if (!(p.hardening >= 0) || !std::isfinite(p.hardening))
     msg << "needs a hardening modulus >= 0, got " << p.hardening << " Pa";
   if (!msg.str().empty()) throw std::invalid_argument("J2 plasticity material: " + msg.str());
+  return FlowStress::linear(p.yieldStress, p.hardening);
+}
+
+}  // namespace
+
+J2Plasticity::J2Plasticity(const J2Parameters& p, bool finiteStrain)
+    : p_(p), flow_(flowOf(p)), finite_(finiteStrain) {
   mu_ = p.youngsModulus / (2 * (1 + p.poissonsRatio));
   kappa_ = p.youngsModulus / (3 * (1 - 2 * p.poissonsRatio));
+}
+
+J2Plasticity::Return J2Plasticity::radialReturn(double normE, const double* old, double dt) const {
+  Return r;
+  const double alpha = old[kJ2Alpha], T = old[kJ2Temperature];
+  FlowStress::Value at = flow_.at(alpha, 0.0, dt, T);
+  const double trial = 2 * mu_ * normE, f0 = trial - kSqrt23 * at.stress;
+  r.flowStress = at.stress;
+  if (!(f0 > 0)) return r;
+  r.yielded = true;
+  if (flow_.isLinear()) {
+    r.dgamma = f0 / (2 * mu_ + 2.0 / 3.0 * flow_.linearHardening());
+    at = flow_.at(alpha, kSqrt23 * r.dgamma, dt, T);
+  } else {
+    r.dgamma = solveReturn(trial, f0, old, dt, at);
+  }
+  r.flowStress = at.stress;
+  r.theta = 1 - r.dgamma / normE;
+  r.thetabar = 1 / (1 + at.slope / (3 * mu_)) - (1 - r.theta);
+  return r;
+}
+
+// g(x) = trial - 2 mu x - sqrt(2/3) sigma_y(alpha + sqrt(2/3) x) decreases from g(0) = f0 > 0 to
+// g(f0 / 2 mu) <= 0: Newton from the upper end (g is convex for the concave laws, so the
+// iterates then rise to the root), a bisection whenever a step leaves the bracket.
+double J2Plasticity::solveReturn(double trial, double f0, const double* old, double dt,
+                                 FlowStress::Value& at) const {
+  const double alpha = old[kJ2Alpha], T = old[kJ2Temperature];
+  double lo = 0.0, hi = f0 / (2 * mu_), x = hi;
+  for (int it = 0; it < 200; ++it) {
+    at = flow_.at(alpha, kSqrt23 * x, dt, T);
+    const double g = trial - 2 * mu_ * x - kSqrt23 * at.stress;
+    if (std::abs(g) <= 1e-13 * trial || hi - lo <= 1e-15 * hi) return x;
+    (g > 0 ? lo : hi) = x;
+    const double step = x + g / (2 * mu_ + 2.0 / 3.0 * at.slope);
+    x = step > lo && step < hi ? step : 0.5 * (lo + hi);
+  }
+  std::ostringstream msg;
+  msg << "J2 plasticity material: the return map did not converge in 200 iterations (trial stress " << trial
+      << " Pa, equivalent plastic strain " << alpha << ")";
+  throw std::domain_error(msg.str());
 }
 
 std::array<double, kJ2StateSize> J2Plasticity::initialState() const {
   std::array<double, kJ2StateSize> s{};
   if (finite_) s[0] = s[1] = s[2] = 1.0;  // C_p^-1 = I
+  s[kJ2Temperature] = flow_.initialTemperature();
   s[kJ2Deformation] = s[kJ2Deformation + 4] = s[kJ2Deformation + 8] = 1.0;  // F = I
   return s;
 }
 
 void J2Plasticity::respond(const Mat3& F, const double* old, bool withTangent, J2Response& out,
-                          bool elasticTangent) const {
+                          bool elasticTangent, double dt) const {
   if (finite_)
-    respondFinite(F, old, withTangent, elasticTangent, out);
+    respondFinite(F, old, withTangent, elasticTangent, dt, out);
   else
-    respondSmall(F, old, withTangent, elasticTangent, out);
+    respondSmall(F, old, withTangent, elasticTangent, dt, out);
 }
 
-// What both kinematics end a point with: alpha, the stored energy K/2 (tr eps)^2 + mu ||theta e||^2
-// (dev eps_e = theta e), and the increment's work.
-void J2Plasticity::finishPoint(const Mat3& F, const double* old, double dgamma, double theta, bool yielded,
-                               double tr, double normE, J2Response& out) const {
-  out.state[kJ2Alpha] = old[kJ2Alpha] + kSqrt23 * dgamma;
-  out.yielded = yielded;
-  out.energy = 0.5 * kappa_ * tr * tr + mu_ * theta * theta * normE * normE;
+// What both kinematics end a point with: alpha, the temperature (the plastic work's heat), the
+// stored energy K/2 (tr eps)^2 + mu ||theta e||^2 (dev eps_e = theta e), and the increment's work.
+void J2Plasticity::finishPoint(const Mat3& F, const double* old, const Return& r, double tr, double normE,
+                               J2Response& out) const {
+  const double dalpha = kSqrt23 * r.dgamma;
+  out.state[kJ2Alpha] = old[kJ2Alpha] + dalpha;
+  out.state[kJ2Temperature] = old[kJ2Temperature] + flow_.heatPerWork() * r.flowStress * dalpha;
+  out.yielded = r.yielded;
+  out.energy = 0.5 * kappa_ * tr * tr + mu_ * r.theta * r.theta * normE * normE;
   recordIncrement(F, old, out);
 }
 
-void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic,
+void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic, double dt,
                                J2Response& out) const {
   const Mat3 epsP = symmetricFromState(old);
   Mat3 e{};
@@ -120,7 +160,7 @@ void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTange
   const double tr = trace(e);
   for (int i = 0; i < 3; ++i) e[i][i] -= tr / 3;
   const double normE = std::sqrt(contract(e, e));
-  const RadialReturn r = radialReturn(mu_, p_, normE, old[kJ2Alpha]);
+  const Return r = radialReturn(normE, old, dt);
   const Mat3 n = r.yielded ? scaled(e, 1 / normE) : Mat3{};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) out.P[i][j] = 2 * mu_ * r.theta * e[i][j] + (i == j ? kappa_ * tr : 0.0);
@@ -129,7 +169,7 @@ void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTange
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) epsPNew[i][j] += r.dgamma * n[i][j];
   stateFromSymmetric(epsPNew, out.state.data());
-  finishPoint(F, old, r.dgamma, r.theta, r.yielded, tr, normE, out);
+  finishPoint(F, old, r, tr, normE, out);
   if (!withTangent) return;
   const double theta = elastic ? 1.0 : r.theta, thetabar = elastic ? 0.0 : r.thetabar;
   for (int i = 0; i < 3; ++i)
@@ -143,7 +183,7 @@ void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTange
         }
 }
 
-void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTangent, bool elastic,
+void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTangent, bool elastic, double dt,
                                 J2Response& out) const {
   const double J = determinant(F);
   if (!(J > 0)) {
@@ -166,7 +206,7 @@ void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTang
   const double tr = eps[0] + eps[1] + eps[2];
   for (int A = 0; A < 3; ++A) e[A] = eps[A] - tr / 3;
   const double normE = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-  const RadialReturn r = radialReturn(mu_, p_, normE, old[kJ2Alpha]);
+  const Return r = radialReturn(normE, old, dt);
   if (r.yielded)
     for (int A = 0; A < 3; ++A) n[A] = e[A] / normE;
   const Mat3& v = eig.vectors;
@@ -184,7 +224,7 @@ void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTang
   out.P = multiply(tauM, transpose(Fi));
   out.cauchy = scaled(tauM, 1 / J);
   stateFromSymmetric(multiply(multiply(Fi, beNew), transpose(Fi)), out.state.data());
-  finishPoint(F, old, r.dgamma, r.theta, r.yielded, tr, normE, out);
+  finishPoint(F, old, r, tr, normE, out);
   if (!withTangent) return;
   const double theta = elastic ? 1.0 : r.theta, thetabar = elastic ? 0.0 : r.thetabar;
   finiteTangent(eig, x, n, theta, thetabar, FG, Fi, out);

@@ -1,9 +1,14 @@
-// J2 (von Mises) plasticity with linear isotropic hardening: a pure function of the
+// J2 (von Mises) plasticity with isotropic hardening: a pure function of the
 // deformation gradient F and the point's committed state, returning the first Piola-Kirchhoff
 // stress, its consistent (algorithmic) tangent dP/dF, the new state and the plastic work
-// (STYLE.md "Shape of nonlinear physics"). Yield: ||dev tau|| <= sqrt(2/3) (sigma_y + H alpha),
-// alpha the equivalent plastic strain; the flow is associative and isochoric, integrated by
-// backward Euler (the radial return: exact for proportional loading).
+// (STYLE.md "Shape of nonlinear physics"). Yield: ||dev tau|| <= sqrt(2/3) sigma_y(alpha, rate, T),
+// alpha the equivalent plastic strain, sigma_y a flow-stress law (FlowStress.hpp: linear, a
+// flow curve or Johnson-Cook); the flow is associative and isochoric, integrated by backward
+// Euler (the radial return: exact for proportional loading). The return's scalar equation
+//     2 mu ||e|| - 2 mu dgamma - sqrt(2/3) sigma_y(alpha_n + sqrt(2/3) dgamma, ...) = 0
+// is solved in closed form for linear hardening, else by Newton safeguarded by bisection on
+// [0, f_trial / 2 mu] (the root is unique there); a return that does not converge throws
+// std::domain_error (the caller names the element, the point and the time).
 //
 // Finite strain (Simo 1992; Simo and Hughes, Computational Inelasticity, ch. 9): the
 // multiplicative split F = F_e F_p with the elastic left Cauchy-Green tensor b_e and the
@@ -20,13 +25,15 @@
 //
 // The tangent is the exact derivative of the return map (the consistent tangent), in closed
 // form: on the principal axes dtau_A/d eps_B = K + 2 mu theta (delta_AB - 1/3)
-// - 2 mu thetabar n_A n_B, theta = 1 - 2 mu dgamma / ||s_tr||, thetabar = 1 / (1 + H / 3 mu)
-// - (1 - theta) (0 when elastic), and the spin terms 2 mu theta (eps_A - eps_B) / (x_A - x_B)
+// - 2 mu thetabar n_A n_B, theta = 1 - 2 mu dgamma / ||s_tr||, thetabar = 1 / (1 + H' / 3 mu)
+// - (1 - theta) (0 when elastic), H' = d sigma_y / d alpha at the new state (with Johnson-Cook's
+// rate term over dt; the temperature is the increment's start's, FlowStress.hpp), and the spin terms 2 mu theta (eps_A - eps_B) / (x_A - x_B)
 // between axes (x_A the eigenvalues of b_e^tr), whose limit for equal x is mu theta / x_A.
 #pragma once
 #include <array>
 #include <string>
 
+#include "materials/FlowStress.hpp"
 #include "materials/SymmetricEigen.hpp"
 #include "materials/Tensor2.hpp"
 
@@ -34,14 +41,24 @@ namespace choc {
 
 struct J2Parameters {
   double youngsModulus = 0.0, poissonsRatio = 0.0;
-  double yieldStress = 0.0;  // sigma_y [Pa]
-  double hardening = 0.0;    // H = d sigma_y / d alpha [Pa]
+  double yieldStress = 0.0;  // sigma_y [Pa] (linear hardening)
+  double hardening = 0.0;    // H = d sigma_y / d alpha [Pa] (linear hardening)
+  FlowCurve curve;           // when not empty, the flow stress instead of yieldStress and hardening
+  bool johnsonCook = false;  // the Johnson-Cook law below instead of both
+  JohnsonCookParameters jc;
 };
 
-// A point's state: the plastic tensor (C_p^-1 or eps_p: xx yy zz xy yz zx), alpha, and the
-// last accepted W, P and F (for the increment's dissipated work, below).
-constexpr int kJ2StateSize = 26;
-constexpr int kJ2Alpha = 6, kJ2Energy = 7, kJ2Stress = 8, kJ2Deformation = 17;
+// The parameters of linear isotropic hardening.
+inline J2Parameters linearHardening(double E, double nu, double yieldStress, double hardening) {
+  J2Parameters p;
+  p.youngsModulus = E, p.poissonsRatio = nu, p.yieldStress = yieldStress, p.hardening = hardening;
+  return p;
+}
+
+// A point's state: the plastic tensor (C_p^-1 or eps_p: xx yy zz xy yz zx), alpha, the
+// last accepted W, P and F (for the increment's dissipated work, below) and the temperature.
+constexpr int kJ2StateSize = 27;
+constexpr int kJ2Alpha = 6, kJ2Energy = 7, kJ2Stress = 8, kJ2Deformation = 17, kJ2Temperature = 26;
 
 struct J2Response {
   Mat3 P{};                  // first Piola-Kirchhoff stress (small strain: sigma)
@@ -60,10 +77,11 @@ struct J2Response {
 class J2Plasticity {
  public:
   // Throws std::invalid_argument (naming the value) for E <= 0, nu outside (-1, 0.5),
-  // sigma_y <= 0 or H < 0.
+  // sigma_y <= 0 or H < 0, and for a flow curve or Johnson-Cook parameters out of range.
   J2Plasticity(const J2Parameters& p, bool finiteStrain);
   bool finiteStrain() const { return finite_; }
   const J2Parameters& parameters() const { return p_; }
+  const FlowStress& flowStress() const { return flow_; }
   double shearModulus() const { return mu_; }
   double bulkModulus() const { return kappa_; }
   // The state of a virgin point.
@@ -72,17 +90,28 @@ class J2Plasticity {
   // det F <= 0 in finite strain. With `elasticTangent`, A is the elastic tangent at the trial
   // state (theta = 1, thetabar = 0): the stiffness of a point that unloads, the largest it can
   // show, for the explicit critical step (the consistent tangent of a yielding point is softer).
+  // dt: the increment's duration, for a rate-dependent flow stress (0: quasi-static).
   void respond(const Mat3& F, const double* old, bool withTangent, J2Response& out,
-               bool elasticTangent = false) const;
+               bool elasticTangent = false, double dt = 0.0) const;
 
  private:
-  void respondFinite(const Mat3& F, const double* old, bool withTangent, bool elastic, J2Response& out) const;
-  void respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic, J2Response& out) const;
-  void finishPoint(const Mat3& F, const double* old, double dgamma, double theta, bool yielded, double tr,
-                   double normE, J2Response& out) const;
+  struct Return {
+    double dgamma = 0.0, theta = 1.0, thetabar = 0.0, flowStress = 0.0;
+    bool yielded = false;
+  };
+  // The radial return on the deviatoric trial strain's norm ||e|| (header).
+  Return radialReturn(double normE, const double* old, double dt) const;
+  double solveReturn(double trial, double f0, const double* old, double dt, FlowStress::Value& at) const;
+  void respondFinite(const Mat3& F, const double* old, bool withTangent, bool elastic, double dt,
+                     J2Response& out) const;
+  void respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic, double dt,
+                    J2Response& out) const;
+  void finishPoint(const Mat3& F, const double* old, const Return& r, double tr, double normE,
+                   J2Response& out) const;
   void finiteTangent(const SymmetricEigen& eig, const double* x, const double* n, double theta, double thetabar,
                      const Mat3& FG, const Mat3& Fi, J2Response& out) const;
   J2Parameters p_;
+  FlowStress flow_;
   bool finite_;
   double mu_, kappa_;
 };

@@ -87,6 +87,7 @@ void FiniteStrainForce::layoutArchive(const Mesh& mesh,
     const int n = kernels[size_t(b)] ? kernels[size_t(b)]->stateSize() : 0;
     if (n == 0) continue;
     plastic_ = true;
+    thermal_ = thermal_ || kernels[size_t(b)]->thermal();
     globalState_[size_t(ge)] = globalStateSize_;
     globalStateSize_ += size_t(n);
   }
@@ -95,6 +96,7 @@ void FiniteStrainForce::layoutArchive(const Mesh& mesh,
 void FiniteStrainForce::commit() {
   if (!plastic_ || !trialValid_) return;
   committed_ = trial_;
+  committedTime_ = trialTime_;
   double work = 0.0;
   Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_SUM, trialWork_, Teuchos::outArg(work));
   plasticWork_ += work;
@@ -116,6 +118,7 @@ void FiniteStrainForce::archive(StateArchive& a) const {
                                     global.data());
   a.putVector("internal/plasticState", global);
   a.putDouble("internal/plasticWork", plasticWork_);
+  a.putDouble("internal/plasticTime", committedTime_);
 }
 
 void FiniteStrainForce::unarchive(const StateArchive& a) {
@@ -125,6 +128,8 @@ void FiniteStrainForce::unarchive(const StateArchive& a) {
     std::copy_n(global.begin() + long(globalState_[size_t(e.number)]), size_t(e.kernel->stateSize()),
                 committed_.begin() + long(e.state));
   plasticWork_ = a.getDouble("internal/plasticWork");
+  committedTime_ = a.getDouble("internal/plasticTime");
+  timeKnown_ = true;
   trialValid_ = false;
 }
 
@@ -157,13 +162,14 @@ std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTange
   auto data = uCol.getData();
   std::vector<double> ue, fe;
   DenseMatrix Ke;
-  if (trial) trialWork_ = 0.0;
+  if (trial) trialWork_ = 0.0, trialTime_ = time_;
+  const double dt = time_ - committedTime_;
   for (const Element& e : elements_) {
     gather(e, data, ue);
     double energy = 0.0, work = 0.0;
     try {
       energy = e.kernel->evaluate(e.geometry, ue, fe, withTangent ? &Ke : nullptr, committed_.data() + e.state,
-                                  trial ? trial_.data() + e.state : nullptr, &work, elasticTangent);
+                                  trial ? trial_.data() + e.state : nullptr, &work, elasticTangent, dt);
       if (trial && e.owner) trialWork_ += work;
     } catch (const InvertedElement& err) {
       return describe(e, err.what());
@@ -302,13 +308,14 @@ std::vector<std::string> FiniteStrainForce::elementFieldNames() const {
   std::vector<std::string> names = {"SIGMA_XX", "SIGMA_YY", "SIGMA_ZZ", "SIGMA_XY"};
   if (threeD_) names.insert(names.end(), {"SIGMA_YZ", "SIGMA_ZX"});
   names.push_back("STRAIN_ENERGY_DENSITY");
-  if (plastic_) names.insert(names.end(), {"VON_MISES", "EQ_PLASTIC_STRAIN"});
+  if (plastic_) names.insert(names.end(), {"VON_MISES", "EQ_PLASTIC_STRAIN", "PRESSURE"});
+  if (thermal_) names.push_back("TEMPERATURE");
   return names;
 }
 
 void FiniteStrainForce::elementFields(const Vector& u, std::vector<std::vector<double>>& values) const {
   const int stresses = threeD_ ? 6 : 4;
-  values.assign(size_t(stresses + 1 + (plastic_ ? 2 : 0)), std::vector<double>(size_t(numElements_), 0.0));
+  values.assign(elementFieldNames().size(), std::vector<double>(size_t(numElements_), 0.0));
   const Vector& uc = onColumns(u);
   auto data = uc.getData();
   std::string failure;
@@ -330,6 +337,8 @@ void FiniteStrainForce::elementFields(const Vector& u, std::vector<std::vector<d
     if (!plastic_) continue;
     values[size_t(stresses + 1)][size_t(e.number)] = pa.vonMises;
     values[size_t(stresses + 2)][size_t(e.number)] = pa.equivalentPlasticStrain;
+    values[size_t(stresses + 3)][size_t(e.number)] = pa.pressure;
+    if (thermal_) values[size_t(stresses + 4)][size_t(e.number)] = pa.temperature;
   }
   throwIfFailed(failure);
 }

@@ -47,7 +47,11 @@ class FiniteStrainForce : public InternalForce {
   long long tangentVersion() const override { return version_; }
   void applyDampingStiffness(const Vector& x, Vector& out) const override { K0_->apply(x, out); }
   bool linear() const override { return false; }
-  void setTime(double t) override { time_ = t; }
+  // The time of the next evaluations; the first one given is the committed state's (the start).
+  void setTime(double t) override {
+    time_ = t;
+    if (!timeKnown_) committedTime_ = t, timeKnown_ = true;
+  }
   void addFollowerPressure(std::shared_ptr<const FollowerPressure> p) { followers_.push_back(std::move(p)); }
   // 1/2 u.K_lin u + the elements' int W dV (each element counted on the rank owning its first node).
   double strainEnergy(const Vector& u, const Vector* internalForceAtU) const override;
@@ -67,8 +71,9 @@ class FiniteStrainForce : public InternalForce {
   // averageStress) and its strain-energy density: SIGMA_XX, SIGMA_YY, SIGMA_ZZ, SIGMA_XY
   // (and SIGMA_YZ, SIGMA_ZX in 3D; axisymmetric: XX radial, YY axial, ZZ hoop, XY the rz
   // shear), STRAIN_ENERGY_DENSITY (the stored elastic energy), and with plastic blocks
-  // VON_MISES and EQ_PLASTIC_STRAIN; on the nonlinear blocks, each element by the rank owning
-  // its first node.
+  // VON_MISES, EQ_PLASTIC_STRAIN and PRESSURE (-tr sigma / 3), with Johnson-Cook blocks
+  // TEMPERATURE (0 on the other blocks); plastic blocks' values are those their state records at
+  // the last accepted step. On the nonlinear blocks, each element by the rank owning its first node.
   std::vector<std::string> elementFieldNames() const override;
   std::vector<char> elementFieldBlocks() const override { return finiteBlocks_; }
   void elementFields(const Vector& u, std::vector<std::vector<double>>& values) const override;
@@ -125,6 +130,12 @@ class FiniteStrainForce : public InternalForce {
   mutable bool trialValid_ = false;
   mutable double trialWork_ = 0.0;  // the owners' plastic work of the trial increment (this rank)
   double plasticWork_ = 0.0;        // the committed increments' plastic work, all ranks [J]
+  // The time of the committed state and of the trial: the increment's duration for rate-dependent
+  // flow stresses (Johnson-Cook) is time_ - committedTime_.
+  double committedTime_ = 0.0;
+  mutable double trialTime_ = 0.0;
+  bool timeKnown_ = false;
+  bool thermal_ = false;  // a block's flow stress carries a temperature
   void layoutArchive(const Mesh& mesh, const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels);
   std::vector<size_t> globalState_;  // per global element: its state's offset in the archive (-1: none)
   size_t globalStateSize_ = 0;

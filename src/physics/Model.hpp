@@ -83,6 +83,8 @@ class Model {
   std::shared_ptr<const FiniteStrainSolid> strainKernel(const ElementBlock& blk, const Teuchos::ParameterList& bp,
                                                         const std::string& materialName,
                                                         const Teuchos::ParameterList& mp) const;
+  // A plastic material's parameters ('J2 plasticity' or 'Johnson-Cook'); the flow curve parsed.
+  J2Parameters plasticParameters(const std::string& materialName, const Teuchos::ParameterList& mp) const;
   void checkElementGeometry(const std::vector<BlockPhysics>& physics, const std::string& meshParameter) const;
   void readSprings(const Teuchos::ParameterList& springs);
   void buildDofMap(std::vector<std::uint8_t> mask, const std::string& method);

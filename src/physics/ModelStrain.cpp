@@ -3,6 +3,9 @@
 // part's stiffness.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
 
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
@@ -16,7 +19,8 @@ std::shared_ptr<const FiniteStrainSolid> Model::strainKernel(const ElementBlock&
                                                              const Teuchos::ParameterList& mp) const {
   const std::string strain = bp.get<std::string>("Strain"), law = mp.get<std::string>("Model");
   const std::string path = "Model/Blocks/" + blk.name, lawPath = "Model/Materials/" + materialName + "/Model";
-  const bool finite = strain == "finite", linearLaw = law == "linear elastic", plastic = law == "J2 plasticity";
+  const bool finite = strain == "finite", linearLaw = law == "linear elastic";
+  const bool plastic = law == "J2 plasticity" || law == "Johnson-Cook";
   if (blk.topology == "BEAM2" && finite)
     throwInput(inputFile_, path + "/Strain", strain, "beams (BEAM2) are small-strain in choc",
                "set 'Strain' = 'small' on block '" + blk.name + "'");
@@ -37,22 +41,66 @@ std::shared_ptr<const FiniteStrainSolid> Model::strainKernel(const ElementBlock&
                    " elements and 'Strain' = '" + strain + "'",
                "set 'Formulation' = 'standard', or 'Strain' = 'finite' on a HEX8 or QUAD4 block");
   if (!finite && !plastic) return nullptr;
-  if (plastic && !(mp.get<double>("Yield Stress") > 0))
-    throwInput(inputFile_, "Model/Materials/" + materialName + "/Yield Stress",
-               format("%g", mp.get<double>("Yield Stress")), "'J2 plasticity' needs the initial yield stress",
-               "give 'Yield Stress' > 0 [Pa]");
   try {
     const double E = mp.get<double>("Young's Modulus"), nu = mp.get<double>("Poisson's Ratio");
     if (plastic)
       return std::make_shared<const FiniteStrainSolid>(
-          blk.topology, kinematics_,
-          std::make_shared<const J2Plasticity>(
-              J2Parameters{E, nu, mp.get<double>("Yield Stress"), mp.get<double>("Hardening Modulus")}, finite),
+          blk.topology, kinematics_, std::make_shared<const J2Plasticity>(plasticParameters(materialName, mp), finite),
           fbar);
     return std::make_shared<const FiniteStrainSolid>(blk.topology, kinematics_, makeHyperelastic(law, E, nu), fbar);
   } catch (const std::invalid_argument& e) {
     throwInput(inputFile_, plastic ? "Model/Materials/" + materialName : path, "", e.what());
   }
+}
+
+// A 'J2 plasticity' or 'Johnson-Cook' material's parameters (J2Plasticity checks their ranges).
+J2Parameters Model::plasticParameters(const std::string& materialName, const Teuchos::ParameterList& mp) const {
+  const std::string path = "Model/Materials/" + materialName + "/";
+  J2Parameters p = linearHardening(mp.get<double>("Young's Modulus"), mp.get<double>("Poisson's Ratio"),
+                                   mp.get<double>("Yield Stress"), mp.get<double>("Hardening Modulus"));
+  if (mp.get<std::string>("Model") == "Johnson-Cook") {
+    p.johnsonCook = true;
+    JohnsonCookParameters& jc = p.jc;
+    jc.A = mp.get<double>("Johnson-Cook A"), jc.B = mp.get<double>("Johnson-Cook B");
+    jc.n = mp.get<double>("Johnson-Cook n"), jc.C = mp.get<double>("Johnson-Cook C");
+    jc.referenceRate = mp.get<double>("Reference Strain Rate"), jc.m = mp.get<double>("Johnson-Cook m");
+    jc.referenceTemperature = mp.get<double>("Reference Temperature");
+    jc.meltingTemperature = mp.get<double>("Melting Temperature");
+    jc.initialTemperature = mp.get<double>("Initial Temperature");
+    jc.specificHeat = mp.get<double>("Specific Heat");
+    jc.taylorQuinney = mp.get<double>("Taylor-Quinney Coefficient");
+    jc.density = mp.get<double>("Density");
+    return p;
+  }
+  const std::string curve = mp.get<std::string>("Flow Curve");
+  if (curve.empty()) {
+    if (!(p.yieldStress > 0))
+      throwInput(inputFile_, path + "Yield Stress", format("%g", p.yieldStress),
+                 "'J2 plasticity' needs the initial yield stress", "give 'Yield Stress' > 0 [Pa], or a 'Flow Curve'");
+    return p;
+  }
+  if (p.yieldStress > 0 || p.hardening > 0)
+    throwInput(inputFile_, path + "Flow Curve", curve, "a flow curve and 'Yield Stress'/'Hardening Modulus' are both given",
+               "give one of them");
+  std::istringstream in(curve);
+  std::string token;
+  std::vector<double> numbers;
+  while (in >> token) {
+    char* end = nullptr;
+    const double v = std::strtod(token.c_str(), &end);
+    if (*end != '\0' || !std::isfinite(v))
+      throwInput(inputFile_, path + "Flow Curve", curve, "'" + token + "' is not a number",
+                 "give pairs 'plastic_strain stress [Pa]'");
+    numbers.push_back(v);
+  }
+  if (numbers.empty() || numbers.size() % 2 != 0)
+    throwInput(inputFile_, path + "Flow Curve", curve, "the curve has " + std::to_string(numbers.size()) + " numbers",
+               "give pairs 'plastic_strain stress [Pa]', the first at plastic strain 0");
+  for (size_t i = 0; i < numbers.size(); i += 2) {
+    p.curve.strain.push_back(numbers[i]);
+    p.curve.stress.push_back(numbers[i + 1]);
+  }
+  return p;
 }
 
 bool Model::finiteStrain() const {

@@ -245,7 +245,7 @@ TEST(FBarRefused, OnOtherElementsAndInSmallStrain) {
   const auto m = makeHyperelastic("neo-Hookean", kE, kNu);
   EXPECT_THROW(FiniteStrainSolid("TET10", Kinematics::ThreeD, m, true), std::invalid_argument);
   EXPECT_THROW(FiniteStrainSolid("QUAD8", Kinematics::PlaneStrain, m, true), std::invalid_argument);
-  const auto small = std::make_shared<const J2Plasticity>(J2Parameters{kE, kNu, 1.0, 0.0}, false);
+  const auto small = std::make_shared<const J2Plasticity>(linearHardening(kE, kNu, 1.0, 0.0), false);
   EXPECT_THROW(FiniteStrainSolid("HEX8", Kinematics::ThreeD, small, true), std::invalid_argument);
 }
 
@@ -258,7 +258,7 @@ TEST_P(PlasticElement, TangentMatchesCentralDifferencesOfTheInternalForce) {
   const ElementCase& c = GetParam();
   for (bool finite : {false, true}) {
     // sigma_y = E / 200: the state below strains the element by several times its yield strain
-    const auto m = std::make_shared<const J2Plasticity>(J2Parameters{kE, kNu, kE / 200, kE / 20}, finite);
+    const auto m = std::make_shared<const J2Plasticity>(linearHardening(kE, kNu, kE / 200, kE / 20), finite);
     const FiniteStrainSolid el(c.topology, c.kinematics, m);
     Mat3 F1 = identity3();
     F1[0][0] = 1.02, F1[1][1] = 0.99;

@@ -18,7 +18,7 @@ using test::Dense;
 
 constexpr double kE = 117e9, kNu = 0.35, kYield = 400e6, kH = 100e6;  // the Taylor bar's copper
 
-J2Plasticity material(bool finite, double H = kH) { return J2Plasticity({kE, kNu, kYield, H}, finite); }
+J2Plasticity material(bool finite, double H = kH) { return J2Plasticity(linearHardening(kE, kNu, kYield, H), finite); }
 
 Mat3 matrixOf(const std::vector<double>& f) {
   Mat3 F{};
@@ -209,10 +209,10 @@ TEST(J2Plasticity, FiniteStrainIsObjective) {
 }
 
 TEST(J2Plasticity, RefusesParametersOutOfRange) {
-  EXPECT_THROW(J2Plasticity({kE, kNu, -1.0, kH}, true), std::invalid_argument);
-  EXPECT_THROW(J2Plasticity({kE, kNu, 0.0, kH}, true), std::invalid_argument);
-  EXPECT_THROW(J2Plasticity({kE, kNu, kYield, -1.0}, false), std::invalid_argument);
-  EXPECT_THROW(J2Plasticity({kE, 0.5, kYield, kH}, false), std::invalid_argument);
+  EXPECT_THROW(J2Plasticity(linearHardening(kE, kNu, -1.0, kH), true), std::invalid_argument);
+  EXPECT_THROW(J2Plasticity(linearHardening(kE, kNu, 0.0, kH), true), std::invalid_argument);
+  EXPECT_THROW(J2Plasticity(linearHardening(kE, kNu, kYield, -1.0), false), std::invalid_argument);
+  EXPECT_THROW(J2Plasticity(linearHardening(kE, 0.5, kYield, kH), false), std::invalid_argument);
   J2Response r;
   EXPECT_THROW(material(true).respond({{{-1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, material(true).initialState().data(), false, r),
                std::domain_error);
