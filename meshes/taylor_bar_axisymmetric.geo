@@ -10,7 +10,7 @@ EndIf
 R = 0.0032;
 L = 0.0324;
 m = Round(n * L / R);
-Point(1) = {0, 0, 0};
+Point(1) = {0, 0, 0};     // the impact face's centre: the final length is REAR - CENTRE
 Point(2) = {R, 0, 0};     // the impact face's edge: its radius is the test's result
 Point(3) = {R, L, 0};
 Point(4) = {0, L, 0};     // the rear face's centre: the final length
@@ -30,3 +30,4 @@ Physical Curve("IMPACT") = {1};
 Physical Curve("AXIS") = {4};
 Physical Point("EDGE") = {2};
 Physical Point("REAR") = {4};
+Physical Point("CENTRE") = {1};

@@ -336,6 +336,16 @@ choc_cli_input_error(plastic_no_yield check bad_plastic_no_yield.xml
   "parameter 'Model/Materials/steel/Yield Stress' = '0': 'J2 plasticity' needs the initial yield stress. give 'Yield Stress' > 0 .Pa.")
 choc_cli_input_error(plastic_hardening check bad_plastic_hardening.xml
   "parameter 'Model/Materials/steel/Hardening Modulus' = '-1e.09': out of range. valid: a number in .0, inf.")
+choc_cli_input_error(flow_curve_softening check bad_flow_curve_softening.xml
+  "parameter 'Model/Materials/steel': J2 plasticity material, 'Flow Curve': the flow stress must not decrease .softening is not supported., but 2.8e.08 Pa follows 3e.08 Pa")
+choc_cli_input_error(flow_curve_pairs check bad_flow_curve_pairs.xml
+  "parameter 'Model/Materials/steel/Flow Curve' = '0 250e6 0.05': the curve has 3 numbers. give pairs 'plastic_strain stress .Pa.', the first at plastic strain 0")
+choc_cli_input_error(johnson_cook_exponent check bad_johnson_cook_exponent.xml
+  "parameter 'Model/Materials/steel': Johnson-Cook material: needs 'Johnson-Cook n' in .0, 1., got 1.5")
+choc_cli_input_error(johnson_cook_no_melting check bad_johnson_cook_no_melting.xml
+  "parameter 'Model/Materials/steel': Johnson-Cook material: needs 'Melting Temperature' above 'Reference Temperature' .20., got 0")
+choc_cli_input_error(johnson_cook_melted check bad_johnson_cook_melted.xml
+  "parameter 'Model/Materials/steel': Johnson-Cook material: 'Initial Temperature' 1600 is at or above the melting temperature 1540")
 choc_cli_input_error(plastic_modal_transient check bad_plastic_modal.xml
   "parameter 'Model/Blocks/BEAM': a modal transient .'bend'. superposes the modes of the linear model. block 'BEAM' is plastic. use a direct 'Transient' analysis for plasticity, or a 'linear elastic' material")
 choc_cli_input_error(plastic_beam check bad_plastic_beam.xml

@@ -52,3 +52,7 @@ choc_cli_script(plastic_sphere 300)
 # locking standard QUAD4, the final length and radius within the published values widened by the
 # mesh's own error, 2 ranks equal 1 (scripts/taylor_bar.py).
 choc_cli_script(taylor_bar 300)
+# The Johnson-Cook Taylor bar (42CrMo4 at 287 m/s, adiabatic heating): length, diameter, largest
+# plastic strain and temperature against the published values widened by the mesh's own error,
+# the temperature as the plastic work's heat, 2 ranks equal 1 (scripts/taylor_bar_johnson_cook.py).
+choc_cli_script(taylor_bar_johnson_cook 300)

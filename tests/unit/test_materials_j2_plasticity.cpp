@@ -9,29 +9,20 @@
 #include <gtest/gtest.h>
 
 #include "fd_tangent.hpp"
+#include "j2_point_helpers.hpp"
 #include "materials/J2Plasticity.hpp"
 
 namespace choc {
 namespace {
 
 using test::Dense;
+using test::tangentAt;
+using test::uniaxial;
+using test::Uniaxial;
 
 constexpr double kE = 117e9, kNu = 0.35, kYield = 400e6, kH = 100e6;  // the Taylor bar's copper
 
 J2Plasticity material(bool finite, double H = kH) { return J2Plasticity(linearHardening(kE, kNu, kYield, H), finite); }
-
-Mat3 matrixOf(const std::vector<double>& f) {
-  Mat3 F{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) F[i][j] = f[size_t(3 * i + j)];
-  return F;
-}
-
-std::vector<double> entries(const Mat3& F) {
-  std::vector<double> f;
-  for (const auto& row : F) f.insert(f.end(), row.begin(), row.end());
-  return f;
-}
 
 // A state after plastic flow: the response to F1 from a virgin point.
 std::array<double, kJ2StateSize> flowedState(const J2Plasticity& m, const Mat3& F1) {
@@ -40,26 +31,6 @@ std::array<double, kJ2StateSize> flowedState(const J2Plasticity& m, const Mat3& 
   m.respond(F1, s0.data(), false, r);
   EXPECT_TRUE(r.yielded);
   return r.state;
-}
-
-::testing::AssertionResult tangentAt(const J2Plasticity& m, const Mat3& F, const double* state, bool expectYield) {
-  J2Response r;
-  m.respond(F, state, true, r);
-  if (r.yielded != expectYield) return ::testing::AssertionFailure() << "yielded = " << r.yielded;
-  auto P = [&](const std::vector<double>& f) {
-    J2Response q;
-    m.respond(matrixOf(f), state, false, q);
-    return entries(q.P);
-  };
-  Dense A(9, 9);
-  for (int a = 0; a < 9; ++a)
-    for (int b = 0; b < 9; ++b) A(a, b) = r.A[a][b];
-  test::TangentCheckOptions o;
-  o.scale = 1e-3;  // the strain over which the response varies near yield (sigma_y / E = 3.4e-3)
-  const auto x = entries(F);
-  auto ok = test::tangentMatches(P, A, x, o);
-  if (!ok) return ok;
-  return test::tangentMismatches(P, test::perturbed(A), x, o);
 }
 
 const Mat3 kGeneral = {{{1.012, 0.004, -0.003}, {0.006, 0.993, 0.002}, {-0.001, 0.005, 1.001}}};
@@ -112,27 +83,6 @@ TEST(J2Plasticity, TangentJustPastYield) {
     ASSERT_TRUE(r.yielded) << "finite " << finite;
     EXPECT_TRUE(tangentAt(m, F, m.initialState().data(), true)) << "finite " << finite;
   }
-}
-
-// Uniaxial stress, F = diag(l, t, t) with t such that the lateral stress is zero (bisection).
-// Small strain: sigma = E eps below yield, sigma = (sigma_y + H eps) / (1 + H / E) above.
-// Finite strain: the same in the Kirchhoff stress tau = P_11 l and the logarithmic strain ln l
-// (Hencky elasticity and the exponential map: exact on a proportional path).
-struct Uniaxial {
-  double axial, alpha;
-};
-
-Uniaxial uniaxial(const J2Plasticity& m, double l, const double* state, std::array<double, kJ2StateSize>* next) {
-  auto lateral = [&](double t, J2Response& r) {
-    m.respond({{{l, 0, 0}, {0, t, 0}, {0, 0, t}}}, state, false, r);
-    return r.P[1][1];
-  };
-  J2Response r;
-  double lo = 0.5, hi = 1.5;  // lateral stress rises with t
-  for (int k = 0; k < 200; ++k) (lateral(0.5 * (lo + hi), r) > 0 ? hi : lo) = 0.5 * (lo + hi);
-  lateral(0.5 * (lo + hi), r);
-  if (next) *next = r.state;
-  return {m.finiteStrain() ? r.P[0][0] * l : r.P[0][0], r.state[kJ2Alpha]};
 }
 
 TEST(J2PlasticityClosedForm, UniaxialLoadingUnloadingAndReverseYield) {

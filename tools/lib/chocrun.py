@@ -335,6 +335,27 @@ def history_path(out_dir, analysis):
     return os.path.join(out_dir, f"{analysis}.history.csv")
 
 
+def read_element_fields(exo, names, step=-1):
+    """Element variables of an Exodus file at one output step (the last by default), every block's
+    elements one after the other: {name: numpy array}. Names end at their first NUL."""
+    import netCDF4
+    import numpy as np
+    with netCDF4.Dataset(exo) as d:
+        raw = d.variables["name_elem_var"]
+        raw.set_auto_mask(False)
+        stored = [row.tobytes().split(b"\0")[0].decode().strip() for row in raw[:]]
+        blocks = len(d.dimensions["num_el_blk"])
+        out = {}
+        for name in names:
+            if name not in stored:
+                raise KeyError(f"{exo} has no element variable '{name}' (it has {', '.join(stored)})")
+            k = stored.index(name) + 1
+            parts = [np.asarray(d.variables[f"vals_elem_var{k}eb{b}"][step])
+                     for b in range(1, blocks + 1) if f"vals_elem_var{k}eb{b}" in d.variables]
+            out[name] = np.concatenate(parts)
+        return out
+
+
 def read_history(path_or_dir, analysis=None):
     """<out_dir>/<analysis>.history.csv (or a CSV path) as a History; its first column is 'time'."""
     import numpy as np

@@ -1,0 +1,192 @@
+// The flow-stress laws of J2 plasticity (FlowStress.hpp) alone and in the return map: a flow
+// curve's interpolation, Johnson-Cook's value and slope (hardening, rate, temperature), their
+// refused parameters; the consistent tangent against central differences with each law; the
+// uniaxial closed forms (a flow curve's stress-strain curve, Johnson-Cook at a fixed rate and
+// with thermal softening); the adiabatic heating against the plastic work.
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "j2_point_helpers.hpp"
+#include "materials/FlowStress.hpp"
+#include "materials/J2Plasticity.hpp"
+
+namespace choc {
+namespace {
+
+using test::tangentAt;
+using test::uniaxial;
+
+constexpr double kE = 206.9e9, kNu = 0.3, kRho = 7830;  // BENCHMARKS.md section 11's 42CrMo4
+
+JohnsonCookParameters steel() {
+  JohnsonCookParameters p;
+  p.A = 806e6, p.B = 614e6, p.n = 0.168, p.C = 0.0089, p.referenceRate = 1.0, p.m = 1.1;
+  p.referenceTemperature = 20, p.meltingTemperature = 1540, p.initialTemperature = 20;
+  p.specificHeat = 460, p.taylorQuinney = 0.9, p.density = kRho;
+  return p;
+}
+
+J2Parameters johnsonCook(const JohnsonCookParameters& jc) {
+  J2Parameters p = linearHardening(kE, kNu, 0.0, 0.0);
+  p.johnsonCook = true;
+  p.jc = jc;
+  return p;
+}
+
+// sigma_y = 400 MPa, rising by 200 MPa over alpha = 0.01, by 50 MPa more to 0.1, then constant.
+FlowCurve curve() { return {{0.0, 0.01, 0.1}, {400e6, 600e6, 650e6}}; }
+
+J2Parameters withCurve() {
+  J2Parameters p = linearHardening(kE, kNu, 0.0, 0.0);
+  p.curve = curve();
+  return p;
+}
+
+TEST(FlowStress, CurveInterpolatesAndStaysConstantBeyondItsEnd) {
+  const FlowStress f = FlowStress::curve(curve());
+  EXPECT_DOUBLE_EQ(f.at(0.0, 0.0, 0.0, 0.0).stress, 400e6);
+  EXPECT_DOUBLE_EQ(f.at(0.0, 0.0, 0.0, 0.0).slope, 2e10);
+  EXPECT_DOUBLE_EQ(f.at(0.004, 0.001, 0.0, 0.0).stress, 500e6);  // alpha_old + dalpha = 0.005
+  EXPECT_DOUBLE_EQ(f.at(0.055, 0.0, 0.0, 0.0).stress, 625e6);
+  EXPECT_NEAR(f.at(0.055, 0.0, 0.0, 0.0).slope, 50e6 / 0.09, 1e-6);
+  EXPECT_DOUBLE_EQ(f.at(0.3, 0.0, 0.0, 0.0).stress, 650e6);
+  EXPECT_DOUBLE_EQ(f.at(0.3, 0.0, 0.0, 0.0).slope, 0.0);
+}
+
+TEST(FlowStress, RefusesCurvesThatAreNotFlowCurves) {
+  EXPECT_THROW(FlowStress::curve({{0.001, 0.01}, {400e6, 500e6}}), std::invalid_argument);  // not from 0
+  EXPECT_THROW(FlowStress::curve({{0.0, 0.01, 0.01}, {400e6, 500e6, 600e6}}), std::invalid_argument);
+  EXPECT_THROW(FlowStress::curve({{0.0, 0.01}, {400e6, 399e6}}), std::invalid_argument);  // softening
+  EXPECT_THROW(FlowStress::curve({{0.0, 0.01}, {0.0, 100e6}}), std::invalid_argument);
+  EXPECT_THROW(FlowStress::curve({{0.0}, {}}), std::invalid_argument);
+  EXPECT_NO_THROW(FlowStress::curve({{0.0}, {400e6}}));  // perfectly plastic
+}
+
+// The formula written out independently of FlowStress, and its slope by central differences.
+TEST(FlowStress, JohnsonCookValueAndSlope) {
+  const JohnsonCookParameters p = steel();
+  const FlowStress f = FlowStress::johnsonCook(p);
+  const double alphaOld = 0.3, dalpha = 2e-4, dt = 1e-8, T = 400;  // a rate of 2e4 / s
+  const double expected = (806e6 + 614e6 * std::pow(0.3002, 0.168)) * (1 + 0.0089 * std::log(2e4)) *
+                          (1 - std::pow((400.0 - 20) / 1520, 1.1));
+  const FlowStress::Value v = f.at(alphaOld, dalpha, dt, T);
+  EXPECT_NEAR(v.stress, expected, 1e-12 * expected);
+  const double h = 1e-7;
+  const double fd = (f.at(alphaOld, dalpha + h, dt, T).stress - f.at(alphaOld, dalpha - h, dt, T).stress) / (2 * h);
+  EXPECT_NEAR(v.slope, fd, 1e-6 * std::abs(fd));
+  // Below the reference rate the quasi-static law; at or above the melting point no strength.
+  EXPECT_NEAR(f.at(0.3, 1e-9, 1e-8, 20).stress, 806e6 + 614e6 * std::pow(0.3 + 1e-9, 0.168), 1e-3);
+  EXPECT_EQ(f.at(0.3, 0.0, 1e-8, 1540).stress, 0.0);
+  EXPECT_EQ(f.at(0.3, 0.0, 1e-8, 2000).stress, 0.0);
+  EXPECT_NEAR(f.heatPerWork(), 0.9 / (kRho * 460), 1e-18);
+}
+
+TEST(FlowStress, RefusesJohnsonCookParametersOutOfRange) {
+  auto refused = [](auto change) {
+    JohnsonCookParameters p = steel();
+    change(p);
+    EXPECT_THROW(FlowStress::johnsonCook(p), std::invalid_argument);
+  };
+  refused([](JohnsonCookParameters& p) { p.A = 0; });
+  refused([](JohnsonCookParameters& p) { p.B = -1; });
+  refused([](JohnsonCookParameters& p) { p.n = 0; });
+  refused([](JohnsonCookParameters& p) { p.n = 1.5; });
+  refused([](JohnsonCookParameters& p) { p.C = -0.01; });
+  refused([](JohnsonCookParameters& p) { p.referenceRate = 0; });
+  refused([](JohnsonCookParameters& p) { p.m = 0; });
+  refused([](JohnsonCookParameters& p) { p.meltingTemperature = 20; });
+  refused([](JohnsonCookParameters& p) { p.initialTemperature = 1540; });
+  refused([](JohnsonCookParameters& p) { p.taylorQuinney = 1.1; });
+  refused([](JohnsonCookParameters& p) { p.specificHeat = 0; });
+  JohnsonCookParameters isothermal = steel();
+  isothermal.taylorQuinney = 0, isothermal.specificHeat = 0;
+  EXPECT_NO_THROW(FlowStress::johnsonCook(isothermal));
+  EXPECT_THROW(J2Plasticity(johnsonCook(JohnsonCookParameters{}), true), std::invalid_argument);
+}
+
+const Mat3 kGeneral = {{{1.012, 0.004, -0.003}, {0.006, 0.993, 0.002}, {-0.001, 0.005, 1.001}}};
+
+// The consistent tangent with the rate term (dt = 10 ns: rates of 1e5 / s) and at a heated point.
+TEST(FlowStress, TangentMatchesCentralDifferencesWithEachLaw) {
+  for (bool finite : {false, true}) {
+    const J2Plasticity jc(johnsonCook(steel()), finite), table(withCurve(), finite);
+    for (const J2Plasticity* m : {&jc, &table}) {
+      auto s = m->initialState();
+      EXPECT_TRUE(tangentAt(*m, kGeneral, s.data(), true, 1e-8)) << "finite " << finite;
+      J2Response r;
+      m->respond(kGeneral, s.data(), false, r, false, 1e-8);
+      s = r.state;  // yielded, and heated with Johnson-Cook
+      Mat3 F = kGeneral;
+      F[0][1] += 0.004, F[2][2] -= 0.003;
+      EXPECT_TRUE(tangentAt(*m, F, s.data(), true, 1e-8)) << "finite " << finite;
+      EXPECT_TRUE(tangentAt(*m, F, s.data(), true, 0.0)) << "finite " << finite;  // quasi-static
+    }
+  }
+}
+
+// Uniaxial stress along a flow curve in one increment (a proportional path: backward Euler is
+// exact): at a plastic strain alpha, sigma = sigma_y(alpha) at the total strain alpha + sigma / E
+// (finite strain: tau and the logarithmic strain).
+TEST(FlowStressClosedForm, UniaxialStressFollowsTheFlowCurve) {
+  const FlowStress f = FlowStress::curve(curve());
+  for (bool finite : {false, true}) {
+    const J2Plasticity m(withCurve(), finite);
+    for (double alpha : {0.002, 0.01, 0.04, 0.2}) {
+      const double sigma = f.at(alpha, 0.0, 0.0, 0.0).stress, e = alpha + sigma / kE;
+      const test::Uniaxial u = uniaxial(m, finite ? std::exp(e) : 1 + e, m.initialState().data(), nullptr);
+      EXPECT_NEAR(u.axial, sigma, 1e-9 * sigma) << "alpha " << alpha << " finite " << finite;
+      EXPECT_NEAR(u.alpha, alpha, 1e-9) << "alpha " << alpha << " finite " << finite;
+    }
+  }
+}
+
+// Johnson-Cook in uniaxial stress, small strain, loaded in increments of dt at a strain rate of
+// 1e4 / s: after each increment the stress is the law at the increment's plastic rate
+// dalpha / dt and the point's temperature before it; the temperature rises by
+// chi / (rho c) sum sigma_y dalpha, which is chi / (rho c) times the plastic work (the
+// trapezoidal work the energy balance counts) within the difference of the two quadratures,
+// sum |d sigma| dalpha / 2.
+TEST(FlowStressClosedForm, JohnsonCookAtAStrainRateWithHeating) {
+  const JohnsonCookParameters p = steel();
+  const J2Plasticity m(johnsonCook(p), false);
+  const double rate = 1e4, de = 2e-4, dt = de / rate;
+  auto s = m.initialState();
+  double work = 0.0, quadratureGap = 0.0, lastStress = 0.0;
+  for (int k = 1; k <= 500; ++k) {  // to a strain of 0.1
+    std::array<double, kJ2StateSize> next{};
+    const test::Uniaxial u = uniaxial(m, 1 + k * de, s.data(), &next, dt);
+    const double dalpha = next[kJ2Alpha] - s[kJ2Alpha];
+    if (dalpha > 0) {
+      const double T = s[kJ2Temperature];
+      const double expected = (p.A + p.B * std::pow(next[kJ2Alpha], p.n)) *
+                              (1 + p.C * std::log(std::max(dalpha / dt, 1.0))) *
+                              (1 - std::pow((T - p.referenceTemperature) / (p.meltingTemperature - p.referenceTemperature), p.m));
+      ASSERT_NEAR(u.axial, expected, 1e-9 * expected) << "increment " << k;
+      quadratureGap += 0.5 * std::abs(u.axial - lastStress) * dalpha;
+    }
+    lastStress = u.axial;
+    work += 0.5 * (s[kJ2Stress] + u.axial) * de - (next[kJ2Energy] - s[kJ2Energy]);
+    s = next;
+  }
+  EXPECT_GT(s[kJ2Alpha], 0.09);
+  const double rise = s[kJ2Temperature] - p.initialTemperature;
+  EXPECT_GT(rise, 10.0);  // about 0.1 x 1.2 GPa x 0.9 / (7830 x 460)
+  EXPECT_NEAR(rise, m.flowStress().heatPerWork() * work, m.flowStress().heatPerWork() * (quadratureGap + 1e-9 * work));
+}
+
+// A point heated to the melting temperature has no deviatoric strength.
+TEST(FlowStressClosedForm, MeltedPointCarriesNoShear) {
+  const J2Plasticity m(johnsonCook(steel()), true);
+  auto s = m.initialState();
+  s[kJ2Temperature] = 1540;
+  J2Response r;
+  m.respond({{{1, 0.01, 0}, {0.01, 1, 0}, {0, 0, 1}}}, s.data(), false, r, false, 1e-8);
+  EXPECT_TRUE(r.yielded);
+  EXPECT_NEAR(vonMises(r.cauchy), 0.0, 1e-6 * kE * 0.01);
+}
+
+}  // namespace
+}  // namespace choc
