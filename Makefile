@@ -113,11 +113,13 @@ study: build
 	$(PYTHON) tools/study/explicit_implicit_study.py --build $(BUILD) --out results/study/explicit-implicit
 	$(PYTHON) tools/study/small_vs_finite_study.py --build $(BUILD) --out results/study/small-vs-finite
 	$(PYTHON) tools/study/taylor_bar_study.py --build $(BUILD) --out results/study/taylor-bar
+	$(PYTHON) tools/study/taylor_bar_study.py --build $(BUILD) --law johnson-cook --out results/study/taylor-bar-jc
 
 # The Taylor bar's mesh convergence, QUAD4 F-bar against standard QUAD4 and QUAD8
 # (docs/verification/taylor-bar.md; about 15 minutes).
 study-plastic: build
 	$(PYTHON) tools/study/taylor_bar_study.py --build $(BUILD) --out results/study/taylor-bar
+	$(PYTHON) tools/study/taylor_bar_study.py --build $(BUILD) --law johnson-cook --out results/study/taylor-bar-jc
 
 # Small against finite strain: the rubber ball at rising speeds (docs/verification/rubber-ball.md).
 study-finite: build

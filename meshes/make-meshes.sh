@@ -44,6 +44,7 @@ gmsh -3 -order 2 -format msh41 -setnumber nx 16 -setnumber hex 1 "$here/elastica
   -o "$here/elastica_beam_hex20.msh" > /dev/null
 # The Taylor bar (plasticity): the axisymmetric rectangle, 8 x 81 QUAD4 of 0.4 mm.
 gmsh -2 -format msh41 "$here/taylor_bar_axisymmetric.geo" -o "$here/taylor_bar_axisymmetric.msh" > /dev/null
+gmsh -3 -format msh41 -setnumber n 4 "$here/taylor_bar_3d.geo" -o "$here/taylor_bar_3d.msh" > /dev/null
 # SDND101: the oscillator on a stop, one beam standing for the discrete spring and mass.
 gmsh -1 -format msh41 "$here/sdnd101.geo" -o "$here/sdnd101.msh" > /dev/null
 # SDNL32: the articulated beam, the deck's 11 nodes.
