@@ -8,9 +8,10 @@
 //
 // alpha the equivalent plastic strain, rate = d alpha / dt over the increment (below rate_0,
 // and when the increment has no duration, the rate factor is 1: the quasi-static law), T the
-// temperature. Johnson-Cook's adiabatic heating: the increment's plastic work raises the point's
-// temperature by chi sigma_y d alpha / (rho c) (chi the Taylor-Quinney coefficient, the share of
-// the work that becomes heat), used from the next increment on (the temperature is explicit in
+// temperature. Johnson-Cook's adiabatic heating: the increment's plastic work dD (J2Response::
+// plasticWork, the work the energy balance counts; about sigma_y d alpha) raises the point's
+// temperature by chi dD / (rho c) (chi the Taylor-Quinney coefficient, the share of the work that
+// becomes heat), used from the next increment on (the temperature is explicit in
 // the return map: the usual staggering in impact codes, whose steps are far shorter than the
 // heating's time scale).
 //

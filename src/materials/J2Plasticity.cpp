@@ -139,16 +139,19 @@ void J2Plasticity::respond(const Mat3& F, const double* old, bool withTangent, J
     respondSmall(F, old, withTangent, elasticTangent, dt, out);
 }
 
-// What both kinematics end a point with: alpha, the temperature (the plastic work's heat), the
-// stored energy K/2 (tr eps)^2 + mu ||theta e||^2 (dev eps_e = theta e), and the increment's work.
+// What both kinematics end a point with: alpha, the stored energy K/2 (tr eps)^2 + mu ||theta e||^2
+// (dev eps_e = theta e), the increment's work and the temperature (that work's heat).
 void J2Plasticity::finishPoint(const Mat3& F, const double* old, const Return& r, double tr, double normE,
                                J2Response& out) const {
   const double dalpha = kSqrt23 * r.dgamma;
   out.state[kJ2Alpha] = old[kJ2Alpha] + dalpha;
-  out.state[kJ2Temperature] = old[kJ2Temperature] + flow_.heatPerWork() * r.flowStress * dalpha;
   out.yielded = r.yielded;
   out.energy = 0.5 * kappa_ * tr * tr + mu_ * r.theta * r.theta * normE * normE;
   recordIncrement(F, old, out);
+  // The heat: chi / (rho c) times the increment's dissipated work, the one the energy balance
+  // counts, so that the heat is chi times energy:plastic (at an elastic increment that work is the
+  // trapezoid's O(|dF|^3) error: microkelvins).
+  out.state[kJ2Temperature] = old[kJ2Temperature] + flow_.heatPerWork() * out.plasticWork;
 }
 
 void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic, double dt,

@@ -20,23 +20,26 @@ const std::vector<std::string>& energyColumns() {
 }
 
 std::vector<std::string> historyColumns(const std::vector<std::string>& probeColumns,
-                                        const std::vector<std::string>& interactionColumns) {
+                                        const std::vector<std::string>& interactionColumns, bool plastic) {
   std::vector<std::string> c = probeColumns;
   c.insert(c.end(), energyColumns().begin(), energyColumns().end());
+  if (plastic) c.insert(c.end() - 2, "energy:plastic");  // after energy:dissipated
   c.insert(c.end(), interactionColumns.begin(), interactionColumns.end());
   return c;
 }
 
 HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> columns,
                                  const std::string& csvPath, const EnergyBalanceSettings& energy)
-    : what_(std::move(what)), columns_(std::move(columns)), balance_(energy, what_) {
+    : what_(std::move(what)), columns_(std::move(columns)), balance_(energy, what_),
+      plastic_(std::find(columns_.begin(), columns_.end(), "energy:plastic") != columns_.end()) {
   if (!csvPath.empty() && isRootRank()) csv_ = std::make_unique<HistoryCsv>(csvPath, columns_);
 }
 
 HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> columns,
                                  const std::string& csvPath, const EnergyBalanceSettings& energy,
                                  const StateArchive& resume, const Comm& comm)
-    : what_(std::move(what)), columns_(std::move(columns)), balance_(energy, what_) {
+    : what_(std::move(what)), columns_(std::move(columns)), balance_(energy, what_),
+      plastic_(std::find(columns_.begin(), columns_.end(), "energy:plastic") != columns_.end()) {
   balance_.setState(resume.getPod<EnergyBalanceMonitor::State>("history/balance"));
   energies_ = resume.getPod<EnergyTerms>("history/energies");
   const auto rows = static_cast<std::size_t>(resume.getInt("history/rows"));
@@ -80,7 +83,9 @@ void HistoryObserver::step(TransientView& view) {
   std::vector<double> row = view.probeValues();
   energies_ = view.energies();
   const EnergyTerms& e = energies_;
-  for (double x : {e.kinetic, e.strain, e.contact, e.dissipated, e.total()}) row.push_back(x);
+  for (double x : {e.kinetic, e.strain, e.contact, e.dissipated}) row.push_back(x);
+  if (plastic_) row.push_back(e.plastic);
+  row.push_back(e.total());
   row.push_back(balance_.update(pt.time, e.total() - e.shadow, e.dissipated, e.external));
   if (const InteractionOutput* io = view.interactions()) {
     const std::vector<double> v = io->historyValues();

@@ -21,9 +21,10 @@ namespace choc {
 // energy:kinetic, energy:strain, energy:contact, energy:dissipated, energy:total, energy:balance.
 const std::vector<std::string>& energyColumns();
 
-// The history's columns after "time": probes, energies, interactions.
+// The history's columns after "time": probes, energies (with `plastic`, energy:plastic after
+// energy:dissipated: the plastic work, a part of it), interactions.
 std::vector<std::string> historyColumns(const std::vector<std::string>& probeColumns,
-                                        const std::vector<std::string>& interactionColumns);
+                                        const std::vector<std::string>& interactionColumns, bool plastic = false);
 
 class HistoryObserver : public TransientObserver {
  public:
@@ -58,6 +59,7 @@ class HistoryObserver : public TransientObserver {
   EnergyTerms energies_;
   std::string pending_;
   bool single_ = true;
+  bool plastic_ = false;  // the energy:plastic column (models with plastic blocks)
 };
 
 }  // namespace choc

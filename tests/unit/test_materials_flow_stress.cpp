@@ -145,16 +145,16 @@ TEST(FlowStressClosedForm, UniaxialStressFollowsTheFlowCurve) {
 
 // Johnson-Cook in uniaxial stress, small strain, loaded in increments of dt at a strain rate of
 // 1e4 / s: after each increment the stress is the law at the increment's plastic rate
-// dalpha / dt and the point's temperature before it; the temperature rises by
-// chi / (rho c) sum sigma_y dalpha, which is chi / (rho c) times the plastic work (the
-// trapezoidal work the energy balance counts) within the difference of the two quadratures,
-// sum |d sigma| dalpha / 2.
+// dalpha / dt and the point's temperature before it; the temperature rises by chi / (rho c) times
+// the plastic work (the trapezoidal work the energy balance counts, summed here from the
+// stresses), to round-off; and that work is sum sigma_y dalpha within the difference of the two
+// quadratures, sum |d sigma| dalpha / 2.
 TEST(FlowStressClosedForm, JohnsonCookAtAStrainRateWithHeating) {
   const JohnsonCookParameters p = steel();
   const J2Plasticity m(johnsonCook(p), false);
   const double rate = 1e4, de = 2e-4, dt = de / rate;
   auto s = m.initialState();
-  double work = 0.0, quadratureGap = 0.0, lastStress = 0.0;
+  double work = 0.0, flowWork = 0.0, quadratureGap = 0.0, lastStress = 0.0;
   for (int k = 1; k <= 500; ++k) {  // to a strain of 0.1
     std::array<double, kJ2StateSize> next{};
     const test::Uniaxial u = uniaxial(m, 1 + k * de, s.data(), &next, dt);
@@ -166,6 +166,7 @@ TEST(FlowStressClosedForm, JohnsonCookAtAStrainRateWithHeating) {
                               (1 - std::pow((T - p.referenceTemperature) / (p.meltingTemperature - p.referenceTemperature), p.m));
       ASSERT_NEAR(u.axial, expected, 1e-9 * expected) << "increment " << k;
       quadratureGap += 0.5 * std::abs(u.axial - lastStress) * dalpha;
+      flowWork += u.axial * dalpha;
     }
     lastStress = u.axial;
     work += 0.5 * (s[kJ2Stress] + u.axial) * de - (next[kJ2Energy] - s[kJ2Energy]);
@@ -174,7 +175,8 @@ TEST(FlowStressClosedForm, JohnsonCookAtAStrainRateWithHeating) {
   EXPECT_GT(s[kJ2Alpha], 0.09);
   const double rise = s[kJ2Temperature] - p.initialTemperature;
   EXPECT_GT(rise, 10.0);  // about 0.1 x 1.2 GPa x 0.9 / (7830 x 460)
-  EXPECT_NEAR(rise, m.flowStress().heatPerWork() * work, m.flowStress().heatPerWork() * (quadratureGap + 1e-9 * work));
+  EXPECT_NEAR(rise, m.flowStress().heatPerWork() * work, 1e-9 * rise);
+  EXPECT_NEAR(work, flowWork, quadratureGap + 1e-9 * work);
 }
 
 // A point heated to the melting temperature has no deviatoric strength.

@@ -15,9 +15,14 @@ Checked:
     accuracy target for the copper bar), whichever is larger. Measured: the length 0.2 % below the
     spread (26.467 mm; 26.455 on 8 x 81), the diameter within it (11.227 mm; 11.295 on 8 x 81): see
     docs/verification/taylor-bar.md;
-  - the temperature is the heat of the plastic work: the hottest element is the most strained one,
-    and its rise lies between chi/(rho c) times A alpha (the least flow stress) and chi/(rho c) times
-    the largest flow stress the law gives at that strain and a rate of 1e6 / s, times alpha;
+  - the temperature is the heat of the plastic work: rho c times the integral of T - T0 over the bar
+    (the element averages times the elements' ring volumes) equals chi times energy:plastic (the
+    history's plastic work, which never falls by more than 1e-9 of its end value in a step: the
+    trapezoid's error at elastic increments, measured 5e-12) to 1e-9 of it (the heat of each point is chi times its
+    increment of that work: round-off of the sums and of the 16-digit Exodus values); the hottest element is the most
+    strained one, and its rise lies between chi/(rho c) times A alpha (the least flow stress) and
+    chi/(rho c) times the largest flow stress the law gives at that strain and a rate of 1e6 / s,
+    times alpha;
   - 2 ranks give the 1-rank histories to 1e-8 of the peaks (5 x 51).
 usage: taylor_bar_johnson_cook.py CHOC SOURCE_DIR WORK_DIR"""
 import math
@@ -36,6 +41,19 @@ PUBLISHED = {"length": (26.52, 26.56), "diameter": (11.15, 11.22), "strain": (1.
              "temperature": (582, 597)}
 os.makedirs(work, exist_ok=True)
 failures = []
+
+
+def ring_volumes(exo):
+    """Each QUAD4's volume of revolution, 2 pi r_centroid area (Pappus), in the reference mesh."""
+    import netCDF4
+    with netCDF4.Dataset(exo) as d:
+        x, y = np.asarray(d.variables["coordx"][:]), np.asarray(d.variables["coordy"][:])
+        c = np.asarray(d.variables["connect1"][:]) - 1
+    X, Y = x[c], y[c]
+    cross = X * np.roll(Y, -1, axis=1) - np.roll(X, -1, axis=1) * Y
+    area = 0.5 * cross.sum(axis=1)
+    centroid = ((X + np.roll(X, -1, axis=1)) * cross).sum(axis=1) / (6 * area)
+    return 2 * math.pi * centroid * np.abs(area)
 
 
 def run(n, label, ranks=1):
@@ -62,6 +80,13 @@ def run(n, label, ranks=1):
         failures.append(f"{label}: energy created, balance up to {bal.max() / e0:.2e} E0")
     if not h["energy:dissipated"][-1] >= 0.97 * e0:
         failures.append(f"{label}: plastic work {h['energy:dissipated'][-1]:.4g} J below 97 % of E0")
+    plastic = np.asarray(h["energy:plastic"])
+    heat = RHO * HEAT * float(np.sum((temp - T0) * ring_volumes(os.path.join(out, "impact.exo"))))
+    print(f"{label}: heat {heat:.6g} J against chi x energy:plastic {CHI * plastic[-1]:.6g} J "
+          f"({heat / (CHI * plastic[-1]) - 1:+.1e})")
+    if not (abs(heat - CHI * plastic[-1]) <= 1e-9 * CHI * plastic[-1] and np.all(np.diff(plastic) >= -1e-9 * plastic[-1])):
+        failures.append(f"{label}: the heat {heat:.9g} J is not chi times the plastic work {plastic[-1]:.9g} J "
+                        "(or the plastic work decreases)")
     hottest = int(np.argmax(temp))
     a = float(strain[hottest])
     lo = CHI / (RHO * HEAT) * A * a
