@@ -77,6 +77,20 @@ def finish(failures, ok):
     print(ok)
 
 
+def ranks_agree(h1, h2, columns, tolerance=1e-8, label="2 ranks against 1"):
+    """Compares two histories' columns (the 1-rank and the 2-rank run) to `tolerance` of each
+    column's peak in h1, printing each; returns the failures' descriptions."""
+    import numpy as np
+    failures = []
+    for col in columns:
+        peak = float(np.max(np.abs(h1[col])))
+        diff = float(np.max(np.abs(np.asarray(h2[col]) - np.asarray(h1[col])))) / peak
+        print(f"{label}, {col}: {diff:.1e} of the peak (at most {tolerance:g})")
+        if not diff <= tolerance:
+            failures.append(f"{label}: {col} differs by {diff:.1e} of its peak")
+    return failures
+
+
 # ------------------------------------------------------------------ paths
 def tool_dir(role):
     """tools/<role> (build, oracles, bench, study, report, docs, lib)."""
