@@ -79,7 +79,7 @@ def plot(rows, path, law):
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for ax, key in zip(axes, ("radius", "length")):
-        fb = [r for r in rows if "F-bar" in r["mesh"] and "QUAD4" in r["mesh"]]
+        fb = sorted((r for r in rows if "F-bar" in r["mesh"] and "QUAD4" in r["mesh"]), key=lambda r: r["n"])
         ax.semilogx([3.2 / r["n"] for r in fb], [r[key] for r in fb], "o-", label="QUAD4 F-bar")
         for r in rows:
             if r not in fb:
