@@ -179,6 +179,31 @@ TEST(FlowStressClosedForm, JohnsonCookAtAStrainRateWithHeating) {
   EXPECT_NEAR(work, flowWork, quadratureGap + 1e-9 * work);
 }
 
+// Johnson-Cook's return in finite strain is objective like J2's: a rotation R applied after F, from
+// a heated, yielded state and with the rate term (dt = 10 ns), turns the stress, P(R F) = R P(F),
+// and leaves alpha and the stored energy as they are. (The temperature is not compared: its source,
+// the trapezoid of P : dF over the increment, counts a rotation within one increment; 0.9 rad
+// here moves it by 45 K, a rotation of 1e-4 rad per step by far less. A scene drawn turned as a
+// whole turns F_n too and is exact: cli.taylor_bar_3d.)
+TEST(FlowStress, JohnsonCookIsObjective) {
+  const J2Plasticity m(johnsonCook(steel()), true);
+  J2Response first;
+  m.respond(kGeneral, m.initialState().data(), false, first, false, 1e-8);
+  ASSERT_TRUE(first.yielded);
+  const Mat3 F = {{{1.03, 0.012, -0.004}, {0.007, 0.985, 0.009}, {-0.006, 0.003, 0.99}}};
+  const double c = std::cos(0.9), s = std::sin(0.9);
+  const Mat3 R = multiply(Mat3{{{c, -s, 0}, {s, c, 0}, {0, 0, 1}}}, Mat3{{{1, 0, 0}, {0, c, s}, {0, -s, c}}});
+  J2Response a, b;
+  m.respond(F, first.state.data(), false, a, false, 1e-8);
+  m.respond(multiply(R, F), first.state.data(), false, b, false, 1e-8);
+  ASSERT_TRUE(a.yielded);
+  const Mat3 RP = multiply(R, a.P);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_NEAR(b.P[i][j], RP[i][j], 1e-12 * 806e6 * 10);  // round-off of the eigen solve
+  EXPECT_NEAR(b.state[kJ2Alpha], a.state[kJ2Alpha], 1e-13);
+  EXPECT_NEAR(b.energy, a.energy, 1e-12 * a.energy);
+}
+
 // A point heated to the melting temperature has no deviatoric strength.
 TEST(FlowStressClosedForm, MeltedPointCarriesNoShear) {
   const J2Plasticity m(johnsonCook(steel()), true);
