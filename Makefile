@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test study study-plastic bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
+.PHONY: all deps configure build run test verify study study-plastic bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
 
 all: build
 
@@ -25,9 +25,15 @@ build: configure
 run: build
 	tools/build/run-suite.sh $(BUILD)
 
-# The whole test suite (unit tests, regression cases, error messages).
+# The test suite (unit tests, regression cases, restarts, error messages, the shorter scenes):
+# every test but the verification tier, under 30 minutes from a clean clone on 2 cores.
 test: build
-	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE verify $(CTEST_ARGS)
+
+# The verification tier (label 'verify'): the scene tests over 40 s each, the sanitizer build and
+# the fuzzers. `.ci/run` runs it after `make test`; together they are every test.
+verify: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L verify $(CTEST_ARGS)
 
 # The scale benchmark: input/scale-3d.xml (300,300 unknowns) on 1 and 2 MPI ranks, then smaller
 # sizes of the same scene (docs/performance/scale.md); generates meshes/scale_3d.exo when missing. Then the
