@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build run test verify study study-plastic bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
+.PHONY: all deps configure build run test verify study study-plastic bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-plastic bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
 
 all: build
 
@@ -53,6 +53,7 @@ bench: build
 	$(PYTHON) tools/bench/bench_bracket.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_oblique_sphere.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_finite_strain.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_plastic.py --build $(BUILD)
 
 # The direct packages on contact scenes: KLU2 on rank 0 against MUMPS on every rank, 1 and 2
 # ranks; the scale scene's bars, then a compact block (against penalty contact too).
@@ -74,6 +75,11 @@ bench-oblique: build
 # explicit and implicit, HEX8 and TET10, 1 and 2 ranks.
 bench-finite: build
 	$(PYTHON) tools/bench/bench_finite_strain.py --build $(BUILD)
+
+# Explicit J2 per element-cycle: the 3D Taylor bar's first 10 us, HEX8 F-bar and standard, TET10,
+# 1 and 2 ranks.
+bench-plastic: build
+	$(PYTHON) tools/bench/bench_plastic.py --build $(BUILD)
 
 # CG's preconditioners on stiffness-dominated steps (153,792 unknowns): Multigrid, Schwarz, Jacobi.
 bench-multigrid: build
@@ -120,12 +126,15 @@ study: build
 	$(PYTHON) tools/study/small_vs_finite_study.py --build $(BUILD) --out results/study/small-vs-finite
 	$(PYTHON) tools/study/taylor_bar_study.py --build $(BUILD) --out results/study/taylor-bar
 	$(PYTHON) tools/study/taylor_bar_study.py --build $(BUILD) --law johnson-cook --out results/study/taylor-bar-jc
+	$(PYTHON) tools/study/plastic_impact_study.py --build $(BUILD) --out results/study/plastic-impact
 
 # The Taylor bar's mesh convergence, QUAD4 F-bar against standard QUAD4 and QUAD8
-# (docs/verification/taylor-bar.md; about 15 minutes).
+# (docs/verification/taylor-bar.md; about 15 minutes), and the elastic-plastic sphere's restitution
+# against speed (docs/verification/plastic-impact.md; about 20 minutes).
 study-plastic: build
 	$(PYTHON) tools/study/taylor_bar_study.py --build $(BUILD) --out results/study/taylor-bar
 	$(PYTHON) tools/study/taylor_bar_study.py --build $(BUILD) --law johnson-cook --out results/study/taylor-bar-jc
+	$(PYTHON) tools/study/plastic_impact_study.py --build $(BUILD) --out results/study/plastic-impact
 
 # Small against finite strain: the rubber ball at rising speeds (docs/verification/rubber-ball.md).
 study-finite: build

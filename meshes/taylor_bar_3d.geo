@@ -4,10 +4,15 @@
 // about n elements across the radius, 2n along a quarter of the rim) extruded in round(n L / R)
 // layers. full = 0 (default): the quarter x >= 0, z >= 0 with its symmetry planes as side sets
 // SYMX (x = 0) and SYMZ (z = 0); full = 1: the whole bar. Node sets: EDGE (R, 0, 0), the impact
-// face's edge on the x axis; CENTRE (0, 0, 0); REAR (0, L, 0).
+// face's edge on the x axis; CENTRE (0, 0, 0); REAR (0, L, 0). tets = 1: the same grid in
+// tetrahedra (each hexahedron's place cut into two prisms, each prism into three tetrahedra; with
+// -order 2, TET10).
 //   gmsh -3 -format msh41 -setnumber n 4 meshes/taylor_bar_3d.geo -o bar.msh
 If (!Exists(n))
   n = 4;
+EndIf
+If (!Exists(tets))
+  tets = 0;
 EndIf
 If (!Exists(full))
   full = 0;
@@ -60,11 +65,17 @@ For q In {0 : quarters - 1}
   s2 = news; Curve Loop(s2) = {l5, l6, l7, -l2}; Plane Surface(s2) = {s2};
   s3 = news; Curve Loop(s3) = {-l7, l8, l9, -l3}; Plane Surface(s3) = {s3};
   Transfinite Surface{s1, s2, s3};
-  Recombine Surface{s1, s2, s3};
+  If (!tets)
+    Recombine Surface{s1, s2, s3};
+  EndIf
   core[] += {s1, s2, s3};
   last6 = p6; last7 = p7; lastl4 = l4; lastl9 = l9;
 EndFor
-out[] = Extrude {0, L, 0} { Surface{core[]}; Layers{m}; Recombine; };
+If (tets)
+  out[] = Extrude {0, L, 0} { Surface{core[]}; Layers{m}; };
+Else
+  out[] = Extrude {0, L, 0} { Surface{core[]}; Layers{m}; Recombine; };
+EndIf
 e = 1e-7;
 Physical Volume("BAR") = Volume{:};
 Physical Surface("IMPACT") = Surface In BoundingBox{-R - e, -e, -R - e, R + e, e, R + e};

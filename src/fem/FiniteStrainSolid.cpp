@@ -72,7 +72,19 @@ double rowValue(Kinematics k, const GradientRow& r, const PointView& p, int a) {
 
 Mat3 deformationGradient(Kinematics k, const PointView& p, const std::vector<double>& u) {
   Mat3 F = identity3();
-  const int nc = k == Kinematics::ThreeD ? 3 : 2;
+  if (k == Kinematics::ThreeD) {  // every row, one pass over the nodes (the same sums, in the same order)
+    Mat3 G{};
+    for (int a = 0; a < p.nodes; ++a) {
+      const double* g = p.dNdX + a * 3;
+      const double* ua = &u[size_t(a * 3)];
+      for (int i = 0; i < 3; ++i)
+        for (int J = 0; J < 3; ++J) G[i][J] += g[J] * ua[i];
+    }
+    for (int i = 0; i < 3; ++i)
+      for (int J = 0; J < 3; ++J) F[i][J] += G[i][J];
+    return F;
+  }
+  const int nc = 2;
   for (const GradientRow& r : gradientRows(k)) {
     double v = 0.0;
     for (int a = 0; a < p.nodes; ++a) v += rowValue(k, r, p, a) * u[size_t(a * nc + r.comp)];
@@ -81,11 +93,33 @@ Mat3 deformationGradient(Kinematics k, const PointView& p, const std::vector<dou
   return F;
 }
 
+// f_a,comp += stress(i, J) g_a,iJ over the kinematics' rows (in 3D each node's three components
+// in one pass: every f entry receives the same terms in the same order as row by row).
+template <class Stress>
+void addPointForce(Kinematics k, const PointView& p, Stress stress, std::vector<double>& f) {
+  if (k == Kinematics::ThreeD) {
+    double s[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int J = 0; J < 3; ++J) s[i][J] = stress(i, J);
+    for (int a = 0; a < p.nodes; ++a) {
+      const double* g = p.dNdX + a * 3;
+      double* fa = &f[size_t(a * 3)];
+      for (int i = 0; i < 3; ++i)
+        for (int J = 0; J < 3; ++J) fa[i] += s[i][J] * g[J];
+    }
+    return;
+  }
+  const int nc = 2;
+  for (const GradientRow& r : gradientRows(k)) {
+    const double v = stress(r.i, r.J);
+    for (int a = 0; a < p.nodes; ++a) f[size_t(a * nc + r.comp)] += v * rowValue(k, r, p, a);
+  }
+}
+
 // J0 > 0: F-bar, the material gets (J0 / J)^(1/3) F (J0 the element's mean dilatation).
-void evaluatePoint(Kinematics k, const SolidMaterial& m, SolidShape t, const Point3& xi, const PointView& p,
-                   const std::vector<double>& u, const double* old, bool withTangent, PointState& s,
-                   double J0 = 0.0, bool elasticTangent = false, double dt = 0.0) {
-  s.Fstd = s.F = deformationGradient(k, p, u);
+void evaluatePoint(const SolidMaterial& m, SolidShape t, const Point3& xi, const Mat3& F, const double* old,
+                   bool withTangent, PointState& s, double J0 = 0.0, bool elasticTangent = false, double dt = 0.0) {
+  s.Fstd = s.F = F;
   const bool finite = !m.plastic || m.plastic->finiteStrain();
   const double J = determinant(s.F);
   if (finite && !(J > 0)) {
@@ -233,24 +267,33 @@ ElementGeometry FiniteStrainSolid::geometry(const std::vector<Point3>& X) const 
 }
 
 // F-bar's mean dilatation: Jbar = int J dV / V, and dJbar/du_a / Jbar (header) into B.
-double FiniteStrainSolid::meanDilatation(const ElementGeometry& g, const std::vector<double>& u,
-                                         std::vector<double>& B) const {
+double FiniteStrainSolid::meanDilatation(const ElementGeometry& g, const std::vector<Mat3>& Fq, std::vector<double>& B,
+                                         std::vector<Mat3>& Finv) const {
   if (!fbar_) return 0.0;
   const int nc = componentsPerNode();
   B.assign(size_t(g.nodes * nc), 0.0);
+  Finv.resize(size_t(g.points));
   double V = 0.0, JV = 0.0;
   for (int q = 0; q < g.points; ++q) {
     const PointView p = pointOf(g, q);
-    const Mat3 F = deformationGradient(kin_, p, u);
+    const Mat3& F = Fq[size_t(q)];
     const double J = determinant(F), w = g.weight[size_t(q)];
     if (!(J > 0)) {
       std::ostringstream msg;
       msg << "inverted " << topologyName(shape_) << " element: det F = " << J << " <= 0 at a quadrature point";
       throw InvertedElement(msg.str());
     }
-    const Mat3 Fi = inverse(F, J);
+    const Mat3& Fi = Finv[size_t(q)] = inverse(F, J);
     V += w;
     JV += w * J;
+    if (kin_ == Kinematics::ThreeD) {  // the rows' terms of each entry in the same order, one pass
+      for (int a = 0; a < g.nodes; ++a) {
+        const double* ga = p.dNdX + a * 3;
+        for (int i = 0; i < 3; ++i)
+          for (int Jc = 0; Jc < 3; ++Jc) B[size_t(a * 3 + i)] += w * J * Fi[Jc][i] * ga[Jc];
+      }
+      continue;
+    }
     for (const GradientRow& r : gradientRows(kin_))
       for (int a = 0; a < g.nodes; ++a) B[size_t(a * nc + r.comp)] += w * J * Fi[r.J][r.i] * rowValue(kin_, r, p, a);
   }
@@ -261,15 +304,10 @@ double FiniteStrainSolid::meanDilatation(const ElementGeometry& g, const std::ve
 // F-bar's force at one point: with Fbar = (Jbar / J)^(1/3) F and P = P(Fbar),
 //   f_a,i += w [ (Jbar / J)^(1/3) P_iJ g_a,iJ - (P : Fbar) / 3 F^-1_Ji g_a,iJ ] + w (P : Fbar) / 3 B_a,i,
 // the derivative of int W(Fbar) dV (d ln J = F^-T : dF; B = d ln Jbar / du).
-void FiniteStrainSolid::addFBarForce(const PointView& p, const PointState& s, const std::vector<double>& B, double w,
-                                     std::vector<double>& f) const {
-  const int nc = componentsPerNode();
-  const Mat3 Finv = inverse(s.Fstd, determinant(s.Fstd));
+void FiniteStrainSolid::addFBarForce(const PointView& p, const PointState& s, const Mat3& Finv,
+                                     const std::vector<double>& B, double w, std::vector<double>& f) const {
   const double third = contract(s.P, s.F) / 3;
-  for (const GradientRow& r : gradientRows(kin_)) {
-    const double own = w * (s.ratio * s.P[r.i][r.J] - third * Finv[r.J][r.i]);
-    for (int a = 0; a < p.nodes; ++a) f[size_t(a * nc + r.comp)] += own * rowValue(kin_, r, p, a);
-  }
+  addPointForce(kin_, p, [&](int i, int J) { return w * (s.ratio * s.P[i][J] - third * Finv[J][i]); }, f);
   for (size_t k = 0; k < f.size(); ++k) f[k] += w * third * B[k];
 }
 
@@ -284,25 +322,24 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
   thread_local std::vector<double> A;
   double energy = 0.0;
   thread_local std::vector<double> B;
-  const double J0 = meanDilatation(g, u, B);
+  thread_local std::vector<Mat3> F, Finv;
+  F.resize(size_t(g.points));
+  for (int q = 0; q < g.points; ++q) F[size_t(q)] = deformationGradient(kin_, pointOf(g, q), u);
+  const double J0 = meanDilatation(g, F, B, Finv);
   for (int q = 0; q < g.points; ++q) {
     const double w = g.weight[size_t(q)];
     const PointView p = pointOf(g, q);
-    evaluatePoint(kin_, material_, shape_, rule.points[size_t(q)], p, u, old ? old + kJ2StateSize * q : nullptr,
+    evaluatePoint(material_, shape_, rule.points[size_t(q)], F[size_t(q)], old ? old + kJ2StateSize * q : nullptr,
                   K != nullptr, s, J0, elasticTangent, dt);
     energy += w * s.energy;
     if (plastic()) {
       if (next) std::copy(s.plastic.state.begin(), s.plastic.state.end(), next + kJ2StateSize * q);
       if (plasticWork) *plasticWork += w * s.plastic.plasticWork;
     }
-    if (fbar_) {
-      addFBarForce(p, s, B, w, f);
-    } else {
-      for (const GradientRow& r : gradientRows(kin_)) {
-        const double wp = w * s.P[r.i][r.J];
-        for (int a = 0; a < n; ++a) f[size_t(a * nc + r.comp)] += wp * rowValue(kin_, r, p, a);
-      }
-    }
+    if (fbar_)
+      addFBarForce(p, s, Finv[size_t(q)], B, w, f);
+    else
+      addPointForce(kin_, p, [&](int i, int J) { return w * s.P[i][J]; }, f);
     if (!K) continue;
     firstElasticity(kin_, s, plastic(), A);
     addTangent(kin_, p, A, w, *K);
@@ -316,7 +353,9 @@ void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vecto
   const QuadratureRule& rule = stiffnessRule(shape_, kin_);
   PointState s;
   std::vector<double> B;
-  const double J0 = this->plastic() ? 0.0 : meanDilatation(g, u, B);
+  std::vector<Mat3> F(size_t(g.points)), Finv;
+  for (int q = 0; q < g.points; ++q) F[size_t(q)] = deformationGradient(kin_, pointOf(g, q), u);
+  const double J0 = this->plastic() ? 0.0 : meanDilatation(g, F, B, Finv);
   std::vector<double> virgin;
   if (this->plastic() && !old) virgin.resize(size_t(stateSize())), initialState(virgin.data()), old = virgin.data();
   if (plastic) *plastic = PlasticAverages{};
@@ -337,7 +376,7 @@ void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vecto
         plastic->pressure -= w * trace(c) / 3;
       }
     } else {
-      evaluatePoint(kin_, material_, shape_, rule.points[size_t(q)], pointOf(g, q), u, nullptr, false, s, J0);
+      evaluatePoint(material_, shape_, rule.points[size_t(q)], F[size_t(q)], nullptr, false, s, J0);
       c = cauchyStress(s.F, s.response.S);
       energyDensity += w * s.energy;
     }

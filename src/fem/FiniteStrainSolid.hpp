@@ -137,10 +137,12 @@ class FiniteStrainSolid {
   SolidMaterial material_;
   bool fbar_ = false;
   void checkFBar() const;
-  // F-bar: Jbar and B = d ln Jbar / du (element DOFs); 0 without F-bar. Throws InvertedElement.
-  double meanDilatation(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& B) const;
-  void addFBarForce(const PointView& p, const PointState& s, const std::vector<double>& B, double w,
-                    std::vector<double>& f) const;
+  // F-bar: Jbar and B = d ln Jbar / du (element DOFs) from each point's F (F[q]), with each
+  // point's F^-1 into Finv; 0 without F-bar. Throws InvertedElement.
+  double meanDilatation(const ElementGeometry& g, const std::vector<Mat3>& F, std::vector<double>& B,
+                        std::vector<Mat3>& Finv) const;
+  void addFBarForce(const PointView& p, const PointState& s, const Mat3& Finv, const std::vector<double>& B,
+                    double w, std::vector<double>& f) const;
 };
 
 }  // namespace choc

@@ -1,6 +1,7 @@
 // J2 plasticity's return maps and consistent tangents (formulas in the header).
 #include "materials/J2Plasticity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -213,20 +214,25 @@ void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTang
   if (r.yielded)
     for (int A = 0; A < 3; ++A) n[A] = e[A] / normE;
   const Mat3& v = eig.vectors;
-  double tau[3];
-  Mat3 tauM{}, beNew{};
+  Mat3 tauM{};
   for (int A = 0; A < 3; ++A) {
-    tau[A] = kappa_ * tr + 2 * mu_ * r.theta * e[A];
-    const double xe = std::exp(2 * (eps[A] - r.dgamma * n[A]));
+    const double tau = kappa_ * tr + 2 * mu_ * r.theta * e[A];
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        tauM[i][j] += tau[A] * v[i][A] * v[j][A];
-        beNew[i][j] += xe * v[i][A] * v[j][A];
-      }
+      for (int j = 0; j < 3; ++j) tauM[i][j] += tau * v[i][A] * v[j][A];
   }
   out.P = multiply(tauM, transpose(Fi));
   out.cauchy = scaled(tauM, 1 / J);
-  stateFromSymmetric(multiply(multiply(Fi, beNew), transpose(Fi)), out.state.data());
+  if (r.yielded) {  // C_p^-1 = F^-1 b_e F^-T with b_e = exp(2 (eps - dgamma n)) on the trial's axes
+    Mat3 beNew{};
+    for (int A = 0; A < 3; ++A) {
+      const double xe = std::exp(2 * (eps[A] - r.dgamma * n[A]));
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) beNew[i][j] += xe * v[i][A] * v[j][A];
+    }
+    stateFromSymmetric(multiply(multiply(Fi, beNew), transpose(Fi)), out.state.data());
+  } else {  // elastic: C_p^-1 unchanged (F^-1 b_e^trial F^-T = G exactly; without the round-off)
+    std::copy(old, old + 6, out.state.begin());
+  }
   finishPoint(F, old, r, tr, normE, out);
   if (!withTangent) return;
   const double theta = elastic ? 1.0 : r.theta, thetabar = elastic ? 0.0 : r.thetabar;

@@ -27,21 +27,6 @@ TABLE = [["mesh", "mesh", ""], ["scheme", "scheme", ""], ["strain", "Strain", ""
          ["assembly_per_newton_s", "assembly per Newton [s]", ".4f"], ["solve_per_newton_s", "solve per Newton [s]", ".4f"]]
 
 
-def count_3d_elements(msh):
-    """Elements of dimension 3 in a gmsh 4.1 file."""
-    with open(msh) as f:
-        lines = f.read().split("\n")
-    i = lines.index("$Elements") + 1
-    blocks = int(lines[i].split()[0])
-    i += 1
-    total = 0
-    for _ in range(blocks):
-        dim, _, _, n = (int(x) for x in lines[i].split())
-        total += n if dim == 3 else 0
-        i += 1 + n
-    return total
-
-
 def deck(mesh, block, centre, strain, scheme, steps, dt):
     law = "neo-Hookean" if strain == "finite" else "linear elastic"
     return chocrun.spin_deck(mesh, block, (0, 0, 100), centre, scheme, dt, steps * dt, strain, law,
@@ -62,7 +47,7 @@ def main():
                "SPHERE", (0, 0.01, 0))]
     rows = []
     for label, mesh, block, centre in meshes:
-        elements = count_3d_elements(mesh)
+        elements = chocrun.count_gmsh_elements(mesh, 3)
         for scheme, dt, steps in (("central differences", 1e-7, a.steps), ("average acceleration", 1e-5, 20)):
             small = {}
             for strain in ("small", "finite"):

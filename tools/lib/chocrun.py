@@ -217,6 +217,21 @@ def gmsh(geo, out, dim, *options):
     return out
 
 
+def count_gmsh_elements(msh, dim):
+    """The elements of dimension dim in a gmsh 4.1 file."""
+    with open(msh) as f:
+        lines = f.read().split("\n")
+    i = lines.index("$Elements") + 1
+    blocks = int(lines[i].split()[0])
+    i += 1
+    total = 0
+    for _ in range(blocks):
+        d, _, _, n = (int(x) for x in lines[i].split())
+        total += n if d == dim else 0
+        i += 1 + n
+    return total
+
+
 # ------------------------------------------------------------------ summaries
 def summary_path(out_dir, analysis):
     return os.path.join(out_dir, f"{analysis}.summary.json")
