@@ -353,8 +353,9 @@ void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vecto
   const QuadratureRule& rule = stiffnessRule(shape_, kin_);
   PointState s;
   std::vector<double> B;
-  std::vector<Mat3> F(size_t(g.points)), Finv;
-  for (int q = 0; q < g.points; ++q) F[size_t(q)] = deformationGradient(kin_, pointOf(g, q), u);
+  std::vector<Mat3> F, Finv;  // plastic blocks read their state, not u
+  if (!this->plastic())
+    for (int q = 0; q < g.points; ++q) F.push_back(deformationGradient(kin_, pointOf(g, q), u));
   const double J0 = this->plastic() ? 0.0 : meanDilatation(g, F, B, Finv);
   std::vector<double> virgin;
   if (this->plastic() && !old) virgin.resize(size_t(stateSize())), initialState(virgin.data()), old = virgin.data();

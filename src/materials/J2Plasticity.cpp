@@ -1,7 +1,6 @@
 // J2 plasticity's return maps and consistent tangents (formulas in the header).
 #include "materials/J2Plasticity.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -231,7 +230,7 @@ void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTang
     }
     stateFromSymmetric(multiply(multiply(Fi, beNew), transpose(Fi)), out.state.data());
   } else {  // elastic: C_p^-1 unchanged (F^-1 b_e^trial F^-T = G exactly; without the round-off)
-    std::copy(old, old + 6, out.state.begin());
+    stateFromSymmetric(symmetricFromState(old), out.state.data());
   }
   finishPoint(F, old, r, tr, normE, out);
   if (!withTangent) return;
