@@ -22,18 +22,24 @@ import chocrun  # noqa: E402
 TABLE = [["element", "element", ""], ["ranks", "ranks", "d"], ["elements", "elements", ",d"],
          ["unknowns", "unknowns", ",d"], ["substeps", "sub-steps", ",d"],
          ["force_us", "internal force per element-cycle [us]", ".3f"],
-         ["cycle_us", "whole step per element-cycle [us]", ".3f"], ["wall_s", "wall [s]", ".2f"]]
+         ["cycle_us", "whole step per element-cycle [us]", ".3f"], ["speedup", "1 rank / this", ".2f"],
+         ["wall_s", "wall [s]", ".2f"]]
 SCENES = [("HEX8 F-bar", 0, 1, "F-bar"), ("HEX8 standard", 0, 1, "standard"), ("TET10 standard", 1, 2, "standard")]
 
 
-def record(choc, deck, out, ranks, elements):
-    r = chocrun.run(choc, deck, out, ranks=ranks)
-    s = chocrun.require_completed(chocrun.read_summary(out, "impact"))
-    cycles = elements * chocrun.substeps(s)
-    return {"unknowns": chocrun.summary_value(s, "unknowns"), "substeps": chocrun.substeps(s),
-            "force_us": 1e6 * ranks * chocrun.summary_value(s, "timers/assembly/max") / cycles,
-            "cycle_us": 1e6 * ranks * chocrun.summary_value(s, "timers/analysis/max") / cycles,
-            "wall_s": r.wall, "choc_commit": chocrun.summary_value(s, "choc/commit")}
+def recorder(elements):
+    """The per-run figures of chocrun.rank_sweep for a mesh of `elements` elements."""
+    def record(choc, deck, out, analysis, ranks):
+        r = chocrun.run(choc, deck, out, ranks=ranks)
+        s = chocrun.require_completed(chocrun.read_summary(out, analysis))
+        cycles = elements * chocrun.substeps(s)
+        value = lambda key: chocrun.summary_value(s, key)  # noqa: E731
+        return {"unknowns": value("unknowns"), "substeps": chocrun.substeps(s),
+                "step_s": value("timers/analysis/max") / value("steps"),
+                "force_us": 1e6 * ranks * value("timers/assembly/max") / cycles,
+                "cycle_us": 1e6 * ranks * value("timers/analysis/max") / cycles,
+                "wall_s": r.wall, "choc_commit": value("choc/commit")}
+    return record
 
 
 def main():
@@ -58,10 +64,10 @@ def main():
         chocrun.set_param(d, "Analyses/impact/Exodus Interval", 1000000)
         tag = label.replace(" ", "_").replace("-", "")
         deck = chocrun.write_deck(d, os.path.join(a.out, tag + ".xml"))
-        for n in a.ranks:
-            recs = [record(choc, deck, os.path.join(a.out, f"{tag}_np{n}"), n, elements) for _ in range(a.repeat)]
-            rec = chocrun.median_record(recs)
-            rec.update({"element": label, "ranks": n, "elements": elements})
+        sweep = chocrun.rank_sweep(choc, deck, os.path.join(a.out, tag), "impact", a.ranks, a.repeat,
+                                   recorder(elements))
+        for _, _, rec in sweep:
+            rec.update({"element": label, "elements": elements})
             rows.append(rec)
     tables = [{"title": f"Explicit J2 per element-cycle, the 3D Taylor bar's first {a.end_time * 1e6:g} us "
                         f"(medians of {a.repeat} runs)", "columns": TABLE}]

@@ -754,14 +754,16 @@ def step_record(choc, path, out, analysis, ranks=1):
             "choc_commit": v("choc/commit")}
 
 
-def rank_sweep(choc, path, out_prefix, analysis, ranks, repeat):
+def rank_sweep(choc, path, out_prefix, analysis, ranks, repeat, record=None):
     """Runs the deck at path `repeat` times on each rank count in turn (into <out_prefix>_np<n>)
-    and yields (n, out_dir, record): the median_record of its step_records, with "ranks" and
+    and yields (n, out_dir, record): the median_record of its step_records (or of
+    record(choc, path, out, analysis, n), a dict with "step_s", when given), with "ranks" and
     "speedup" (the first rank count's time per step over this one's)."""
+    record = record or step_record
     first = None
     for n in ranks:
         out = f"{out_prefix}_np{n}"
-        rec = median_record([step_record(choc, path, out, analysis, n) for _ in range(repeat)])
+        rec = median_record([record(choc, path, out, analysis, n) for _ in range(repeat)])
         first = first or rec["step_s"]
         rec.update({"ranks": n, "speedup": first / rec["step_s"]})
         yield n, out, rec

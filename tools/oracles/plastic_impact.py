@@ -4,12 +4,13 @@ velocity, Thornton's coefficient of restitution and a run's measured one.
 
 Yield velocity. Hertz's contact (E* = E / (1 - nu^2), a = (3 F R / (4 E*))^(1/3), p0 = 3 F /
 (2 pi a^2)) first yields below the surface, on the axis, where von Mises' sigma_r - sigma_z is
-largest (Johnson, Contact Mechanics, 1985, eq. 3.45: sigma_z = -p0 / (1 + z^2/a^2), sigma_r =
-p0 (-(1 + nu)(1 - (z/a) atan(a/z)) + 1 / (2 (1 + z^2/a^2)))): p0_y = 1.61 Y at z = 0.48 a for
-nu = 0.3 (computed here for any nu). The impact speed whose Hertz peak force reaches it:
-(1/2) m v_y^2 = (8/15) E* sqrt(R) delta_y^(5/2), delta_y = a_y^2 / R, a_y = pi p0_y R / (2 E*).
+largest (the stresses of Hertz's pressure on a half-space, Johnson, Contact Mechanics, 1985:
+sigma_z = -p0 / (1 + z^2/a^2), sigma_r = p0 (-(1 + nu)(1 - (z/a) atan(a/z)) + 1 / (2 (1 +
+z^2/a^2)))): p0_y = 1.61 Y at z = 0.48 a for nu = 0.3 (computed here for any nu). The impact
+speed whose Hertz peak force reaches it: (1/2) m v_y^2 = (8/15) E* sqrt(R) delta_y^(5/2),
+delta_y = a_y^2 / R, a_y = pi p0_y R / (2 E*).
 
-Thornton (J. Appl. Mech. 64, 1997, 383-386): Hertz's pressure capped at p_y = p0_y, which gives
+Thornton (J. Appl. Mech. 64, 1997, 383): Hertz's pressure capped at p_y = p0_y, which gives
 with r = v_y / v > 0 (v >= v_y)
 
     e = sqrt(6 sqrt(3) / 5) sqrt(1 - r^2 / 6) (r / (r + 2 sqrt(6/5 - r^2 / 5)))^(1/4),
@@ -91,6 +92,18 @@ def measure(run_dir, speed, analysis="impact", s=None):
             "balance": balance / e0, "peak_force": peak}
 
 
+def failures(r, tag=""):
+    """What a measured run (measure()) breaks: e above 1, more energy out than in, energy created."""
+    bad = []
+    if not r["e"] <= 1 + 1e-3:
+        bad.append(f"{tag}e = {r['e']:.5f} > 1")
+    if not r["left"] >= -1e-3:
+        bad.append(f"{tag}the rebound and the plastic work exceed E0 by {-r['left']:.2e} E0")
+    if not r["balance"] <= 1e-3:
+        bad.append(f"{tag}energy:balance {r['balance']:+.2e} E0")
+    return bad
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("run_dir")
@@ -102,13 +115,7 @@ def main():
     print(f"v_y {s['vy']:.4f} m/s (p0_y = {s['p0y'] / Y:.4f} Y); v = {a.speed_ratio:g} v_y: e {r['e']:.4f}, "
           f"Thornton {thornton(a.speed_ratio):.4f}; plastic work {r['plastic']:.4f} E0, left in the sphere "
           f"{r['left']:.2e} E0, largest balance {r['balance']:+.2e} E0, impacts {r['impacts']}")
-    bad = []
-    if not r["e"] <= 1 + 1e-3:
-        bad.append(f"e = {r['e']:.5f} > 1")
-    if not r["left"] >= -1e-3:
-        bad.append(f"the rebound and the plastic work exceed E0 by {-r['left']:.2e} E0")
-    if not r["balance"] <= 1e-3:
-        bad.append(f"energy:balance {r['balance']:+.2e} E0")
+    bad = failures(r)
     if bad:
         sys.exit("plastic_impact: " + "; ".join(bad))
 
