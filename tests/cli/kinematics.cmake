@@ -61,5 +61,5 @@ choc_cli_script(taylor_bar_johnson_cook 300)
 choc_cli_script(taylor_bar_3d 600)
 # An elastic-plastic sphere on a rigid plane at 0.5, 10 and 100 times its yield velocity: elastic
 # below yield, the restitution falling with the speed above Thornton's closed form, no energy
-# created (scripts/plastic_impact.py).
+# created, 2 ranks equal 1 (scripts/plastic_impact.py).
 choc_cli_script(plastic_impact 600)
