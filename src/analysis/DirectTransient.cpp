@@ -33,6 +33,13 @@ namespace choc {
 
 namespace {
 
+// 'Contact/Status Update' as Newton's setting.
+StatusTiming statusTimingOf(const std::string& update) {
+  return update == "each correction"   ? StatusTiming::EachCorrection
+         : update == "converged solve" ? StatusTiming::ConvergedSolve
+                                       : StatusTiming::Auto;
+}
+
 // The Newton sublist of a Transient.
 void declareNewton(ParameterList& nw) {
   declareDouble(nw, "Residual Tolerance", 1e-8,
@@ -43,6 +50,11 @@ void declareNewton(ParameterList& nw) {
                 "contraction, which accepts a quadratically converged iterate without a correction "
                 "to confirm it), else the last correction ||du_k||", Range::positive());
   declareInt(nw, "Maximum Iterations", 10, "Newton corrections per active-set pass", Range::atLeast(1));
+  declareChoice(nw, "Line Search", "auto", {"auto", "on", "off"},
+                "whether a correction that does not decrease the residual norm is halved (up to 6 "
+                "times, Armijo's test): 'auto' on where a block is plastic (J2, Johnson-Cook: a "
+                "full correction can overshoot the points' changes between elastic and plastic "
+                "response), off elsewhere; 'on' for every model; 'off' every correction whole");
   declareChoice(nw, "Convergence", "auto", {"auto", "residual and increment", "residual"},
                 "which tests accept an iterate: 'residual and increment' both; 'residual' the "
                 "residual alone, saving the solve that only confirms a small increment; 'auto' "
@@ -138,7 +150,7 @@ DirectTransient::DirectTransient(const std::string& name, const Teuchos::Paramet
   s_.rayleighM = ray.get<double>("Mass Coefficient");
   s_.contact = readContactSettings(params_, inputFile_, "Analyses/" + name_);
   s_.time.newton.maxActiveSetIterations = s_.contact.maxActiveSetIterations;
-  s_.time.newton.statusEachCorrection = s_.contact.statusEachCorrection;
+  s_.time.newton.statusTiming = statusTimingOf(s_.contact.statusUpdate);
   s_.output = readTransientOutput(params_);
   checkStepCount(nominalSteps(s_.time.startTime, s_.time.endTime, s_.time.timeStep), 1, s_.output.limits, inputFile_,
                  "Analyses/" + name_, s_.time.timeStep);
@@ -228,6 +240,8 @@ void DirectTransient::readTimeSettings() {
                           : convergence == "residual and increment" ? Convergence::ResidualAndIncrement
                                                                     : Convergence::Auto;
   ts.newton.adaptiveLinearTolerance = nw.get<std::string>("Linear Tolerance") == "adaptive";
+  const std::string search = nw.get<std::string>("Line Search");
+  ts.newton.lineSearch = search == "on" ? LineSearch::On : search == "off" ? LineSearch::Off : LineSearch::Auto;
   ts.maxCuts = params_.sublist("Step Control").get<int>("Maximum Step Cuts");
   ts.cutFactor = params_.sublist("Step Control").get<double>("Cut Factor");
 }

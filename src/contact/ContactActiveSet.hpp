@@ -16,6 +16,7 @@ namespace choc {
 struct ContactActiveSet {
   std::vector<char> status, savedStatus;
   std::vector<double> lambda, savedLambda;
+  std::vector<double> lastCorrection;  // the last applyCorrection's change of lambda
   double scale = 1.0;
   int version = 0;
 
@@ -31,6 +32,8 @@ struct ContactActiveSet {
   int activeCount() const;
   // lambda += scale * dScaled (the multiplier unknowns are lambda / scale).
   void applyCorrection(const std::vector<double>& dScaled);
+  // The last correction's change of lambda scaled by `factor` (a line search shortening it).
+  void scaleLastCorrection(double factor);
   void archive(StateArchive& a) const;
   // The records of n constraints; the caller bumps the version and saves once it has restored
   // the rest of its state.

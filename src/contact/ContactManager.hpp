@@ -96,6 +96,7 @@ class ContactManager {
   double rowResidual(int s, double gap) const;
   // lambda += scale * dLambdaScaled (the multiplier unknowns are lambda / scale).
   void applyCorrection(const std::vector<double>& dLambdaScaled);
+  void scaleLastCorrection(double factor) { set_.scaleLastCorrection(factor); }
 
   // Before each step (and the initial state): the constraints against rigid obstacles are
   // re-linearised at u (the last accepted state) with the obstacles placed at time t:

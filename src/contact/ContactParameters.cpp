@@ -36,8 +36,11 @@ void declareMethodParameters(ParameterList& ct) {
   declareInt(ct, "Maximum Active Set Iterations", 20,
              "passes of Newton per step while the active set changes (each change of status "
              "starts one)", Range::atLeast(1));
-  declareChoice(ct, "Status Update", "each correction", {"each correction", "converged solve"},
-                "when the contact status is re-evaluated in an implicit step: 'each correction' "
+  declareChoice(ct, "Status Update", "auto", {"auto", "each correction", "converged solve"},
+                "when the contact status is re-evaluated in an implicit step: 'auto' 'each "
+                "correction', or 'converged solve' when a block is plastic (J2, Johnson-Cook: the "
+                "points' changes between elastic and plastic response and the status changes do "
+                "not settle together); 'each correction' "
                 "after every Newton correction (semi-smooth Newton: friction and active set "
                 "converge together, about 3 corrections per step on the oblique sphere); "
                 "'converged solve' only once Newton has converged with the status frozen (a "
@@ -225,7 +228,7 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::
   s.augmentation = ct.get<double>("Augmentation Coefficient");
   s.gapTolerance = ct.get<double>("Gap Tolerance");
   s.maxActiveSetIterations = ct.get<int>("Maximum Active Set Iterations");
-  s.statusEachCorrection = ct.get<std::string>("Status Update") == "each correction";
+  s.statusUpdate = ct.get<std::string>("Status Update");
   s.tangentialStiffness = ct.get<double>("Tangential Stiffness");
   const std::string mass = p.get<std::string>("Contact Mass");
   s.massIsAutomatic = mass == "auto";

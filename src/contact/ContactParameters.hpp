@@ -24,7 +24,7 @@ struct ContactSettings {
   double penaltyStiffness = 0, augmentation = 0, gapTolerance = 0;
   double tangentialStiffness = 0;  // 0: automatic (see 'Tangential Stiffness')
   int maxActiveSetIterations = 20;
-  bool statusEachCorrection = true;  // 'Status Update' = each correction (semi-smooth Newton)
+  std::string statusUpdate = "auto";  // 'Status Update': auto, each correction, converged solve
   std::vector<PairDefinition> pairs;
   bool redistributeMass = false;  // 'Contact Mass' = redistributed, or auto (implicit schemes)
   bool massIsAutomatic = false;   // 'Contact Mass' = auto: may fall back to standard

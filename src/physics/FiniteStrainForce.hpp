@@ -62,6 +62,7 @@ class FiniteStrainForce : public InternalForce {
   // plastic points with their elastic tangent (an unloading point is the stiffest).
   double stateEigenvalueBound(const Vector& u) const override;
   double dissipatedWork() const override { return plasticWork_; }
+  bool hasReturnMap() const override { return plastic_; }
   void commit() override;
   void revert() override { trialValid_ = false; }
   void archive(StateArchive& a) const override;

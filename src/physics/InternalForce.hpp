@@ -67,6 +67,9 @@ class InternalForce {
   virtual void preferSymmetricProducts() {}
   // The work dissipated inside the material since the start (plastic work) [J], all ranks.
   virtual double dissipatedWork() const { return 0.0; }
+  // Whether the force carries a history whose update has kinks in u (a plastic return map:
+  // elastic or plastic at each point), where a full Newton correction can overshoot.
+  virtual bool hasReturnMap() const { return false; }
   virtual void commit() {}
   virtual void revert() {}
   virtual void archive(StateArchive& /*a*/) const {}

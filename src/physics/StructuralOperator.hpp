@@ -55,6 +55,10 @@ class StructuralOperator : public ExplicitOperator {
   bool linearWithinPass() const override {
     return internal_->linear() && !links_ && !(contact_ && contact_->hasFriction());
   }
+  bool residualHasKinks() const override { return internal_->hasReturnMap(); }
+  void scaleLastCorrection(double factor) override {
+    if (contact_ && !forwardIncrement_) contact_->scaleLastCorrection(factor);
+  }
   void beginStep(const Vector& u, double t, double dt) override;
   void acceptStep(const Vector& u) override;
   double elasticTermsNorm(const Vector& u) const override;

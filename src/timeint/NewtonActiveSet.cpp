@@ -94,6 +94,43 @@ ResidualNorms evaluate(const ResidualFunction& residual, Vector& u, Vector& r, V
   }
 }
 
+// Backtracking line search (Armijo on the residual norm) for operators whose residual has kinks
+// (plastic return maps, SecondOrderOperator::lineSearch): the residual at the corrected u,
+// and while it is not below (1 - 1e-4 s) of the residual `start` the correction began from
+// (s: the fraction of the correction kept), the correction is halved (u, du, the operator's
+// extra unknowns), at most kMaxLineSearch times; the last iterate is kept whatever, and Newton
+// goes on from it. A full Newton correction that overshoots a point's change between elastic and
+// plastic response can otherwise send the iterates back and forth, or far away, at a
+// consistent tangent.
+constexpr int kMaxLineSearch = 6;
+
+ResidualNorms searchLine(SecondOrderOperator& op, const ResidualFunction& residual, double start, double allowed,
+                         Vector& u, Vector& r, Vector& du, ActiveSetWalk& w, NewtonOutcome& out) {
+  double kept = 1.0;
+  for (int halvings = 0;; ++halvings) {
+    const ResidualNorms n = evaluate(residual, u, r, du, w, out);
+    if (!std::isfinite(n.residual) || n.residual <= allowed || n.residual <= (1.0 - 1e-4 * kept) * start ||
+        halvings == kMaxLineSearch)
+      return n;
+    u.update(-0.5, du, 1.0);
+    du.scale(0.5);
+    op.scaleLastCorrection(0.5);
+    w.increments.last *= 0.5;
+    w.corrected = true;  // u is a shortened correction's iterate (evaluate may halve it further)
+    kept *= 0.5;
+    ++out.lineSearchHalvings;
+  }
+}
+
+bool searchesLine(const SecondOrderOperator& op, const NewtonSettings& s) {
+  return s.lineSearch == LineSearch::On || (s.lineSearch == LineSearch::Auto && op.residualHasKinks());
+}
+
+bool statusEachCorrection(const SecondOrderOperator& op, const NewtonSettings& s) {
+  return s.statusTiming == StatusTiming::EachCorrection ||
+         (s.statusTiming == StatusTiming::Auto && !op.residualHasKinks());
+}
+
 // Evaluates the status at u; when it changes, a new pass starts (false: too many passes).
 bool evaluateStatus(SecondOrderOperator& op, const Vector& u, const NewtonSettings& s, ActiveSetWalk& w,
                     NewtonOutcome& out) {
@@ -148,9 +185,13 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
   const bool requireIncrement =
       s.convergence == Convergence::ResidualAndIncrement ||
       (s.convergence == Convergence::Auto && !op.linearWithinPass());
+  const bool eachCorrection = statusEachCorrection(op, s);
   ActiveSetWalk w;
+  ResidualNorms n;
+  bool evaluated = false;  // n and r are those at u (the line search's last evaluation)
   for (;;) {
-    const ResidualNorms n = evaluate(residual, u, r, du, w, out);
+    if (!evaluated) n = evaluate(residual, u, r, du, w, out);
+    evaluated = false;
     out.residual = n.residual;
     out.reference = n.reference;
     if (!std::isfinite(n.residual)) {
@@ -178,7 +219,13 @@ NewtonOutcome solveNewtonActiveSet(SecondOrderOperator& op, const EffectiveCoeff
       return out;
     }
     if (!correct(op, c, n, allowed, s, u, r, du, w, out)) return out;
-    if (s.statusEachCorrection && !evaluateStatus(op, u, s, w, out)) return out;
+    if (searchesLine(op, s)) {
+      n = searchLine(op, residual, n.residual, allowed, u, r, du, w, out);
+      evaluated = true;
+    }
+    const int passes = out.activeSetIterations;
+    if (eachCorrection && !evaluateStatus(op, u, s, w, out)) return out;
+    if (out.activeSetIterations != passes) evaluated = false;  // another status: another residual
   }
 }
 

@@ -31,6 +31,14 @@ namespace choc {
 // Which tests accept an iterate: both, the residual alone, or the residual alone in the passes
 // that are linear (the default of the inputs).
 enum class Convergence { ResidualAndIncrement, Residual, Auto };
+// When the constraint status is re-evaluated: after every correction, after a converged solve,
+// or 'auto': after every correction unless the operator's residual has kinks in u
+// (SecondOrderOperator::residualHasKinks: plastic return maps), then after converged solves.
+enum class StatusTiming { EachCorrection, ConvergedSolve, Auto };
+// Whether a correction that does not decrease the residual is shortened (backtracking line
+// search, NewtonActiveSet.cpp searchLine): always, never, or 'auto': where the operator's
+// residual has kinks in u.
+enum class LineSearch { Auto, On, Off };
 
 struct NewtonSettings {
   double residualTolerance = 1e-8;
@@ -38,11 +46,13 @@ struct NewtonSettings {
   Convergence convergence = Convergence::ResidualAndIncrement;
   int maxIterations = 10;
   int maxActiveSetIterations = 20;
-  // Semi-smooth Newton: the constraint status re-evaluated after every correction, a change
-  // starting a new pass at once; false: only at an iterate the tests accept (a fixed point of
-  // converged Newton solves). Both end at an accepted iterate whose status holds. The default
-  // is the input's ('Contact/Status Update' = each correction).
-  bool statusEachCorrection = true;
+  // Semi-smooth Newton (EachCorrection): the constraint status re-evaluated after every
+  // correction, a change starting a new pass at once; ConvergedSolve: only at an iterate the
+  // tests accept (a fixed point of converged Newton solves). Both end at an accepted iterate
+  // whose status holds. The input's 'Contact/Status Update' (default 'auto').
+  StatusTiming statusTiming = StatusTiming::EachCorrection;
+  // The input's 'Newton/Line Search' (default 'auto').
+  LineSearch lineSearch = LineSearch::Auto;
   // Inexact Newton: each correction's iterative linear solve may stop once the linear residual
   // is a tenth of what the residual test allows, kForcing * max(residualTolerance * reference,
   // 1e-12 * roundoff) (the test accepts a residual at its round-off floor too; at most a
@@ -59,6 +69,7 @@ struct NewtonOutcome {
   int refactorizations = 0;
   int krylovIterations = 0;
   int backtracks = 0;  // halvings of corrections that had inverted an element
+  int lineSearchHalvings = 0;  // halvings of corrections that did not decrease the residual
   double residual = 0.0, reference = 0.0;
   std::string message;  // why it failed
 };

@@ -85,6 +85,12 @@ class SecondOrderOperator {
   // without friction, no shock links)? Then one exact correction solves an active-set pass.
   // false (the default) is always safe.
   virtual bool linearWithinPass() const { return false; }
+  // Whether the residual has kinks in u (plastic return maps: elastic or plastic at each point),
+  // where a full Newton correction can overshoot: Newton then searches along its corrections
+  // and updates the constraint status after converged solves (NewtonSettings, 'auto').
+  virtual bool residualHasKinks() const { return false; }
+  // The extra unknowns' last correction dz scaled by `factor` (the line search shortened du).
+  virtual void scaleLastCorrection(double /*factor*/) {}
   // Re-evaluates the constraint status at u (after a converged Newton solve).
   virtual ConstraintUpdate updateConstraints(const Vector& u) = 0;
   // Initial status from u (before the first step).

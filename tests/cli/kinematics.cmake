@@ -63,3 +63,7 @@ choc_cli_script(taylor_bar_3d 600)
 # below yield, the restitution falling with the speed above Thornton's closed form, no energy
 # created, 2 ranks equal 1 (scripts/plastic_impact.py).
 choc_cli_script(plastic_impact 600)
+# The same sphere by average acceleration for 10 us (implicit Lagrange contact on a yielding zone,
+# the line search and converged-solve statuses of the plastic defaults) against central
+# differences: contact force, plastic work and motion within 1 % (scripts/plastic_impact_implicit.py).
+choc_cli_script(plastic_impact_implicit 300)

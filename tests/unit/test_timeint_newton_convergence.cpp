@@ -8,7 +8,9 @@
 // contract the error by a fixed factor (a stale tangent) shows the increment test bounding the
 // iterate's error, not just the last correction; one against a stop (a contact status) shows
 // the status updated after each correction (semi-smooth) and after converged solves ending on
-// the same root.
+// the same root. A saturating force (tanh, the smooth shape of a perfectly plastic bar) from a
+// point on its plateau: full corrections run away, the line search brings Newton to the root,
+// and 'auto' searches exactly where the operator declares kinks.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -302,7 +304,7 @@ TEST(NewtonConvergence, StatusEachCorrectionEndsOnTheSameRootInFewerCorrections)
     op.gap = gap;
     NewtonSettings s;
     s.convergence = Convergence::ResidualAndIncrement;
-    s.statusEachCorrection = each == 1;
+    s.statusTiming = each == 1 ? StatusTiming::EachCorrection : StatusTiming::ConvergedSolve;
     runs[each] = solveFrom(op, s, 0.0, f, 0.0);
     ASSERT_TRUE(runs[each].out.converged) << runs[each].out.message;
     const double u = runs[each].u;
@@ -312,6 +314,76 @@ TEST(NewtonConvergence, StatusEachCorrectionEndsOnTheSameRootInFewerCorrections)
   }
   EXPECT_NEAR(runs[0].u, runs[1].u, 1e-8);
   EXPECT_LT(runs[1].out.iterations, runs[0].out.iterations);
+}
+
+// f(u) = F tanh(u / u0) = P: Newton from u = 3 u0, where the tangent is 1 % of its start, jumps
+// to about -47 u0 and on to ever larger |u| (divergent from beyond about 1.09 u0 for P = 0); halving
+// the corrections that do not decrease |R| reaches the root u0 artanh(P / F).
+class Saturating : public SecondOrderOperator {
+ public:
+  explicit Saturating(bool kinks) : kinks_(kinks) {
+    RCP<const Comm> self = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+    map_ = rcp(new Map(1, 0, self));
+  }
+  RCP<const Map> map() const override { return map_; }
+  void applyMass(const Vector&, Vector& out) override { Spring::set(out, 0.0); }
+  void applyForces(const Vector& u, const Vector&, double, Vector& out) override {
+    Spring::set(out, F * std::tanh(Spring::get(u) / u0) - P);
+  }
+  double addConstraintForces(const Vector&, const Vector&, Vector&) override { return 0.0; }
+  CorrectionStatus solveCorrection(const EffectiveCoefficients&, const Vector& u, const Vector& r,
+                                   Vector& du) override {
+    const double c = std::cosh(Spring::get(u) / u0);
+    Spring::set(du, -Spring::get(r) / (F / (u0 * c * c)));
+    CorrectionStatus s;
+    s.ok = std::isfinite(Spring::get(du));
+    return s;
+  }
+  ConstraintUpdate updateConstraints(const Vector&) override { return {}; }
+  bool residualHasKinks() const override { return kinks_; }
+  static constexpr double F = 2.0, u0 = 1e-3, P = 1.0;
+
+ private:
+  bool kinks_;
+  RCP<const Map> map_;
+};
+
+Solved solveSaturating(bool kinks, LineSearch search) {
+  Saturating op(kinks);
+  NewtonSettings s;
+  s.lineSearch = search;
+  s.maxIterations = 30;
+  Vector u(op.map()), dummy(op.map());
+  Spring::set(u, 3 * Saturating::u0);
+  auto residual = [&](const Vector& x, Vector& r) {
+    op.applyForces(x, dummy, 0.0, r);
+    ResidualNorms n;
+    n.residual = std::abs(Spring::get(r));
+    n.reference = Saturating::P;
+    n.incrementScale = n.solutionNorm = std::abs(Spring::get(x));
+    return n;
+  };
+  EffectiveCoefficients c;
+  c.cd = 1.0;
+  Solved out;
+  out.out = solveNewtonActiveSet(op, c, residual, u, s);
+  out.u = Spring::get(u);
+  return out;
+}
+
+TEST(NewtonConvergence, TheLineSearchBringsASaturatingForceToItsRoot) {
+  const double root = Saturating::u0 * std::atanh(Saturating::P / Saturating::F);
+  const Solved whole = solveSaturating(true, LineSearch::Off);
+  EXPECT_FALSE(whole.out.converged);  // full corrections run away from the plateau
+  EXPECT_EQ(whole.out.lineSearchHalvings, 0);
+  for (const bool kinks : {true, false}) {
+    const Solved searched = solveSaturating(kinks, kinks ? LineSearch::Auto : LineSearch::On);
+    ASSERT_TRUE(searched.out.converged) << searched.out.message;
+    EXPECT_NEAR(searched.u, root, 1e-8 * root);
+    EXPECT_GT(searched.out.lineSearchHalvings, 0);
+  }
+  // 'auto' takes whole corrections where the operator declares no kinks.
+  EXPECT_EQ(solveSaturating(false, LineSearch::Auto).out.lineSearchHalvings, 0);
 }
 
 }  // namespace
