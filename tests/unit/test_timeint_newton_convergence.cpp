@@ -97,7 +97,8 @@ Solved solve(Spring& op, Convergence c, bool adaptive = false, double tolerance 
 // Solves the spring from u = start with a residual of reference f and round-off floor
 // `floor` (as a transient step gives them), plus a constraint row's residual `constraint`
 // that the first correction satisfies (violated at the predictor only).
-Solved solveFrom(Spring& op, const NewtonSettings& s, double start, double f, double floor,
+template <class Operator>
+Solved solveFrom(Operator& op, const NewtonSettings& s, double start, double f, double floor,
                  double constraint = 0.0) {
   Vector u(op.map()), dummy(op.map());
   Spring::set(u, start);
@@ -341,6 +342,7 @@ class Saturating : public SecondOrderOperator {
   }
   ConstraintUpdate updateConstraints(const Vector&) override { return {}; }
   bool residualHasKinks() const override { return kinks_; }
+  std::vector<double> asked;  // none (solveFrom's constraint row is the predictor's only)
   static constexpr double F = 2.0, u0 = 1e-3, P = 1.0;
 
  private:
@@ -353,22 +355,7 @@ Solved solveSaturating(bool kinks, LineSearch search) {
   NewtonSettings s;
   s.lineSearch = search;
   s.maxIterations = 30;
-  Vector u(op.map()), dummy(op.map());
-  Spring::set(u, 3 * Saturating::u0);
-  auto residual = [&](const Vector& x, Vector& r) {
-    op.applyForces(x, dummy, 0.0, r);
-    ResidualNorms n;
-    n.residual = std::abs(Spring::get(r));
-    n.reference = Saturating::P;
-    n.incrementScale = n.solutionNorm = std::abs(Spring::get(x));
-    return n;
-  };
-  EffectiveCoefficients c;
-  c.cd = 1.0;
-  Solved out;
-  out.out = solveNewtonActiveSet(op, c, residual, u, s);
-  out.u = Spring::get(u);
-  return out;
+  return solveFrom(op, s, 3 * Saturating::u0, Saturating::P, 0.0);
 }
 
 TEST(NewtonConvergence, TheLineSearchBringsASaturatingForceToItsRoot) {
