@@ -57,7 +57,11 @@ std::string notConvergedMessage(const SecondOrderOperator& op, const ResidualNor
   const std::string state = op.constraintState();
   return "Newton did not converge in " + std::to_string(maxIterations) + " iterations (" +
          format("residual %.3e for a reference %.3e", n.residual, n.reference) +
-         (state.empty() ? "" : "; " + state) + ")";
+         (state.empty() ? "" : "; " + state) + ")" +
+         (op.residualHasKinks() && maxIterations < 30
+              ? "; a plastic model on a yielding contact zone can need 10 to 35 corrections per "
+                "step: if the residual was still falling, raise 'Newton/Maximum Iterations' to 30"
+              : "");
 }
 
 // The walk of one solve: the pass (constraint status) it is in, its corrections, and whether

@@ -11,7 +11,9 @@ mesh (forward-increment Lagrange, the test cli.plastic_impact's scheme):
     within 1 % (both schemes are second order: at dt = 0.2 us their error on a 43 us contact is of
     order (pi dt / 43 us)^2 / 12 = 2e-5; the 1 % leaves room for the two ways the contact is
     enforced, at t_n+1 by multipliers against by forward increments);
-  - energy:balance at or below 1e-3 E0 (no energy created).
+  - energy:balance at or below 1e-3 E0 (no energy created);
+  - at the default 'Maximum Iterations' (10) and no step cuts the implicit run stops with exit 2
+    (a numerical failure), its message naming 'Newton/Maximum Iterations', and no complete result.
 usage: plastic_impact_implicit.py CHOC SOURCE_DIR WORK_DIR"""
 import os
 import sys
@@ -63,4 +65,13 @@ for col in ("plane:force", "energy:plastic", "C:DY"):
     print(f"at {END:g} s, {col}: implicit {a:.6g}, explicit {b:.6g}: {rel:.1e} apart (at most 1e-2)")
     if not (abs(b) > 0 and rel <= 1e-2):
         failures.append(f"{col} at {END:g} s: implicit {a:.6g} against explicit {b:.6g}")
+defaults = deck("defaults", {"Analyses/impact/Scheme": "average acceleration", "Analyses/impact/Time Step": 2e-7},
+                remove=("Analyses/impact/Stability Check",))
+stopped = chocrun.run(choc, defaults, os.path.join(work, "defaults"), ok=(2,))
+message = stopped.stdout + stopped.stderr
+print(f"defaults: exit {stopped.returncode}; names 'Newton/Maximum Iterations': {'Newton/Maximum Iterations' in message}")
+if "'Newton/Maximum Iterations'" not in message:
+    failures.append("defaults: the failure does not name 'Newton/Maximum Iterations'")
+if os.path.exists(os.path.join(work, "defaults", "impact.history.csv")):
+    failures.append("defaults: a complete history written by a failed run")
 chocrun.finish(failures, "plastic_impact_implicit: every check holds")
