@@ -74,6 +74,14 @@ struct ActiveSetWalk {
   std::string lastSummary;
 };
 
+// The last correction halved: u back by half of du, du and its norm halved.
+void halveCorrection(Vector& u, Vector& du, ActiveSetWalk& w) {
+  u.update(-0.5, du, 1.0);
+  du.scale(0.5);
+  w.increments.last *= 0.5;
+  w.statusCurrent = false;
+}
+
 // The residual at u. Where a correction has carried u outside the model's domain (an inverted
 // element: InadmissibleState), the correction is halved, up to kMaxBacktracks times, so that
 // Newton goes on from inside it; at the predictor, or beyond the last halving, the state is
@@ -89,17 +97,14 @@ ResidualNorms evaluate(const ResidualFunction& residual, Vector& u, Vector& r, V
       return n;
     } catch (const InadmissibleState&) {
       if (!w.corrected || halvings == kMaxBacktracks) throw;
-      u.update(-0.5, du, 1.0);
-      du.scale(0.5);
-      w.increments.last *= 0.5;
-      w.statusCurrent = false;
+      halveCorrection(u, du, w);
       ++out.backtracks;
     }
   }
 }
 
 // Backtracking line search (Armijo on the residual norm) for operators whose residual has kinks
-// (plastic return maps, SecondOrderOperator::lineSearch): the residual at the corrected u,
+// (plastic return maps, SecondOrderOperator::residualHasKinks): the residual at the corrected u,
 // and while it is not below (1 - 1e-4 s) of the residual `start` the correction began from
 // (s: the fraction of the correction kept), the correction is halved (u, du, the operator's
 // extra unknowns), at most kMaxLineSearch times; the last iterate is kept whatever, and Newton
@@ -116,10 +121,8 @@ ResidualNorms searchLine(SecondOrderOperator& op, const ResidualFunction& residu
     if (!std::isfinite(n.residual) || n.residual <= allowed || n.residual <= (1.0 - 1e-4 * kept) * start ||
         halvings == kMaxLineSearch)
       return n;
-    u.update(-0.5, du, 1.0);
-    du.scale(0.5);
+    halveCorrection(u, du, w);
     op.scaleLastCorrection(0.5);
-    w.increments.last *= 0.5;
     w.corrected = true;  // u is a shortened correction's iterate (evaluate may halve it further)
     kept *= 0.5;
     ++out.lineSearchHalvings;
