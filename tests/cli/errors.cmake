@@ -356,3 +356,8 @@ choc_cli_input_error(fbar_small_strain check bad_fbar_small_strain.xml
   "parameter 'Model/Blocks/BAR/Formulation' = 'F-bar': F-bar is for HEX8 and QUAD4 blocks in finite strain. block 'BAR' has QUAD4 elements and 'Strain' = 'small'. set 'Formulation' = 'standard', or 'Strain' = 'finite' on a HEX8 or QUAD4 block")
 choc_cli_input_error(momentum_modal check bad_momentum_modal.xml
   "parameter 'Analyses/reduced/History' = 'N1:PZ': a node set's momentum is recorded by the direct transient only. record it in a 'Transient' analysis, or record velocities here")
+# Newton's line search and the contact status timing: only their listed choices.
+choc_cli_input_error(line_search check bad_line_search.xml
+  "parameter 'Analyses/impact/Newton/Line Search' = 'yes': is not a valid choice. did you mean 'on'.? valid: one of 'auto', 'on', 'off'")
+choc_cli_input_error(status_update check bad_status_update.xml
+  "parameter 'Analyses/impact/Contact/Status Update' = 'sometimes': is not a valid choice. valid: one of 'auto', 'each correction', 'converged solve'")
