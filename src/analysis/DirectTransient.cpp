@@ -251,12 +251,6 @@ void DirectTransient::setup(SetupContext& ctx) {
   b_ = std::make_unique<Built>();
   b_->K = model.stiffness();
   b_->finiteStrain = model.finiteStrain();
-  for (size_t b = 0; b < model.finiteStrainKernels().size() && !s_.explicitScheme; ++b)
-    if (model.finiteStrainKernels()[b] && model.finiteStrainKernels()[b]->fbar())
-      throwInput(inputFile_, "Model/Blocks/" + model.mesh().blocks[b].name + "/Formulation", "F-bar",
-                 "F-bar's tangent is not its consistent one, which Newton needs: the implicit schemes ('" + name_ +
-                     "') do not take it",
-                 "use 'Scheme' = 'central differences', or 'Formulation' = 'standard'");
   b_->M = model.mass();
   b_->meshMass = b_->M;
   b_->loads = assembleLoads(model);

@@ -2,8 +2,10 @@
 #include "fem/FiniteStrainSolid.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <sstream>
 
+#include "fem/FBarTangent.hpp"
 #include "fem/IsoparametricPoint.hpp"
 #include "fem/SolidGeometry.hpp"
 
@@ -326,6 +328,12 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
   F.resize(size_t(g.points));
   for (int q = 0; q < g.points; ++q) F[size_t(q)] = deformationGradient(kin_, pointOf(g, q), u);
   const double J0 = meanDilatation(g, F, B, Finv);
+  std::optional<FBarTangent> fbarTangent;
+  if (fbar_ && K && !elasticTangent) {
+    double V = 0.0;
+    for (double w : g.weight) V += w;
+    fbarTangent.emplace(nd, B, J0 * V);
+  }
   for (int q = 0; q < g.points; ++q) {
     const double w = g.weight[size_t(q)];
     const PointView p = pointOf(g, q);
@@ -341,10 +349,34 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
     else
       addPointForce(kin_, p, [&](int i, int J) { return w * s.P[i][J]; }, f);
     if (!K) continue;
+    if (fbarTangent) {
+      addFBarTangent(p, s, F[size_t(q)], Finv[size_t(q)], w, *fbarTangent, *K);
+      continue;
+    }
     firstElasticity(kin_, s, plastic(), A);
     addTangent(kin_, p, A, w, *K);
   }
+  if (fbarTangent) fbarTangent->finish(*K);
   return energy;
+}
+
+// One point's terms of F-bar's consistent tangent: dF/du per DOF and the full dP/dFbar (the
+// out-of-plane Fbar_zz = s varies in plane strain too).
+void FiniteStrainSolid::addFBarTangent(const PointView& p, const PointState& s, const Mat3& F, const Mat3& Finv,
+                                       double w, FBarTangent& tangent, DenseMatrix& K) const {
+  const int nc = componentsPerNode();
+  thread_local std::vector<double> G, A;
+  G.assign(size_t(p.nodes * nc) * 9, 0.0);
+  for (const GradientRow& r : gradientRows(kin_))
+    for (int a = 0; a < p.nodes; ++a) G[size_t(a * nc + r.comp) * 9 + size_t(3 * r.i + r.J)] += rowValue(kin_, r, p, a);
+  double full[9][9];
+  if (plastic()) {
+    std::copy(&s.plastic.A[0][0], &s.plastic.A[0][0] + 81, &full[0][0]);
+  } else {
+    firstElasticity(Kinematics::ThreeD, s, false, A);  // the nine rows in the order 3 i + J
+    std::copy(A.begin(), A.end(), &full[0][0]);
+  }
+  tangent.addPoint(G, F, Finv, determinant(F), s.F, s.ratio, s.P, full, w, K);
 }
 
 void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vector<double>& u,

@@ -24,10 +24,9 @@
 // change is the element's mean alone and isochoric (plastic, nearly incompressible) flow does not
 // lock the bilinear elements; the force is the exact derivative of int W(Fbar) dV. The mean
 // (rather than det F at the centre) keeps the patch test on distorted and axisymmetric elements:
-// under a homogeneous F, Fbar = F and the force is the standard element's. Its
-// tangent is given as the standard element's at Fbar, which is not F-bar's consistent tangent:
-// it serves the explicit transients' critical-step estimate only, and F-bar is refused in the
-// implicit schemes.
+// under a homogeneous F, Fbar = F and the force is the standard element's. Its tangent is the
+// consistent one (FBarTangent.hpp: dense in the element, not symmetric at a plastic point) for
+// Newton; with `elasticTangent` (the explicit critical step) it is the standard element's at Fbar.
 #pragma once
 #include <array>
 #include <memory>
@@ -63,6 +62,7 @@ struct ElementGeometry {
 
 struct PointView;
 struct PointState;
+class FBarTangent;
 
 // A block's material: hyperelastic or plastic (one of the two).
 struct SolidMaterial {
@@ -143,6 +143,8 @@ class FiniteStrainSolid {
                         std::vector<Mat3>& Finv) const;
   void addFBarForce(const PointView& p, const PointState& s, const Mat3& Finv, const std::vector<double>& B,
                     double w, std::vector<double>& f) const;
+  void addFBarTangent(const PointView& p, const PointState& s, const Mat3& F, const Mat3& Finv, double w,
+                      FBarTangent& tangent, DenseMatrix& K) const;
 };
 
 }  // namespace choc

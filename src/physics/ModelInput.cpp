@@ -112,7 +112,7 @@ void declareBlockParameters(ParameterList& model) {
                 "the element formulation: 'standard' (full integration), or 'F-bar' for HEX8 and QUAD4 "
                 "blocks in finite strain (the volume change of each element taken at its centre, so "
                 "that plastic or nearly incompressible flow does not lock the bilinear elements; "
-                "central differences only)");
+                "explicit and implicit, with its consistent tangent)");
   declareSectionParameters(blk);
 }
 

@@ -350,8 +350,6 @@ choc_cli_input_error(plastic_modal_transient check bad_plastic_modal.xml
   "parameter 'Model/Blocks/BEAM': a modal transient .'bend'. superposes the modes of the linear model. block 'BEAM' is plastic. use a direct 'Transient' analysis for plasticity, or a 'linear elastic' material")
 choc_cli_input_error(plastic_beam check bad_plastic_beam.xml
   "parameter 'Model/Materials/steel/Model' = 'J2 plasticity': beams .BEAM2. are linear elastic in choc .block 'POU1'.. give the beams a 'linear elastic' material")
-choc_cli_input_error(fbar_implicit check bad_fbar_implicit.xml
-  "parameter 'Model/Blocks/BAR/Formulation' = 'F-bar': F-bar's tangent is not its consistent one, which Newton needs: the implicit schemes .'impact'. do not take it. use 'Scheme' = 'central differences', or 'Formulation' = 'standard'")
 choc_cli_input_error(fbar_small_strain check bad_fbar_small_strain.xml
   "parameter 'Model/Blocks/BAR/Formulation' = 'F-bar': F-bar is for HEX8 and QUAD4 blocks in finite strain. block 'BAR' has QUAD4 elements and 'Strain' = 'small'. set 'Formulation' = 'standard', or 'Strain' = 'finite' on a HEX8 or QUAD4 block")
 choc_cli_input_error(momentum_modal check bad_momentum_modal.xml

@@ -56,6 +56,11 @@ choc_cli_script(taylor_bar 300)
 # plastic strain and temperature against the published values widened by the mesh's own error,
 # the temperature as the plastic work's heat, 2 ranks equal 1 (scripts/taylor_bar_johnson_cook.py).
 choc_cli_script(taylor_bar_johnson_cook 300)
+# F-bar in the implicit schemes (its consistent tangent): the Taylor bar held on the wall, its first
+# 2 us by average acceleration against central differences within the implicit run's Richardson
+# estimate, at most 4 Newton corrections per step, the standard QUAD4 locking, 2 ranks equal 1
+# (scripts/fbar_implicit.py).
+choc_cli_script(fbar_implicit 120)
 # The Taylor bar in 3D (HEX8 F-bar, coarse): the quarter against the axisymmetric bar of the same
 # element size, 2 ranks equal 1, the whole bar turned as a rigid whole (scripts/taylor_bar_3d.py).
 choc_cli_script(taylor_bar_3d 600)

@@ -238,6 +238,78 @@ TEST_P(FBar, HomogeneousDeformationIsTheStandardElements) {
   for (size_t k = 0; k < f.size(); ++k) EXPECT_NEAR(f[k], fs[k], 1e-12 * scale);
 }
 
+// F-bar's consistent tangent (FBarTangent.hpp) against central differences of its force, where
+// J varies over the element: neo-Hookean (a symmetric tangent, the energy's second derivative)
+// and J2 from a yielded committed state (the algorithmic tangent: symmetric too). The standard
+// element's tangent at Fbar, which F-bar gave before, fails the same check.
+TEST_P(FBar, TangentMatchesCentralDifferencesOfTheForce) {
+  const ElementCase& c = GetParam();
+  std::vector<double> u = displacementOf(c, generalGradient(c.kinematics));
+  for (size_t j = 0; j < u.size(); ++j) u[j] += 0.02 * std::sin(1.7 * double(j) + 0.3);
+  const FiniteStrainSolid el(c.topology, c.kinematics, makeHyperelastic("neo-Hookean", kE, kNu), true);
+  const ElementGeometry g = el.geometry(c.x);
+  auto R = [&](const std::vector<double>& x) {
+    std::vector<double> r;
+    el.evaluate(g, x, r, nullptr);
+    return r;
+  };
+  std::vector<double> f;
+  DenseMatrix K, Kstd;
+  el.evaluate(g, u, f, &K);
+  el.evaluate(g, u, f, &Kstd, nullptr, nullptr, nullptr, true);  // the standard element's at Fbar
+  test::Dense J(K.rows(), K.cols()), Jstd(K.rows(), K.cols());
+  double asym = 0.0, norm = 0.0;
+  for (int i = 0; i < K.rows(); ++i)
+    for (int j = 0; j < K.cols(); ++j) {
+      J(i, j) = K(i, j), Jstd(i, j) = Kstd(i, j);
+      asym = std::max(asym, std::abs(K(i, j) - K(j, i))), norm = std::max(norm, std::abs(K(i, j)));
+    }
+  test::TangentCheckOptions o;
+  o.scale = 0.1;
+  EXPECT_TRUE(test::tangentMatches(R, J, u, o));
+  EXPECT_TRUE(test::tangentMismatches(R, test::perturbed(J), u, o));
+  EXPECT_TRUE(test::tangentMismatches(R, Jstd, u, o));
+  EXPECT_LE(asym, 1e-12 * norm);  // round-off of entries of size norm
+}
+
+TEST_P(FBar, PlasticTangentMatchesCentralDifferencesOfTheForce) {
+  const ElementCase& c = GetParam();
+  const auto m = std::make_shared<const J2Plasticity>(linearHardening(kE, kNu, kE / 200, kE / 20), true);
+  const FiniteStrainSolid el(c.topology, c.kinematics, m, true);
+  const ElementGeometry g = el.geometry(c.x);
+  Mat3 F1 = identity3();
+  F1[0][0] = 1.02, F1[1][1] = 0.99;
+  if (c.kinematics != Kinematics::Axisymmetric) F1[0][1] = 0.015;
+  std::vector<double> old(size_t(el.stateSize())), committed(size_t(el.stateSize())), f;
+  el.initialState(old.data());
+  std::vector<double> u1 = displacementOf(c, F1);
+  for (size_t j = 0; j < u1.size(); ++j) u1[j] += 0.004 * std::cos(1.3 * double(j));  // J varies
+  double work = 0.0;
+  el.evaluate(g, u1, f, nullptr, old.data(), committed.data(), &work);
+  ASSERT_GT(work, 0.0) << "the first deformation must yield";
+  std::vector<double> u = displacementOf(c, generalGradient(c.kinematics));
+  for (size_t j = 0; j < u.size(); ++j) u[j] = 0.1 * u[j] + 0.003 * std::sin(1.7 * double(j) + 0.3);
+  auto R = [&](const std::vector<double>& x) {
+    std::vector<double> r;
+    el.evaluate(g, x, r, nullptr, committed.data());
+    return r;
+  };
+  DenseMatrix K;
+  el.evaluate(g, u, f, &K, committed.data());
+  test::Dense J(K.rows(), K.cols());
+  double asym = 0.0, norm = 0.0;
+  for (int i = 0; i < K.rows(); ++i)
+    for (int j = 0; j < K.cols(); ++j) {
+      J(i, j) = K(i, j);
+      asym = std::max(asym, std::abs(K(i, j) - K(j, i))), norm = std::max(norm, std::abs(K(i, j)));
+    }
+  EXPECT_LE(asym, 1e-12 * norm);  // J2's algorithmic tangent has the major symmetry: so has F-bar's
+  test::TangentCheckOptions o;
+  o.scale = 1e-3;  // the strain over which the plastic response varies (yield strain 5e-3)
+  EXPECT_TRUE(test::tangentMatches(R, J, u, o));
+  EXPECT_TRUE(test::tangentMismatches(R, test::perturbed(J), u, o));
+}
+
 INSTANTIATE_TEST_SUITE_P(Bilinear, FBar, ::testing::ValuesIn(bilinearCases()),
                          [](const auto& info) { return info.param.label; });
 
