@@ -84,7 +84,10 @@ CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients
   CorrectionStatus st;
   if (restoreKept_) restoreKeptFactorization();
   ContactSystem& sys = system();
-  internal_->tangent(u);  // K_'s values at u (a linear model: K, always version 0)
+  {
+    TimerScope ts(timer_, "Transient: assembly");  // the finite-strain elements' tangents
+    internal_->tangent(u);  // K_'s values at u (a linear model: K, always version 0)
+  }
   std::vector<char> status = sys.statusKey();
   // The links' tangent, with v following u (dv/du = cv / cd); none for W = M.
   const bool linkTangent = links_ && c.cd > 0.0;
