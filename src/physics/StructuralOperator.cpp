@@ -79,15 +79,19 @@ double StructuralOperator::addConstraintForces(const Vector& u, const Vector& v,
   return contact_ && !forwardIncrement_ ? contact_->addForces(u, out) : 0.0;
 }
 
+// K_'s values at u (a linear model: K, always version 0); the finite-strain elements' tangents
+// count as assembly.
+void StructuralOperator::evaluateTangent(const Vector& u) {
+  TimerScope ts(timer_, "Transient: assembly");
+  internal_->tangent(u);
+}
+
 CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients& c,
                                                      const Vector& u, const Vector& r, Vector& du) {
   CorrectionStatus st;
   if (restoreKept_) restoreKeptFactorization();
   ContactSystem& sys = system();
-  {
-    TimerScope ts(timer_, "Transient: assembly");  // the finite-strain elements' tangents
-    internal_->tangent(u);  // K_'s values at u (a linear model: K, always version 0)
-  }
+  evaluateTangent(u);
   std::vector<char> status = sys.statusKey();
   // The links' tangent, with v following u (dv/du = cv / cd); none for W = M.
   const bool linkTangent = links_ && c.cd > 0.0;

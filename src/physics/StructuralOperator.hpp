@@ -145,6 +145,7 @@ class StructuralOperator : public ExplicitOperator {
   bool restoreKept_ = false;
   int recordedFactorizations_ = -1;  // the solver's factorisations when kept_.factored was taken
   void restoreKeptFactorization();
+  void evaluateTangent(const Vector& u);
 };
 
 }  // namespace choc
