@@ -39,7 +39,7 @@ class FBarTangent {
 
  private:
   int n_;
-  const std::vector<double>& B_;
+  const std::vector<double>& B_;  // the caller's, alive while the tangent is assembled
   double JV_;
   double pressureSum_ = 0.0;     // sum_q w p
   std::vector<double> dilation_;  // sum_q w J ((F^-T : DF)(F^-T : dF) - tr(F^-1 DF F^-1 dF)), n x n

@@ -25,7 +25,7 @@
 // lock the bilinear elements; the force is the exact derivative of int W(Fbar) dV. The mean
 // (rather than det F at the centre) keeps the patch test on distorted and axisymmetric elements:
 // under a homogeneous F, Fbar = F and the force is the standard element's. Its tangent is the
-// consistent one (FBarTangent.hpp: dense in the element, not symmetric at a plastic point) for
+// consistent one (FBarTangent.hpp: dense in the element, symmetric where the material tangent is) for
 // Newton; with `elasticTangent` (the explicit critical step) it is the standard element's at Fbar.
 #pragma once
 #include <array>

@@ -63,7 +63,7 @@ choc_cli_script(taylor_bar_johnson_cook 300)
 choc_cli_script(fbar_implicit 120)
 # The Taylor bar by HHT (alpha = -0.3, 0.1 us, F-bar's consistent tangent, the blocks' own mass): no
 # energy created, the final radius and length within 0.5 % of central differences on the same mesh
-# (scripts/taylor_bar_implicit.py).
+# (scripts/taylor_bar_implicit.py); its first 4 us on 2 ranks and renumbered equal 1 rank.
 choc_cli_script(taylor_bar_implicit 300)
 # The Taylor bar in 3D (HEX8 F-bar, coarse): the quarter against the axisymmetric bar of the same
 # element size, 2 ranks equal 1, the whole bar turned as a rigid whole (scripts/taylor_bar_3d.py).
