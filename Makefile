@@ -5,6 +5,10 @@ JOBS  ?= $(shell nproc)
 CTEST_ARGS ?=
 # Debian's Python (matplotlib, netCDF4 and ParaView come from Debian packages).
 PYTHON ?= /usr/bin/python3
+# Open MPI's waiting ranks give up their core (sched_yield) instead of spinning: with two 2-rank
+# tests at once on 2 cores, spinning ranks wait a time slice per message (a 2 s run measured at
+# 93 s; 4.3 s yielding; no cost alone). Every mpirun under make (tests, studies, benchmarks).
+export OMPI_MCA_mpi_yield_when_idle = 1
 
 .PHONY: all deps configure build run test verify study study-plastic bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-plastic bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
 

@@ -10,5 +10,5 @@ foreach(m c d e)
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/run_with_known_rows.cmake)
 endforeach()
 add_test(NAME sdnl111c.np2
-         COMMAND mpirun --allow-run-as-root --oversubscribe -np 2 $<TARGET_FILE:choc> run
+         COMMAND mpirun --allow-run-as-root --oversubscribe --mca mpi_yield_when_idle 1 -np 2 $<TARGET_FILE:choc> run
                  ${CMAKE_SOURCE_DIR}/input/sdnl111c.xml -o ${CMAKE_BINARY_DIR}/results/sdnl111c_np2)

@@ -7,7 +7,7 @@
 set -euo pipefail
 choc="$1"; out="$2"
 top="$(cd "$(dirname "$0")/../.." && pwd)"
-mpi=(mpirun --allow-run-as-root --oversubscribe)
+mpi=(mpirun --allow-run-as-root --oversubscribe --mca mpi_yield_when_idle 1)
 rm -rf "$out"; mkdir -p "$out"
 "$top/tools/build/make-scale-mesh.sh" "$choc" 3 40 "$out/scale_small.exo" > /dev/null
 sed -e 's|\.\./meshes/scale_3d\.exo|scale_small.exo|' \

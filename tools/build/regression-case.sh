@@ -39,7 +39,7 @@ case "$mode" in
   mpi2)
     [ -d "$out/serial" ] || { echo "regression: run the serial case first"; exit 1; }
     rm -rf "$out/mpi2"
-    mpirun --allow-run-as-root --oversubscribe -np 2 "$choc" run "$input" -o "$out/mpi2" \
+    mpirun --allow-run-as-root --oversubscribe --mca mpi_yield_when_idle 1 -np 2 "$choc" run "$input" -o "$out/mpi2" \
       > "$out/mpi2.log" 2>&1 || { tail -n 20 "$out/mpi2.log"; echo "regression: 2-rank run failed"; exit 1; }
     for h in $HISTORIES; do
       echo "2 ranks vs 1 rank, $h:"

@@ -41,7 +41,9 @@ TOOLS = os.path.dirname(LIB)
 TOP = os.path.dirname(TOOLS)
 # --bind-to none: Open MPI pins rank r to core r for np <= 2; on a machine shared with other
 # jobs a pinned rank waits for its core while the other core idles.
-MPIRUN = ["mpirun", "--allow-run-as-root", "--oversubscribe", "--bind-to", "none"]
+# mpi_yield_when_idle: a waiting rank yields its core rather than spinning; two 2-rank runs at
+# once on 2 cores otherwise wait a scheduler slice per message (measured 93 s against 4.3 s).
+MPIRUN = ["mpirun", "--allow-run-as-root", "--oversubscribe", "--bind-to", "none", "--mca", "mpi_yield_when_idle", "1"]
 # choc's exit codes (docs/user-guide/errors.md).
 EXIT_OK, EXIT_INPUT, EXIT_NUMERICAL, EXIT_CHECK_FAILED = 0, 1, 2, 3
 

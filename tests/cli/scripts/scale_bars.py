@@ -23,7 +23,7 @@ def run_deck(choc, work, name, text, ranks=1):
         f.write(text)
     cmd = [choc, "run", path, "-o", os.path.join(work, name)]
     if ranks > 1:
-        cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + cmd
+        cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "--mca", "mpi_yield_when_idle", "1", "-np", str(ranks)] + cmd
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
         sys.exit(f"{name}: choc exited {p.returncode}:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
