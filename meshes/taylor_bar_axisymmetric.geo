@@ -2,10 +2,14 @@
 // length L = 32.4 mm, as the axisymmetric rectangle 0 <= x = r <= R, 0 <= y = z <= L of the
 // meridian plane (y the axis), its impact face y = 0. Quadrilaterals, n across the radius
 // (default 8) and the same size along the length (round(n L / R) = 81 for n = 8); quadratic
-// (QUAD8) with -order 2 and Mesh.SecondOrderIncomplete.
+// (QUAD8) with -order 2 and Mesh.SecondOrderIncomplete. tris = 1: each square cut into two
+// triangles along alternating diagonals (TRI3; TRI6 with -order 2).
 //   gmsh -2 -format msh41 -setnumber n 16 meshes/taylor_bar_axisymmetric.geo -o bar.msh
 If (!Exists(n))
   n = 8;
+EndIf
+If (!Exists(tris))
+  tris = 0;
 EndIf
 R = 0.0032;
 L = 0.0324;
@@ -22,8 +26,12 @@ Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
 Transfinite Curve{1, 3} = n + 1;
 Transfinite Curve{2, 4} = m + 1;
-Transfinite Surface{1};
-Recombine Surface{1};
+If (tris)
+  Transfinite Surface{1} Alternate;
+Else
+  Transfinite Surface{1};
+  Recombine Surface{1};
+EndIf
 Mesh.SecondOrderIncomplete = 1;
 Physical Surface("BAR") = {1};
 Physical Curve("IMPACT") = {1};

@@ -227,8 +227,10 @@ FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kin
 
 void FiniteStrainSolid::checkFBar() const {
   if (!fbar_) return;
-  if (shape_ != SolidShape::Hex8 && shape_ != SolidShape::Quad4)
-    throw std::invalid_argument(std::string("F-bar is for HEX8 and QUAD4 elements, not ") + topologyName(shape_));
+  if (shape_ == SolidShape::Tet4 || shape_ == SolidShape::Tri3)
+    throw std::invalid_argument(std::string("F-bar averages the volume change over an element's points; ") +
+                                topologyName(shape_) + " has one (use " +
+                                (shape_ == SolidShape::Tet4 ? "TET10" : "TRI6") + " with F-bar for plastic flow)");
   if (!finiteKinematics()) throw std::invalid_argument("F-bar needs finite-strain kinematics ('Strain' = 'finite')");
 }
 

@@ -18,11 +18,12 @@
 // same integrals with P = sigma(sym(F - I)) and A = dsigma/deps are the small-strain plastic
 // element (no geometric stiffness, no det F check).
 //
-// F-bar (de Souza Neto, Peric, Dutko and Owen 1996) in its mean-dilatation form, for HEX8 and
-// QUAD4 in finite strain: each point's material sees Fbar = (Jbar / J)^(1/3) F, Jbar = int J dV /
-// V the element's volume ratio (its current volume over its reference volume), so the volume
-// change is the element's mean alone and isochoric (plastic, nearly incompressible) flow does not
-// lock the bilinear elements; the force is the exact derivative of int W(Fbar) dV. The mean
+// F-bar (de Souza Neto, Peric, Dutko and Owen 1996) in its mean-dilatation form, for every
+// element with more than one point (not TET4, TRI3) in finite strain: each point's material sees
+// Fbar = (Jbar / J)^(1/3) F, Jbar = int J dV / V the element's volume ratio (its current volume
+// over its reference volume), so the volume change is the element's mean alone, one constraint
+// per element (Q1/P0 for HEX8 and QUAD4, P2/P0 for TET10 and TRI6), and isochoric (plastic,
+// nearly incompressible) flow does not lock; the force is the exact derivative of int W(Fbar) dV. The mean
 // (rather than det F at the centre) keeps the patch test on distorted and axisymmetric elements:
 // under a homogeneous F, Fbar = F and the force is the standard element's. Its tangent is the
 // consistent one (FBarTangent.hpp: dense in the element, symmetric where the material tangent is) for

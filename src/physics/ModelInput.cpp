@@ -109,10 +109,11 @@ void declareBlockParameters(ParameterList& model) {
                 "direct transients only). Large rotations need 'finite': a small-strain body turned "
                 "through a large angle is stressed by the rotation itself. Beams are small-strain");
   declareChoice(blk, "Formulation", "standard", {"standard", "F-bar"},
-                "the element formulation: 'standard' (full integration), or 'F-bar' for HEX8 and QUAD4 "
-                "blocks in finite strain (the volume change of each element taken at its centre, so "
-                "that plastic or nearly incompressible flow does not lock the bilinear elements; "
-                "explicit and implicit, with its consistent tangent)");
+                "the element formulation: 'standard' (full integration), or 'F-bar' for blocks in finite "
+                "strain of HEX8, HEX20, TET10, QUAD4, QUAD8 or TRI6 elements (each element's volume change "
+                "taken as its mean, so that plastic or nearly incompressible flow does not lock HEX8, "
+                "QUAD4 or TET10; explicit and implicit, with its consistent tangent). TET4 and TRI3 "
+                "have one point and lock: mesh plastic parts with TET10 or TRI6");
   declareSectionParameters(blk);
 }
 

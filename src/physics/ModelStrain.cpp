@@ -35,11 +35,14 @@ std::shared_ptr<const FiniteStrainSolid> Model::strainKernel(const ElementBlock&
     throwInput(inputFile_, lawPath, law, "a finite-strain law on block '" + blk.name + "', whose 'Strain' is 'small'",
                "set '" + path + "/Strain' = 'finite', or the material's 'Model' = 'linear elastic'");
   const bool fbar = bp.get<std::string>("Formulation") == "F-bar";
-  if (fbar && (!finite || (blk.topology != "HEX8" && blk.topology != "QUAD4")))
+  const bool onePoint = blk.topology == "TET4" || blk.topology == "TRI3";
+  if (fbar && (!finite || onePoint))
     throwInput(inputFile_, path + "/Formulation", "F-bar",
-               "F-bar is for HEX8 and QUAD4 blocks in finite strain; block '" + blk.name + "' has " + blk.topology +
-                   " elements and 'Strain' = '" + strain + "'",
-               "set 'Formulation' = 'standard', or 'Strain' = 'finite' on a HEX8 or QUAD4 block");
+               "F-bar is for blocks in finite strain of elements with several points (HEX8, HEX20, TET10, QUAD4, "
+               "QUAD8, TRI6); block '" + blk.name + "' has " + blk.topology + " elements and 'Strain' = '" + strain + "'",
+               onePoint ? "mesh the block with " + std::string(blk.topology == "TET4" ? "TET10" : "TRI6") +
+                              " elements (gmsh -order 2), or set 'Formulation' = 'standard'"
+                        : "set 'Strain' = 'finite', or 'Formulation' = 'standard'");
   if (!finite && !plastic) return nullptr;
   try {
     const double E = mp.get<double>("Young's Modulus"), nu = mp.get<double>("Poisson's Ratio");

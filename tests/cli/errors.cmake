@@ -351,7 +351,7 @@ choc_cli_input_error(plastic_modal_transient check bad_plastic_modal.xml
 choc_cli_input_error(plastic_beam check bad_plastic_beam.xml
   "parameter 'Model/Materials/steel/Model' = 'J2 plasticity': beams .BEAM2. are linear elastic in choc .block 'POU1'.. give the beams a 'linear elastic' material")
 choc_cli_input_error(fbar_small_strain check bad_fbar_small_strain.xml
-  "parameter 'Model/Blocks/BAR/Formulation' = 'F-bar': F-bar is for HEX8 and QUAD4 blocks in finite strain. block 'BAR' has QUAD4 elements and 'Strain' = 'small'. set 'Formulation' = 'standard', or 'Strain' = 'finite' on a HEX8 or QUAD4 block")
+  "parameter 'Model/Blocks/BAR/Formulation' = 'F-bar': F-bar is for blocks in finite strain of elements with several points .HEX8, HEX20, TET10, QUAD4, QUAD8, TRI6.. block 'BAR' has QUAD4 elements and 'Strain' = 'small'. set 'Strain' = 'finite', or 'Formulation' = 'standard'")
 choc_cli_input_error(momentum_modal check bad_momentum_modal.xml
   "parameter 'Analyses/reduced/History' = 'N1:PZ': a node set's momentum is recorded by the direct transient only. record it in a 'Transient' analysis, or record velocities here")
 # Newton's line search and the contact status timing: only their listed choices.
@@ -359,3 +359,6 @@ choc_cli_input_error(line_search check bad_line_search.xml
   "parameter 'Analyses/impact/Newton/Line Search' = 'yes': is not a valid choice. did you mean 'on'.? valid: one of 'auto', 'on', 'off'")
 choc_cli_input_error(status_update check bad_status_update.xml
   "parameter 'Analyses/impact/Contact/Status Update' = 'sometimes': is not a valid choice. valid: one of 'auto', 'each correction', 'converged solve'")
+# F-bar on a one-point element: nothing to average (TET4 locks in plastic flow: TET10 F-bar).
+choc_cli_input_error(fbar_tet4 check bad_fbar_tet4.xml
+  "parameter 'Model/Blocks/LOWER/Formulation' = 'F-bar': F-bar is for blocks in finite strain of elements with several points .HEX8, HEX20, TET10, QUAD4, QUAD8, TRI6.. block 'LOWER' has TET4 elements and 'Strain' = 'finite'. mesh the block with TET10 elements .gmsh -order 2., or set 'Formulation' = 'standard'")

@@ -61,6 +61,10 @@ choc_cli_script(taylor_bar_johnson_cook 300)
 # estimate, at most 4 Newton corrections per step, the standard QUAD4 locking, 2 ranks equal 1
 # (scripts/fbar_implicit.py).
 choc_cli_script(fbar_implicit 120)
+# Plastic tetrahedra: TET4 locks on the Taylor bar (below the published radius by more than its
+# mesh error); TET10 F-bar (P2/P0) by average acceleration against central differences, at most
+# 4 Newton corrections per step, 2 ranks equal 1 (scripts/fbar_tets.py).
+choc_cli_script(fbar_tets 300)
 # The Taylor bar by HHT (alpha = -0.3, 0.1 us, F-bar's consistent tangent, the blocks' own mass): no
 # energy created, the final radius and length within 0.5 % of central differences on the same mesh
 # (scripts/taylor_bar_implicit.py); its first 4 us on 2 ranks and renumbered equal 1 rank.
