@@ -600,6 +600,20 @@ def remove_sublist(tree, path):
     parent.remove(e)
 
 
+def hold_on_wall(tree, analysis, side_set, component, scheme, dt, end):
+    """An impact deck turned into a short run with its contact replaced by a Dirichlet condition
+    holding side_set's `component` (the bar stuck on the wall: no contact iterations), by `scheme`
+    at `dt` up to `end`, without Exodus output; an implicit scheme drops the explicit keys."""
+    remove_sublist(tree, f"{analysis}/Contact")
+    set_params(tree, {"Model/Dirichlet/wall/Node Set": side_set, "Model/Dirichlet/wall/Components": component,
+                      f"{analysis}/Scheme": scheme, f"{analysis}/Time Step": dt, f"{analysis}/End Time": end,
+                      f"{analysis}/Exodus Interval": 0}, create=True)
+    if scheme != "central differences":
+        for p in ("Stability Check", "Critical Step Interval"):
+            remove_param(tree, f"{analysis}/{p}", missing_ok=True)
+    return tree
+
+
 def rename_sublist(tree, path, new_name):
     """Renames the sublist at path (DeckError when absent or when new_name is taken)."""
     e = sublist(tree, path)

@@ -16,7 +16,6 @@ meshed in tetrahedra (meshes/taylor_bar_3d.geo, tets = 1).
   - 2 ranks give the implicit 1-rank histories to 1e-6 of their peaks (Newton's tolerance).
 usage: fbar_tets.py CHOC SOURCE_DIR WORK_DIR"""
 import os
-import re
 import sys
 
 choc, src, work = sys.argv[1:4]
@@ -63,20 +62,14 @@ tet10 = mesh(2, 2)
 
 def held(tag, scheme="average acceleration", dt=4e-8):
     d = chocrun.load_deck(chocrun.input_path("taylor_bar_3d.xml"))
-    chocrun.remove_sublist(d, f"{AN}/Contact")
-    chocrun.set_params(d, {"Mesh/File": tet10, "Model/Dirichlet/wall/Node Set": "IMPACT",
-                           "Model/Dirichlet/wall/Components": "DY", f"{AN}/Scheme": scheme, f"{AN}/Time Step": dt,
-                           f"{AN}/End Time": END, f"{AN}/Exodus Interval": 0}, create=True)
-    if scheme != "central differences":
-        for p in ("Stability Check", "Critical Step Interval"):
-            chocrun.remove_param(d, f"{AN}/{p}")
-    return tag, d
+    chocrun.set_param(d, "Mesh/File", tet10)
+    return tag, chocrun.hold_on_wall(d, AN, "IMPACT", "DY", scheme, dt, END)
 
 
 runs = {tag: run(tag, d) for tag, d in (held("implicit"), held("implicit_half", dt=2e-8),
                                          held("explicit", "central differences"))}
-r, summary, hist = runs["implicit"]
-most = int(re.search(r"Newton iterations \([0-9.]+ per step, at most (\d+)\)", r.stdout).group(1))
+_, summary, hist = runs["implicit"]
+most = int(summary["newton"]["max_per_step"])
 print(f"TET10 F-bar implicit: {summary['newton']['iterations']} Newton corrections in {summary['steps']} steps, "
       f"at most {most} per step (at most 4)")
 if not most <= 4:
