@@ -145,6 +145,7 @@ EnergyTerms DirectStepView::energies() {
   e.dissipated = dissipated_ + (op_.links() ? op_.links()->dissipatedEnergy() : 0.0) +
                  op_.frictionDissipation() + op_.internalForce().dissipatedWork();
   e.plastic = op_.internalForce().dissipatedWork();
+  e.hourglass = op_.internalForce().hourglassEnergy(*u_);
   // Work of moving obstacles: trapezoidal rule on their power.
   const double obstaclePower = contact_ ? contact_->obstaclePower() : 0.0;
   obstacleWork_ += 0.5 * info_.dt * (lastObstaclePower_ + obstaclePower);

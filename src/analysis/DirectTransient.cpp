@@ -274,7 +274,8 @@ void DirectTransient::setup(SetupContext& ctx) {
     const std::vector<std::string> lc = b_->links->historyColumns();
     interactionColumns.insert(interactionColumns.end(), lc.begin(), lc.end());
   }
-  b_->columns = historyColumns(probeColumns, interactionColumns, !model.firstPlasticBlock().empty());
+  b_->columns = historyColumns(probeColumns, interactionColumns, !model.firstPlasticBlock().empty(),
+                               model.hasOnePointBlocks());
   const int dims = static_cast<int>(spatialComponents(model.mesh().dimension).size());
   const int contactFields = b_->contact ? static_cast<int>(ContactReport(*b_->contact, 0).nodalFieldNames().size()) : 0;
   checkOutputSize({nominalSteps(s_.time.startTime, s_.time.endTime, s_.time.timeStep), int(b_->columns.size()),

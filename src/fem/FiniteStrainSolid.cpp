@@ -213,19 +213,34 @@ void addTangent(Kinematics k, const PointView& p, const std::vector<double>& A, 
 
 FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
                                      std::shared_ptr<const HyperelasticMaterial> material, bool fbar)
-    : shape_(solidTopology(topology)), kin_(kinematics), material_{std::move(material), nullptr}, fbar_(fbar) {
-  checkSolidKinematics(shape_, kin_);
-  checkFBar();
-}
+    : FiniteStrainSolid(topology, kinematics, SolidMaterial{std::move(material), nullptr}, ElementFormulation{fbar}) {}
 
 FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
                                      std::shared_ptr<const J2Plasticity> material, bool fbar)
-    : shape_(solidTopology(topology)), kin_(kinematics), material_{nullptr, std::move(material)}, fbar_(fbar) {
+    : FiniteStrainSolid(topology, kinematics, SolidMaterial{nullptr, std::move(material)}, ElementFormulation{fbar}) {}
+
+FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kinematics, SolidMaterial material,
+                                     const ElementFormulation& formulation)
+    : shape_(solidTopology(topology)),
+      kin_(kinematics),
+      material_(std::move(material)),
+      fbar_(formulation.fbar),
+      onePoint_(formulation.onePoint),
+      hourglass_(formulation.hourglass) {
   checkSolidKinematics(shape_, kin_);
-  checkFBar();
+  checkFormulation();
 }
 
-void FiniteStrainSolid::checkFBar() const {
+void FiniteStrainSolid::checkFormulation() const {
+  if (fbar_ && onePoint_) throw std::invalid_argument("F-bar and one-point integration exclude each other");
+  if (onePoint_ && !((shape_ == SolidShape::Hex8 && kin_ == Kinematics::ThreeD) ||
+                     (shape_ == SolidShape::Quad4 && kin_ == Kinematics::PlaneStrain)))
+    throw std::invalid_argument(std::string("one-point integration with hourglass control is for HEX8 in 3D and QUAD4 "
+                                            "in plane strain, not ") +
+                                topologyName(shape_) +
+                                (kin_ == Kinematics::Axisymmetric ? " (axisymmetric)" : ""));
+  if (onePoint_ && !(hourglass_ > 0 && hourglass_ <= 1))
+    throw std::invalid_argument("the hourglass coefficient must lie in (0, 1]");
   if (!fbar_) return;
   if (shape_ == SolidShape::Tet4 || shape_ == SolidShape::Tri3)
     throw std::invalid_argument(std::string("F-bar averages the volume change over an element's points; ") +
@@ -234,14 +249,18 @@ void FiniteStrainSolid::checkFBar() const {
   if (!finiteKinematics()) throw std::invalid_argument("F-bar needs finite-strain kinematics ('Strain' = 'finite')");
 }
 
+const QuadratureRule& FiniteStrainSolid::rule() const {
+  return onePoint_ ? gaussBoxRule(parametricDimension(shape_), 1) : stiffnessRule(shape_, kin_);
+}
+
 int FiniteStrainSolid::stateSize() const {
-  return plastic() ? kJ2StateSize * stiffnessRule(shape_, kin_).size() : 0;
+  return plastic() ? kJ2StateSize * rule().size() : 0;
 }
 
 void FiniteStrainSolid::initialState(double* state) const {
   if (!plastic()) return;
   const auto s0 = material_.plastic->initialState();
-  for (int q = 0; q < stiffnessRule(shape_, kin_).size(); ++q) std::copy(s0.begin(), s0.end(), state + kJ2StateSize * q);
+  for (int q = 0; q < rule().size(); ++q) std::copy(s0.begin(), s0.end(), state + kJ2StateSize * q);
 }
 
 double FiniteStrainSolid::modulus() const {
@@ -267,7 +286,88 @@ ElementGeometry FiniteStrainSolid::geometry(const std::vector<Point3>& X) const 
     g.N.insert(g.N.end(), p.N.begin(), p.N.end());
     g.radius.push_back(p.x[0]);
   }
+  if (onePoint_) condenseToOnePoint(X, g);
   return g;
+}
+
+void FiniteStrainSolid::condenseToOnePoint(const std::vector<Point3>& X, ElementGeometry& g) const {
+  const int n = g.nodes, dim = parametricDimension(shape_);
+  double V = 0.0;
+  std::vector<double> b(size_t(n) * 3, 0.0);
+  for (int q = 0; q < g.points; ++q) {
+    const double w = g.weight[size_t(q)];
+    V += w;
+    for (size_t k = 0; k < b.size(); ++k) b[k] += w * g.dNdX[size_t(q) * b.size() + k];
+  }
+  double bb = 0.0;
+  for (double& v : b) v /= V, bb += v * v;
+  g.points = 1;
+  g.weight.assign(1, V);
+  g.dNdX = b;
+  // The hourglass base vectors: the products of two or three natural coordinates at the nodes.
+  const auto& xi = nodeNaturalCoordinates(shape_);
+  std::vector<std::vector<double>> Gamma;
+  if (dim == 3) {
+    for (int m = 0; m < 4; ++m) {
+      Gamma.emplace_back();
+      for (int a = 0; a < n; ++a) {
+        const Point3& c = xi[size_t(a)];
+        Gamma.back().push_back(m == 0 ? c[1] * c[2] : m == 1 ? c[2] * c[0] : m == 2 ? c[0] * c[1] : c[0] * c[1] * c[2]);
+      }
+    }
+  } else {
+    Gamma.emplace_back();
+    for (int a = 0; a < n; ++a) Gamma.back().push_back(xi[size_t(a)][0] * xi[size_t(a)][1]);
+  }
+  g.hourglass.clear();
+  for (const auto& G : Gamma) {
+    double GX[3] = {0, 0, 0};  // Gamma . X_J
+    for (int a = 0; a < n; ++a)
+      for (int J = 0; J < dim; ++J) GX[J] += G[size_t(a)] * X[size_t(a)][size_t(J)];
+    for (int a = 0; a < n; ++a) {
+      double v = G[size_t(a)];
+      for (int J = 0; J < dim; ++J) v -= GX[J] * b[size_t(a) * 3 + size_t(J)];
+      g.hourglass.push_back(v);
+    }
+  }
+  g.hourglassStiffness = hourglass_ * modulus() * V * bb / (dim == 3 ? 72.0 : 24.0);
+}
+
+// Mode m's amplitudes q_m,i = sum_a gamma_m,a u_a,i (i < nc).
+static void hourglassAmplitude(const ElementGeometry& g, int m, int nc, const std::vector<double>& u, double q[3]) {
+  const double* gm = &g.hourglass[size_t(m) * g.nodes];
+  q[0] = q[1] = q[2] = 0.0;
+  for (int a = 0; a < g.nodes; ++a)
+    for (int i = 0; i < nc; ++i) q[i] += gm[a] * u[size_t(a * nc + i)];
+}
+
+double FiniteStrainSolid::hourglassEnergy(const ElementGeometry& g, const std::vector<double>& u) const {
+  const int nc = componentsPerNode(), modes = g.nodes ? static_cast<int>(g.hourglass.size()) / g.nodes : 0;
+  double energy = 0.0, q[3];
+  for (int m = 0; m < modes; ++m) {
+    hourglassAmplitude(g, m, nc, u, q);
+    for (int i = 0; i < nc; ++i) energy += 0.5 * g.hourglassStiffness * q[i] * q[i];
+  }
+  return energy;
+}
+
+double FiniteStrainSolid::addHourglass(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f,
+                                       DenseMatrix* K) const {
+  const int n = g.nodes, nc = componentsPerNode(), modes = static_cast<int>(g.hourglass.size()) / n;
+  const double k = g.hourglassStiffness;
+  double energy = 0.0, q[3];
+  for (int m = 0; m < modes; ++m) {
+    const double* gm = &g.hourglass[size_t(m) * n];
+    hourglassAmplitude(g, m, nc, u, q);
+    for (int i = 0; i < nc; ++i) energy += 0.5 * k * q[i] * q[i];
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < nc; ++i) f[size_t(a * nc + i)] += k * gm[a] * q[i];
+    if (!K) continue;
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b)
+        for (int i = 0; i < nc; ++i) (*K)(a * nc + i, b * nc + i) += k * gm[a] * gm[b];
+  }
+  return energy;
 }
 
 // F-bar's mean dilatation: Jbar = int J dV / V, and dJbar/du_a / Jbar (header) into B.
@@ -318,7 +418,7 @@ void FiniteStrainSolid::addFBarForce(const PointView& p, const PointState& s, co
 double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f,
                                    DenseMatrix* K, const double* old, double* next, double* plasticWork,
                                    bool elasticTangent, double dt) const {
-  const QuadratureRule& rule = stiffnessRule(shape_, kin_);
+  const QuadratureRule& rule = this->rule();
   const int nc = componentsPerNode(), n = g.nodes, nd = n * nc;
   f.assign(size_t(nd), 0.0);
   if (K) K->resize(nd, nd);
@@ -359,6 +459,7 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
     addTangent(kin_, p, A, w, *K);
   }
   if (fbarTangent) fbarTangent->finish(*K);
+  if (onePoint_) energy += addHourglass(g, u, f, K);
   return energy;
 }
 
@@ -384,7 +485,7 @@ void FiniteStrainSolid::addFBarTangent(const PointView& p, const PointState& s, 
 void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vector<double>& u,
                                       std::array<double, 6>& sigma, double& energyDensity, const double* old,
                                       PlasticAverages* plastic) const {
-  const QuadratureRule& rule = stiffnessRule(shape_, kin_);
+  const QuadratureRule& rule = this->rule();
   PointState s;
   std::vector<double> B;
   std::vector<Mat3> F, Finv;  // plastic blocks read their state, not u

@@ -28,6 +28,21 @@
 // under a homogeneous F, Fbar = F and the force is the standard element's. Its tangent is the
 // consistent one (FBarTangent.hpp: dense in the element, symmetric where the material tangent is) for
 // Newton; with `elasticTangent` (the explicit critical step) it is the standard element's at Fbar.
+//
+// One point with hourglass control (Flanagan and Belytschko 1981, in total Lagrangian form), for
+// HEX8 in 3D and QUAD4 in plane strain: the material is called once, at the element's mean
+// deformation gradient F = I + sum_a u_a (x) b_a, with b_a = int dN_a/dX dV / V the mean
+// reference gradient (exact for every linear field, so the patch test holds on distorted
+// elements), f_a = V P b_a. One point leaves the element's hourglass modes without stiffness;
+// each mode m (the bilinear and trilinear products of the natural coordinates: eta zeta, zeta xi,
+// xi eta, xi eta zeta in 3D, xi eta in 2D) gets its vector gamma_m,a = Gamma_m,a - (Gamma_m .
+// X_J) b_a,J, which is orthogonal to every linear field (translations, rigid rotations of any
+// size, homogeneous deformations), and the energy 1/2 k sum_m |q_m|^2 with q_m,i = sum_a
+// gamma_m,a u_a,i: objective, conservative (it is part of the element's energy and so of the
+// balance), its force k gamma_m,a q_m,i and its constant tangent k gamma_m,a gamma_m,b delta_ik.
+// k = Q (lambda + 2 mu) V (b : b) / 72 in 3D (/ 24 in plane strain, per unit thickness): with Q = 1
+// the xi eta mode of a cube gets the normal-stress energy the fully integrated element gives it.
+// The single point is also the element's only pressure point: it does not lock (Q1/P0's count).
 #pragma once
 #include <array>
 #include <memory>
@@ -59,6 +74,17 @@ struct ElementGeometry {
   std::vector<double> dNdX;    // [(q nodes + a) 3 + J]
   std::vector<double> N;       // [q nodes + a], axisymmetric only
   std::vector<double> radius;  // [q], axisymmetric only
+  // One point with hourglass control: gamma_m,a ([m nodes + a]) and the stiffness k (header).
+  std::vector<double> hourglass;
+  double hourglassStiffness = 0.0;
+};
+
+// How an element is integrated: the full rule, F-bar on it, or one point with hourglass control
+// of coefficient `hourglass` (Q above).
+struct ElementFormulation {
+  bool fbar = false;
+  bool onePoint = false;
+  double hourglass = 0.0;
 };
 
 struct PointView;
@@ -87,7 +113,14 @@ class FiniteStrainSolid {
                     std::shared_ptr<const HyperelasticMaterial> material, bool fbar = false);
   FiniteStrainSolid(const std::string& topology, Kinematics kinematics, std::shared_ptr<const J2Plasticity> material,
                     bool fbar = false);
+  // Any formulation; throws std::invalid_argument where it does not apply (F-bar on one-point
+  // elements or in small strain, one point on other than HEX8 in 3D and QUAD4 in plane strain).
+  FiniteStrainSolid(const std::string& topology, Kinematics kinematics, SolidMaterial material,
+                    const ElementFormulation& formulation);
   bool fbar() const { return fbar_; }
+  bool onePoint() const { return onePoint_; }
+  // The integration rule of the element's points (its state has one per point).
+  const QuadratureRule& rule() const;
   int numNodes() const { return nodeCount(shape_); }
   int componentsPerNode() const { return kin_ == Kinematics::ThreeD ? 3 : 2; }
   bool plastic() const { return material_.plastic != nullptr; }
@@ -120,6 +153,9 @@ class FiniteStrainSolid {
     return evaluate(geometry(X), u, f, K);
   }
 
+  // One point: the element's hourglass energy 1/2 k sum_m |q_m|^2 at u (0 for other formulations).
+  double hourglassEnergy(const ElementGeometry& g, const std::vector<double>& u) const;
+
   // The Cauchy stress (xx, yy, zz, xy, yz, zx; for axisymmetric rr, zz, thetatheta, rz, 0, 0)
   // and the strain-energy density W, both averaged over the element's reference volume.
   // A plastic material: the stress and energy its state `old` records (those of the last accepted
@@ -137,7 +173,14 @@ class FiniteStrainSolid {
   Kinematics kin_;
   SolidMaterial material_;
   bool fbar_ = false;
-  void checkFBar() const;
+  bool onePoint_ = false;
+  double hourglass_ = 0.0;
+  void checkFormulation() const;
+  // One point: the element's mean gradient and hourglass vectors from the full rule's geometry.
+  void condenseToOnePoint(const std::vector<Point3>& X, ElementGeometry& g) const;
+  // One point: the hourglass force into f and stiffness into K (when not null); returns its energy.
+  double addHourglass(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f,
+                      DenseMatrix* K) const;
   // F-bar: Jbar and B = d ln Jbar / du (element DOFs) from each point's F (F[q]), with each
   // point's F^-1 into Finv; 0 without F-bar. Throws InvertedElement.
   double meanDilatation(const ElementGeometry& g, const std::vector<Mat3>& F, std::vector<double>& B,

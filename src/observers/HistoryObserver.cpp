@@ -20,10 +20,12 @@ const std::vector<std::string>& energyColumns() {
 }
 
 std::vector<std::string> historyColumns(const std::vector<std::string>& probeColumns,
-                                        const std::vector<std::string>& interactionColumns, bool plastic) {
+                                        const std::vector<std::string>& interactionColumns, bool plastic,
+                                        bool hourglass) {
   std::vector<std::string> c = probeColumns;
   c.insert(c.end(), energyColumns().begin(), energyColumns().end());
   if (plastic) c.insert(c.end() - 2, "energy:plastic");  // after energy:dissipated
+  if (hourglass) c.insert(c.end() - 2, "energy:hourglass");
   c.insert(c.end(), interactionColumns.begin(), interactionColumns.end());
   return c;
 }
@@ -31,7 +33,8 @@ std::vector<std::string> historyColumns(const std::vector<std::string>& probeCol
 HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> columns,
                                  const std::string& csvPath, const EnergyBalanceSettings& energy)
     : what_(std::move(what)), columns_(std::move(columns)), balance_(energy, what_),
-      plastic_(std::find(columns_.begin(), columns_.end(), "energy:plastic") != columns_.end()) {
+      plastic_(std::find(columns_.begin(), columns_.end(), "energy:plastic") != columns_.end()),
+      hourglass_(std::find(columns_.begin(), columns_.end(), "energy:hourglass") != columns_.end()) {
   if (!csvPath.empty() && isRootRank()) csv_ = std::make_unique<HistoryCsv>(csvPath, columns_);
 }
 
@@ -39,7 +42,8 @@ HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> colu
                                  const std::string& csvPath, const EnergyBalanceSettings& energy,
                                  const StateArchive& resume, const Comm& comm)
     : what_(std::move(what)), columns_(std::move(columns)), balance_(energy, what_),
-      plastic_(std::find(columns_.begin(), columns_.end(), "energy:plastic") != columns_.end()) {
+      plastic_(std::find(columns_.begin(), columns_.end(), "energy:plastic") != columns_.end()),
+      hourglass_(std::find(columns_.begin(), columns_.end(), "energy:hourglass") != columns_.end()) {
   balance_.setState(resume.getPod<EnergyBalanceMonitor::State>("history/balance"));
   energies_ = resume.getPod<EnergyTerms>("history/energies");
   const auto rows = static_cast<std::size_t>(resume.getInt("history/rows"));
@@ -85,6 +89,7 @@ void HistoryObserver::step(TransientView& view) {
   const EnergyTerms& e = energies_;
   for (double x : {e.kinetic, e.strain, e.contact, e.dissipated}) row.push_back(x);
   if (plastic_) row.push_back(e.plastic);
+  if (hourglass_) row.push_back(e.hourglass);
   row.push_back(e.total());
   row.push_back(balance_.update(pt.time, e.total() - e.shadow, e.dissipated, e.external));
   if (const InteractionOutput* io = view.interactions()) {

@@ -22,9 +22,11 @@ namespace choc {
 const std::vector<std::string>& energyColumns();
 
 // The history's columns after "time": probes, energies (with `plastic`, energy:plastic after
-// energy:dissipated: the plastic work, a part of it), interactions.
+// energy:dissipated: the plastic work, a part of it; with `hourglass`, energy:hourglass next: the
+// one-point elements' hourglass energy, a part of energy:strain), interactions.
 std::vector<std::string> historyColumns(const std::vector<std::string>& probeColumns,
-                                        const std::vector<std::string>& interactionColumns, bool plastic = false);
+                                        const std::vector<std::string>& interactionColumns, bool plastic = false,
+                                        bool hourglass = false);
 
 class HistoryObserver : public TransientObserver {
  public:
@@ -60,6 +62,7 @@ class HistoryObserver : public TransientObserver {
   std::string pending_;
   bool single_ = true;
   bool plastic_ = false;  // the energy:plastic column (models with plastic blocks)
+  bool hourglass_ = false;  // the energy:hourglass column (models with one-point blocks)
 };
 
 }  // namespace choc

@@ -23,6 +23,7 @@ struct StepPoint {
 struct EnergyTerms {
   double kinetic = 0, strain = 0, contact = 0, dissipated = 0, external = 0;
   double plastic = 0;  // the plastic work, a part of `dissipated` (its own column with plastic blocks)
+  double hourglass = 0;  // the one-point elements' hourglass energy, a part of `strain` (its own column)
   // Explicit schemes (central differences, symplectic Euler): (h^2/8) a^T M a, h the sub-step.
   // Velocity Verlet conserves E_total - shadow exactly on a linear system (E_total itself,
   // measured with the integer-step velocity, swings by up to r^2 / (1 - r^2) of the energy at

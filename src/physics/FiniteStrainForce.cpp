@@ -18,7 +18,7 @@
 namespace choc {
 
 FiniteStrainForce::FiniteStrainForce(Model& model)
-    : K0_(model.stiffness()), Klin_(model.smallStrainStiffness()) {
+    : K0_(model.stiffness()), Klin_(model.smallStrainStiffness()), hourglass_(model.hasOnePointBlocks()) {
   KT_ = rcp(new CrsMatrix(K0_->getCrsGraph()));
   importer_ = K0_->getGraph()->getImporter();
   const Map& rows = *K0_->getRowMap();
@@ -261,6 +261,21 @@ double FiniteStrainForce::strainEnergy(const Vector& u, const Vector* /*internal
   double global = 0.0;
   Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
   return linear + global;
+}
+
+double FiniteStrainForce::hourglassEnergy(const Vector& u) const {
+  double local = 0.0, global = 0.0;
+  if (hourglass_) {
+    auto data = onColumns(u).getData();
+    std::vector<double> ue;
+    for (const Element& e : elements_) {
+      if (!e.owner || !e.kernel->onePoint()) continue;
+      gather(e, data, ue);
+      local += e.kernel->hourglassEnergy(e.geometry, ue);
+    }
+  }
+  Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return global;
 }
 
 // || |K_lin| |u| + sum_e |f_e| ||: the size of the terms the internal force sums, row by row.

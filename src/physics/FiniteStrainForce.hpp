@@ -62,6 +62,7 @@ class FiniteStrainForce : public InternalForce {
   // plastic points with their elastic tangent (an unloading point is the stiffest).
   double stateEigenvalueBound(const Vector& u) const override;
   double dissipatedWork() const override { return plasticWork_; }
+  double hourglassEnergy(const Vector& u) const override;
   bool hasReturnMap() const override { return plastic_; }
   void commit() override;
   void revert() override { trialValid_ = false; }
@@ -137,6 +138,7 @@ class FiniteStrainForce : public InternalForce {
   mutable double trialTime_ = 0.0;
   bool timeKnown_ = false;
   bool thermal_ = false;  // a block's flow stress carries a temperature
+  bool hourglass_ = false;  // a block has one-point elements
   void layoutArchive(const Mesh& mesh, const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels);
   std::vector<size_t> globalState_;  // per global element: its state's offset in the archive (-1: none)
   size_t globalStateSize_ = 0;

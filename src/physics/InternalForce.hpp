@@ -65,6 +65,9 @@ class InternalForce {
   virtual void elementFields(const Vector& /*u*/, std::vector<std::vector<double>>& /*values*/) const {}
   // Explicit runs stream the products of a symmetric model from half its entries.
   virtual void preferSymmetricProducts() {}
+  // The one-point elements' hourglass energy at u (a part of the strain energy) [J], all ranks.
+  // Collective.
+  virtual double hourglassEnergy(const Vector& /*u*/) const { return 0.0; }
   // The work dissipated inside the material since the start (plastic work) [J], all ranks.
   virtual double dissipatedWork() const { return 0.0; }
   // Whether the force carries a history whose update has kinks in u (a plastic return map:

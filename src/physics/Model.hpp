@@ -48,6 +48,7 @@ class Model {
   std::string firstFiniteStrainBlock() const;
   // The first block with a plastic material ("" when none), for messages.
   std::string firstPlasticBlock() const;
+  bool hasOnePointBlocks() const;
   // The small-strain blocks' stiffness and the springs, on stiffness()'s graph (the entries
   // finite-strain blocks alone give are zero).
   RCP<const CrsMatrix> smallStrainStiffness();
@@ -85,6 +86,7 @@ class Model {
                                                         const Teuchos::ParameterList& mp) const;
   // A plastic material's parameters ('J2 plasticity' or 'Johnson-Cook'); the flow curve parsed.
   J2Parameters plasticParameters(const std::string& materialName, const Teuchos::ParameterList& mp) const;
+  void checkOnePoint(const ElementBlock& blk, bool elementByElement) const;
   void checkElementGeometry(const std::vector<BlockPhysics>& physics, const std::string& meshParameter) const;
   void readSprings(const Teuchos::ParameterList& springs);
   void buildDofMap(std::vector<std::uint8_t> mask, const std::string& method);

@@ -108,12 +108,22 @@ void declareBlockParameters(ParameterList& model) {
                 "Green-Lagrange strain, second Piola-Kirchhoff stress; a hyperelastic material; "
                 "direct transients only). Large rotations need 'finite': a small-strain body turned "
                 "through a large angle is stressed by the rotation itself. Beams are small-strain");
-  declareChoice(blk, "Formulation", "standard", {"standard", "F-bar"},
+  declareChoice(blk, "Formulation", "standard", {"standard", "F-bar", "one-point"},
                 "the element formulation: 'standard' (full integration), or 'F-bar' for blocks in finite "
                 "strain of HEX8, HEX20, TET10, QUAD4, QUAD8 or TRI6 elements (each element's volume change "
                 "taken as its mean, so that plastic or nearly incompressible flow does not lock HEX8, "
                 "QUAD4 or TET10; explicit and implicit, with its consistent tangent). TET4 and TRI3 "
-                "have one point and lock: mesh plastic parts with TET10 or TRI6");
+                "have one point and lock: mesh plastic parts with TET10 or TRI6. 'one-point': HEX8 in 3D "
+                "or QUAD4 in plane strain integrated at one point (the mean gradient: one material "
+                "update per element, no locking) with hourglass stiffness ('Hourglass Coefficient'); "
+                "blocks in finite strain or plastic");
+  declareDouble(blk, "Hourglass Coefficient", 0.001,
+                "'one-point' elements: the hourglass stiffness as a fraction of the fully integrated "
+                "element's in its bending mode (lambda + 2 mu terms); its energy is part of the "
+                "element's, and so of the energy balance (history column energy:hourglass). The "
+                "default is the value measured closest to F-bar on the plastic Taylor bar; larger "
+                "values stiffen plastic flow (docs/verification/taylor-bar.md)",
+                Range{0.0, 1.0, true, false});
   declareSectionParameters(blk);
 }
 

@@ -43,17 +43,42 @@ std::shared_ptr<const FiniteStrainSolid> Model::strainKernel(const ElementBlock&
                onePoint ? "mesh the block with " + std::string(blk.topology == "TET4" ? "TET10" : "TRI6") +
                               " elements (gmsh -order 2), or set 'Formulation' = 'standard'"
                         : "set 'Strain' = 'finite', or 'Formulation' = 'standard'");
+  ElementFormulation form{fbar, bp.get<std::string>("Formulation") == "one-point",
+                          bp.get<double>("Hourglass Coefficient")};
+  if (form.onePoint) checkOnePoint(blk, finite || plastic);
   if (!finite && !plastic) return nullptr;
   try {
     const double E = mp.get<double>("Young's Modulus"), nu = mp.get<double>("Poisson's Ratio");
+    SolidMaterial m;
     if (plastic)
-      return std::make_shared<const FiniteStrainSolid>(
-          blk.topology, kinematics_, std::make_shared<const J2Plasticity>(plasticParameters(materialName, mp), finite),
-          fbar);
-    return std::make_shared<const FiniteStrainSolid>(blk.topology, kinematics_, makeHyperelastic(law, E, nu), fbar);
+      m.plastic = std::make_shared<const J2Plasticity>(plasticParameters(materialName, mp), finite);
+    else
+      m.elastic = makeHyperelastic(law, E, nu);
+    return std::make_shared<const FiniteStrainSolid>(blk.topology, kinematics_, m, form);
   } catch (const std::invalid_argument& e) {
     throwInput(inputFile_, plastic ? "Model/Materials/" + materialName : path, "", e.what());
   }
+}
+
+// 'Formulation' = 'one-point': HEX8 in 3D or QUAD4 in plane strain, on a block the element-by-element
+// kernel computes (finite strain or plastic).
+void Model::checkOnePoint(const ElementBlock& blk, bool elementByElement) const {
+  const std::string path = "Model/Blocks/" + blk.name + "/Formulation";
+  const bool fits = (blk.topology == "HEX8" && kinematics_ == Kinematics::ThreeD) ||
+                    (blk.topology == "QUAD4" && kinematics_ == Kinematics::PlaneStrain);
+  if (!fits)
+    throwInput(inputFile_, path, "one-point",
+               "one-point integration with hourglass control is for HEX8 in 3D and QUAD4 in plane strain; block '" +
+                   blk.name + "' has " + blk.topology + " elements" +
+                   (kinematics_ == Kinematics::Axisymmetric ? " (axisymmetric)" : ""),
+               blk.topology == "TET4" || blk.topology == "TRI3"
+                   ? "mesh the block with " + std::string(blk.topology == "TET4" ? "HEX8" : "QUAD4") + " elements, or " +
+                         (blk.topology == "TET4" ? "TET10" : "TRI6") + " elements with 'Formulation' = 'F-bar'"
+                   : "set 'Formulation' = 'F-bar' (locking-free on every element with several points) or 'standard'");
+  if (!elementByElement)
+    throwInput(inputFile_, path, "one-point",
+               "block '" + blk.name + "' is small-strain linear elastic (an assembled stiffness, fully integrated)",
+               "set 'Strain' = 'finite' (and a hyperelastic material), or 'Formulation' = 'standard'");
 }
 
 // A 'J2 plasticity' or 'Johnson-Cook' material's parameters (J2Plasticity checks their ranges).
@@ -104,6 +129,10 @@ J2Parameters Model::plasticParameters(const std::string& materialName, const Teu
     p.curve.stress.push_back(numbers[i + 1]);
   }
   return p;
+}
+
+bool Model::hasOnePointBlocks() const {
+  return std::any_of(finite_.begin(), finite_.end(), [](const auto& k) { return k && k->onePoint(); });
 }
 
 bool Model::finiteStrain() const {

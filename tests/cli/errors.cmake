@@ -362,3 +362,11 @@ choc_cli_input_error(status_update check bad_status_update.xml
 # F-bar on a one-point element: nothing to average (TET4 locks in plastic flow: TET10 F-bar).
 choc_cli_input_error(fbar_tet4 check bad_fbar_tet4.xml
   "parameter 'Model/Blocks/LOWER/Formulation' = 'F-bar': F-bar is for blocks in finite strain of elements with several points .HEX8, HEX20, TET10, QUAD4, QUAD8, TRI6.. block 'LOWER' has TET4 elements and 'Strain' = 'finite'. mesh the block with TET10 elements .gmsh -order 2., or set 'Formulation' = 'standard'")
+# One-point integration with hourglass control: HEX8 (3D) and QUAD4 (plane strain) blocks computed
+# element by element (finite strain or plastic), with a positive hourglass coefficient.
+choc_cli_input_error(one_point_tet4 check bad_one_point_tet4.xml
+  "parameter 'Model/Blocks/LOWER/Formulation' = 'one-point': one-point integration with hourglass control is for HEX8 in 3D and QUAD4 in plane strain. block 'LOWER' has TET4 elements. mesh the block with HEX8 elements, or TET10 elements with 'Formulation' = 'F-bar'")
+choc_cli_input_error(one_point_small_strain check bad_one_point_small.xml
+  "parameter 'Model/Blocks/UPPER/Formulation' = 'one-point': block 'UPPER' is small-strain linear elastic .an assembled stiffness, fully integrated.. set 'Strain' = 'finite' .and a hyperelastic material., or 'Formulation' = 'standard'")
+choc_cli_input_error(hourglass_coefficient check bad_hourglass_coefficient.xml
+  "parameter 'Model/Blocks/UPPER/Hourglass Coefficient' = '0': out of range. valid: a number in .0, 1.")

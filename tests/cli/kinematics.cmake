@@ -72,6 +72,11 @@ choc_cli_script(taylor_bar_implicit 300)
 # The Taylor bar in 3D (HEX8 F-bar, coarse): the quarter against the axisymmetric bar of the same
 # element size, 2 ranks equal 1, the whole bar turned as a rigid whole (scripts/taylor_bar_3d.py).
 choc_cli_script(taylor_bar_3d 600)
+# The one-point HEX8 with hourglass stiffness on the 3D Taylor bar: no energy created, hourglass
+# energy below 10 % of the internal energy, radius and length against the axisymmetric F-bar bar of
+# the same element size within its mesh error, 2 ranks equal 1, the turned bar
+# (scripts/one_point_taylor.py).
+choc_cli_script(one_point_taylor 600)
 # An elastic-plastic sphere on a rigid plane at 0.5, 10 and 100 times its yield velocity: elastic
 # below yield, the restitution falling with the speed above Thornton's closed form, no energy
 # created, 2 ranks equal 1 (scripts/plastic_impact.py).
