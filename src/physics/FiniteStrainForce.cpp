@@ -76,6 +76,17 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
   }
   trial_ = committed_;
   layoutArchive(mesh, kernels);
+  linearPart_ = anyNonzero(*Klin_);
+}
+
+// Whether K has a nonzero value on any rank (a model of finite-strain blocks alone has an all-zero
+// linear part on the whole graph: its products are skipped).
+bool FiniteStrainForce::anyNonzero(const CrsMatrix& K) {
+  const auto A = K.getLocalMatrixHost();
+  int mine = 0, any = 0;
+  for (size_t k = 0; k < size_t(A.values.extent(0)) && !mine; ++k) mine = A.values(k) != 0.0;
+  Teuchos::reduceAll<int, int>(*K.getComm(), Teuchos::REDUCE_MAX, mine, Teuchos::outArg(any));
+  return any != 0;
 }
 
 // Every element's plastic state's offset in the archive's global array (element order).
@@ -190,7 +201,10 @@ bool FiniteStrainForce::sameState(const RCP<Vector>& at, const Vector& u) const 
 }
 
 void FiniteStrainForce::internalForce(const Vector& u, Vector& out) const {
-  Klin_->apply(u, out);
+  if (linearPart_)
+    Klin_->apply(u, out);
+  else
+    out.putScalar(0.0);
   auto o = out.getDataNonConst();
   double energy = 0.0;
   const Vector& uc = onColumns(u);
@@ -246,8 +260,11 @@ RCP<const CrsMatrix> FiniteStrainForce::tangent(const Vector& u) {
 
 double FiniteStrainForce::strainEnergy(const Vector& u, const Vector* /*internalForceAtU*/) const {
   if (tmp_.is_null()) tmp_ = rcp(new Vector(u.getMap()));
-  Klin_->apply(u, *tmp_);
-  const double linear = 0.5 * u.dot(*tmp_);
+  double linear = 0.0;
+  if (linearPart_) {
+    Klin_->apply(u, *tmp_);
+    linear = 0.5 * u.dot(*tmp_);
+  }
   double local = 0.0;
   if (sameState(forceAt_, u)) {
     local = forceAtEnergy_;

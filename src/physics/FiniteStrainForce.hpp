@@ -139,6 +139,8 @@ class FiniteStrainForce : public InternalForce {
   bool timeKnown_ = false;
   bool thermal_ = false;  // a block's flow stress carries a temperature
   bool hourglass_ = false;  // a block has one-point elements
+  bool linearPart_ = true;  // K_lin has a nonzero value (else its products are skipped)
+  static bool anyNonzero(const CrsMatrix& K);
   void layoutArchive(const Mesh& mesh, const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels);
   std::vector<size_t> globalState_;  // per global element: its state's offset in the archive (-1: none)
   size_t globalStateSize_ = 0;
