@@ -1,6 +1,7 @@
 // J2 plasticity's return maps and consistent tangents (formulas in the header).
 #include "materials/J2Plasticity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -80,6 +81,14 @@ J2Plasticity::J2Plasticity(const J2Parameters& p, bool finiteStrain)
     : p_(p), flow_(flowOf(p)), finite_(finiteStrain) {
   mu_ = p.youngsModulus / (2 * (1 + p.poissonsRatio));
   kappa_ = p.youngsModulus / (3 * (1 - 2 * p.poissonsRatio));
+  hk_ = p.kinematicHardening;
+  std::ostringstream msg;
+  if (!(hk_ >= 0) || !std::isfinite(hk_))
+    msg << "needs a kinematic hardening modulus >= 0, got " << hk_ << " Pa";
+  else if (hk_ > 0 && finite_)
+    msg << "kinematic hardening is small-strain only (a kinematic hardening modulus of " << hk_
+        << " Pa on a finite-strain block)";
+  if (!msg.str().empty()) throw std::invalid_argument("J2 plasticity material: " + msg.str());
 }
 
 J2Plasticity::Return J2Plasticity::radialReturn(double normE, const double* old, double dt) const {
@@ -91,19 +100,19 @@ J2Plasticity::Return J2Plasticity::radialReturn(double normE, const double* old,
   if (!(f0 > 0)) return r;
   r.yielded = true;
   if (flow_.isLinear()) {
-    r.dgamma = f0 / (2 * mu_ + 2.0 / 3.0 * flow_.linearHardening());
+    r.dgamma = f0 / (2 * mu_ + 2.0 / 3.0 * hk_ + 2.0 / 3.0 * flow_.linearHardening());
     at = flow_.at(alpha, kSqrt23 * r.dgamma, dt, T);
   } else {
     r.dgamma = solveReturn(trial, f0, old, dt, at);
   }
   r.flowStress = at.stress;
   r.theta = 1 - r.dgamma / normE;
-  r.thetabar = 1 / (1 + at.slope / (3 * mu_)) - (1 - r.theta);
+  r.thetabar = 1 / (1 + (at.slope + hk_) / (3 * mu_)) - (1 - r.theta);
   return r;
 }
 
-// g(x) = trial - 2 mu x - sqrt(2/3) sigma_y(alpha + sqrt(2/3) x) decreases from g(0) = f0 > 0 to
-// g(f0 / 2 mu) <= 0: Newton from the upper end (g is convex for the concave laws, so the
+// g(x) = trial - (2 mu + 2/3 H_k) x - sqrt(2/3) sigma_y(alpha + sqrt(2/3) x) decreases from g(0) = f0 > 0
+// to g(f0 / 2 mu) <= 0: Newton from the upper end (g is convex for the concave laws, so the
 // iterates then rise to the root), a bisection whenever a step leaves the bracket.
 double J2Plasticity::solveReturn(double trial, double f0, const double* old, double dt,
                                  FlowStress::Value& at) const {
@@ -111,10 +120,10 @@ double J2Plasticity::solveReturn(double trial, double f0, const double* old, dou
   double lo = 0.0, hi = f0 / (2 * mu_), x = hi;
   for (int it = 0; it < 200; ++it) {
     at = flow_.at(alpha, kSqrt23 * x, dt, T);
-    const double g = trial - 2 * mu_ * x - kSqrt23 * at.stress;
+    const double g = trial - (2 * mu_ + 2.0 / 3.0 * hk_) * x - kSqrt23 * at.stress;
     if (std::abs(g) <= 1e-13 * trial || hi - lo <= 1e-15 * hi) return x;
     (g > 0 ? lo : hi) = x;
-    const double step = x + g / (2 * mu_ + 2.0 / 3.0 * at.slope);
+    const double step = x + g / (2 * mu_ + 2.0 / 3.0 * hk_ + 2.0 / 3.0 * at.slope);
     x = step > lo && step < hi ? step : 0.5 * (lo + hi);
   }
   std::ostringstream msg;
@@ -142,11 +151,11 @@ void J2Plasticity::respond(const Mat3& F, const double* old, bool withTangent, J
 // What both kinematics end a point with: alpha, the stored energy K/2 (tr eps)^2 + mu ||theta e||^2
 // (dev eps_e = theta e), the increment's work and the temperature (that work's heat).
 void J2Plasticity::finishPoint(const Mat3& F, const double* old, const Return& r, double tr, double normE,
-                               J2Response& out) const {
+                               J2Response& out, const double* storedEnergy) const {
   const double dalpha = kSqrt23 * r.dgamma;
   out.state[kJ2Alpha] = old[kJ2Alpha] + dalpha;
   out.yielded = r.yielded;
-  out.energy = 0.5 * kappa_ * tr * tr + mu_ * r.theta * r.theta * normE * normE;
+  out.energy = storedEnergy ? *storedEnergy : 0.5 * kappa_ * tr * tr + mu_ * r.theta * r.theta * normE * normE;
   recordIncrement(F, old, out);
   // The heat: chi / (rho c) times the increment's dissipated work, the one the energy balance
   // counts, so that the heat is chi times energy:plastic (at an elastic increment that work is the
@@ -157,22 +166,37 @@ void J2Plasticity::finishPoint(const Mat3& F, const double* old, const Return& r
 void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic, double dt,
                                J2Response& out) const {
   const Mat3 epsP = symmetricFromState(old);
+  const Mat3 beta = symmetricFromState(old + kJ2BackStress);  // zero without kinematic hardening
   Mat3 e{};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) e[i][j] = 0.5 * (F[i][j] + F[j][i]) - (i == j ? 1.0 : 0.0) - epsP[i][j];
   const double tr = trace(e);
   for (int i = 0; i < 3; ++i) e[i][i] -= tr / 3;
+  for (int i = 0; i < 3; ++i)  // the relative stress over 2 mu: dev eps_e - beta / 2 mu
+    for (int j = 0; j < 3; ++j) e[i][j] -= beta[i][j] / (2 * mu_);
   const double normE = std::sqrt(contract(e, e));
   const Return r = radialReturn(normE, old, dt);
   const Mat3 n = r.yielded ? scaled(e, 1 / normE) : Mat3{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) out.P[i][j] = 2 * mu_ * r.theta * e[i][j] + (i == j ? kappa_ * tr : 0.0);
+  for (int i = 0; i < 3; ++i)  // dev sigma = beta + 2 mu theta (relative strain)
+    for (int j = 0; j < 3; ++j)
+      out.P[i][j] = 2 * mu_ * r.theta * e[i][j] + beta[i][j] + (i == j ? kappa_ * tr : 0.0);
   out.cauchy = out.P;
-  Mat3 epsPNew = epsP;
+  Mat3 epsPNew = epsP, betaNew = beta;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) epsPNew[i][j] += r.dgamma * n[i][j];
+    for (int j = 0; j < 3; ++j) {
+      epsPNew[i][j] += r.dgamma * n[i][j];
+      betaNew[i][j] += 2.0 / 3.0 * hk_ * r.dgamma * n[i][j];
+    }
   stateFromSymmetric(epsPNew, out.state.data());
-  finishPoint(F, old, r, tr, normE, out);
+  stateFromSymmetric(betaNew, out.state.data() + kJ2BackStress);
+  if (hk_ > 0) {  // K/2 (tr eps)^2 + ||dev sigma||^2 / 4 mu + 3/4 ||beta||^2 / H_k
+    Mat3 s = out.P;
+    for (int i = 0; i < 3; ++i) s[i][i] -= kappa_ * tr;
+    const double stored = 0.5 * kappa_ * tr * tr + contract(s, s) / (4 * mu_) + 0.75 * contract(betaNew, betaNew) / hk_;
+    finishPoint(F, old, r, tr, normE, out, &stored);
+  } else {
+    finishPoint(F, old, r, tr, normE, out);
+  }
   if (!withTangent) return;
   const double theta = elastic ? 1.0 : r.theta, thetabar = elastic ? 0.0 : r.thetabar;
   for (int i = 0; i < 3; ++i)
@@ -232,6 +256,7 @@ void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTang
   } else {  // elastic: C_p^-1 unchanged (F^-1 b_e^trial F^-T = G exactly; without the round-off)
     stateFromSymmetric(symmetricFromState(old), out.state.data());
   }
+  std::copy(old + kJ2BackStress, old + kJ2BackStress + 6, out.state.data() + kJ2BackStress);  // zero here
   finishPoint(F, old, r, tr, normE, out);
   if (!withTangent) return;
   const double theta = elastic ? 1.0 : r.theta, thetabar = elastic ? 0.0 : r.thetabar;

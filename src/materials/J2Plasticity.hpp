@@ -21,7 +21,13 @@
 //
 // Small strain: eps = sym(F - I) (F - I the displacement gradient), the additive split
 // eps = eps_e + eps_p, sigma = K tr(eps_e) I + 2 mu dev(eps_e), P = sigma; the state holds
-// eps_p and alpha.
+// eps_p and alpha. Optional linear kinematic hardening (Prager-Ziegler, small strain only): the
+// yield surface's centre, the back stress beta (deviatoric, in the state), moves with the flow,
+// d beta = 2/3 H_k d eps_p; the yield function and the return take the relative stress
+// xi = dev sigma - beta (the return's 2 mu becomes 2 mu + 2/3 H_k, its direction n = xi / ||xi||),
+// and the stored energy gains 3/4 ||beta||^2 / H_k (= 1/2 H_k alpha^2 under proportional flow),
+// so that the work the balance counts as dissipated is xi : d eps_p >= 0 and the energy stored in
+// the back stress comes back on reverse loading.
 //
 // The tangent is the exact derivative of the return map (the consistent tangent), in closed
 // form: on the principal axes dtau_A/d eps_B = K + 2 mu theta (delta_AB - 1/3)
@@ -43,6 +49,7 @@ struct J2Parameters {
   double youngsModulus = 0.0, poissonsRatio = 0.0;
   double yieldStress = 0.0;  // sigma_y [Pa] (linear hardening)
   double hardening = 0.0;    // H = d sigma_y / d alpha [Pa] (linear hardening)
+  double kinematicHardening = 0.0;  // H_k [Pa]: linear kinematic hardening (small strain only)
   FlowCurve curve;           // when not empty, the flow stress instead of yieldStress and hardening
   bool johnsonCook = false;  // the Johnson-Cook law below instead of both
   JohnsonCookParameters jc;
@@ -56,9 +63,11 @@ inline J2Parameters linearHardening(double E, double nu, double yieldStress, dou
 }
 
 // A point's state: the plastic tensor (C_p^-1 or eps_p: xx yy zz xy yz zx), alpha, the
-// last accepted W, P and F (for the increment's dissipated work, below) and the temperature.
-constexpr int kJ2StateSize = 27;
-constexpr int kJ2Alpha = 6, kJ2Energy = 7, kJ2Stress = 8, kJ2Deformation = 17, kJ2Temperature = 26;
+// last accepted W, P and F (for the increment's dissipated work, below), the temperature and
+// the back stress beta (xx yy zz xy yz zx; zero without kinematic hardening).
+constexpr int kJ2StateSize = 33;
+constexpr int kJ2Alpha = 6, kJ2Energy = 7, kJ2Stress = 8, kJ2Deformation = 17, kJ2Temperature = 26,
+              kJ2BackStress = 27;
 
 struct J2Response {
   Mat3 P{};                  // first Piola-Kirchhoff stress (small strain: sigma)
@@ -77,7 +86,8 @@ struct J2Response {
 class J2Plasticity {
  public:
   // Throws std::invalid_argument (naming the value) for E <= 0, nu outside (-1, 0.5),
-  // sigma_y <= 0 or H < 0, and for a flow curve or Johnson-Cook parameters out of range.
+  // sigma_y <= 0, H < 0 or H_k < 0, H_k > 0 in finite strain, and for a flow curve or
+  // Johnson-Cook parameters out of range.
   J2Plasticity(const J2Parameters& p, bool finiteStrain);
   bool finiteStrain() const { return finite_; }
   const J2Parameters& parameters() const { return p_; }
@@ -107,13 +117,14 @@ class J2Plasticity {
   void respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic, double dt,
                     J2Response& out) const;
   void finishPoint(const Mat3& F, const double* old, const Return& r, double tr, double normE,
-                   J2Response& out) const;
+                   J2Response& out, const double* storedEnergy = nullptr) const;
   void finiteTangent(const SymmetricEigen& eig, const double* x, const double* n, double theta, double thetabar,
                      const Mat3& FG, const Mat3& Fi, J2Response& out) const;
   J2Parameters p_;
   FlowStress flow_;
   bool finite_;
   double mu_, kappa_;
+  double hk_ = 0.0;  // H_k
 };
 
 // The von Mises equivalent stress sqrt(3/2) ||dev sigma||.

@@ -71,6 +71,11 @@ void declareMaterialParameters(ParameterList& model) {
                 "'J2 plasticity': the linear isotropic hardening H = d sigma_y / d alpha [Pa], alpha "
                 "the equivalent plastic strain (0: perfectly plastic)",
                 Range::nonNegative());
+  declareDouble(mat, "Kinematic Hardening Modulus", 0.0,
+                "'J2 plasticity' and 'Johnson-Cook' on small-strain blocks: linear kinematic hardening "
+                "(Prager-Ziegler), the yield surface's centre moving with the flow, d beta = 2/3 H_k d eps_p "
+                "[Pa] (0: none; the Bauschinger effect of cyclic loading); refused on finite-strain blocks",
+                Range::nonNegative());
   declareString(mat, "Flow Curve", "",
                 "'J2 plasticity': the flow stress as a piecewise-linear curve 'alpha_0 sigma_0 alpha_1 "
                 "sigma_1 ...' of equivalent plastic strain [-] and stress [Pa] (alpha_0 = 0, alpha "

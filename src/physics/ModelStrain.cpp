@@ -47,6 +47,11 @@ std::shared_ptr<const FiniteStrainSolid> Model::strainKernel(const ElementBlock&
                           bp.get<double>("Hourglass Coefficient")};
   if (form.onePoint) checkOnePoint(blk, finite || plastic);
   if (!finite && !plastic) return nullptr;
+  if (plastic && finite && mp.get<double>("Kinematic Hardening Modulus") > 0)
+    throwInput(inputFile_, "Model/Materials/" + materialName + "/Kinematic Hardening Modulus",
+               format("%g", mp.get<double>("Kinematic Hardening Modulus")),
+               "kinematic hardening is small-strain only; block '" + blk.name + "' has 'Strain' = 'finite'",
+               "set the block's 'Strain' = 'small', or 'Kinematic Hardening Modulus' = 0");
   try {
     const double E = mp.get<double>("Young's Modulus"), nu = mp.get<double>("Poisson's Ratio");
     SolidMaterial m;
@@ -86,6 +91,7 @@ J2Parameters Model::plasticParameters(const std::string& materialName, const Teu
   const std::string path = "Model/Materials/" + materialName + "/";
   J2Parameters p = linearHardening(mp.get<double>("Young's Modulus"), mp.get<double>("Poisson's Ratio"),
                                    mp.get<double>("Yield Stress"), mp.get<double>("Hardening Modulus"));
+  p.kinematicHardening = mp.get<double>("Kinematic Hardening Modulus");
   if (mp.get<std::string>("Model") == "Johnson-Cook") {
     p.johnsonCook = true;
     JohnsonCookParameters& jc = p.jc;

@@ -370,3 +370,8 @@ choc_cli_input_error(one_point_small_strain check bad_one_point_small.xml
   "parameter 'Model/Blocks/UPPER/Formulation' = 'one-point': block 'UPPER' is small-strain linear elastic .an assembled stiffness, fully integrated.. set 'Strain' = 'finite' .and a hyperelastic material., or 'Formulation' = 'standard'")
 choc_cli_input_error(hourglass_coefficient check bad_hourglass_coefficient.xml
   "parameter 'Model/Blocks/UPPER/Hourglass Coefficient' = '0': out of range. valid: a number in .0, 1.")
+# Kinematic hardening: small strain only, and not negative.
+choc_cli_input_error(kinematic_finite check bad_kinematic_finite.xml
+  "parameter 'Model/Materials/steel/Kinematic Hardening Modulus' = '1e.10': kinematic hardening is small-strain only. block 'BEAM' has 'Strain' = 'finite'. set the block's 'Strain' = 'small', or 'Kinematic Hardening Modulus' = 0")
+choc_cli_input_error(kinematic_negative check bad_kinematic_negative.xml
+  "parameter 'Model/Materials/steel/Kinematic Hardening Modulus' = '-1e.09': out of range. valid: a number in .0, inf.")

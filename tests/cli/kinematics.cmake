@@ -77,6 +77,10 @@ choc_cli_script(taylor_bar_3d 600)
 # the same element size within its mesh error, 2 ranks equal 1, the turned bar
 # (scripts/one_point_taylor.py).
 choc_cli_script(one_point_taylor 600)
+# Kinematic hardening (small strain): the thick sphere under monotone pressure (proportional paths)
+# with its modulus isotropic or kinematic: the same displacements within the mesh's asymmetry, the
+# same total energy, the back stress's share stored (scripts/kinematic_hardening.py).
+choc_cli_script(kinematic_hardening 300)
 # An elastic-plastic sphere on a rigid plane at 0.5, 10 and 100 times its yield velocity: elastic
 # below yield, the restitution falling with the speed above Thornton's closed form, no energy
 # created, 2 ranks equal 1 (scripts/plastic_impact.py).
