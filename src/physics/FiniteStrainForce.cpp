@@ -18,7 +18,10 @@
 namespace choc {
 
 FiniteStrainForce::FiniteStrainForce(Model& model)
-    : K0_(model.stiffness()), Klin_(model.smallStrainStiffness()), hourglass_(model.hasOnePointBlocks()) {
+    : K0_(model.stiffness()),
+      Klin_(model.smallStrainStiffness()),
+      hourglass_(model.hasOnePointBlocks()),
+      linearPart_(anyNonzero(*Klin_)) {
   KT_ = rcp(new CrsMatrix(K0_->getCrsGraph()));
   importer_ = K0_->getGraph()->getImporter();
   const Map& rows = *K0_->getRowMap();
@@ -53,21 +56,7 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
     DenseMatrix M;
     model.elementKernel(b)->mass(X, MassKind::Lumped, M);
     el.geometry = el.kernel->geometry(X);
-    // The strain E = (C - I) / 2 is computed from C = F^T F, whose entries are of size 1, so it
-    // errs by about eps whatever the deformation, and so does a stress written with C^-1 (the
-    // neo-Hookean mu (I - C^-1)): C's entries sum three products (3 eps), C^-1's cofactors and
-    // determinant add about 6 eps, so the stress errs by about 10 eps (lambda + 2 mu) (measured:
-    // a HEX20 beam at rest stagnates at 1.1 times the estimate made with 1 eps); node a's force
-    // by that times int |grad N_a| dV. termsNorm reports it in the units of its callers, who
-    // take 1e-12 of the terms' size as the round-off floor: times 10 eps / 1e-12.
-    const double floor = 10.0 * std::numeric_limits<double>::epsilon() / 1e-12 * el.kernel->modulus();
-    const ElementGeometry& g = el.geometry;
-    for (int a = 0; a < g.nodes; ++a) {
-      double s = 0.0;
-      for (int q = 0; q < g.points; ++q)
-        for (int J = 0; J < 3; ++J) s += g.weight[size_t(q)] * std::abs(g.dNdX[(size_t(q) * g.nodes + a) * 3 + J]);
-      for (int c = 0; c < nc; ++c) el.roundoff.push_back(floor * s);
-    }
+    el.roundoff = forceRoundoff(*el.kernel, el.geometry);
     for (int i = 0; i < M.rows(); ++i) el.lumpedMass.push_back(M(i, i));
     el.state = committed_.size();
     committed_.resize(committed_.size() + size_t(el.kernel->stateSize()));
@@ -76,7 +65,6 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
   }
   trial_ = committed_;
   layoutArchive(mesh, kernels);
-  linearPart_ = anyNonzero(*Klin_);
 }
 
 // Whether K has a nonzero value on any rank (a model of finite-strain blocks alone has an all-zero
@@ -87,6 +75,25 @@ bool FiniteStrainForce::anyNonzero(const CrsMatrix& K) {
   for (size_t k = 0; k < size_t(A.values.extent(0)) && !mine; ++k) mine = A.values(k) != 0.0;
   Teuchos::reduceAll<int, int>(*K.getComm(), Teuchos::REDUCE_MAX, mine, Teuchos::outArg(any));
   return any != 0;
+}
+
+// The strain E = (C - I) / 2 is computed from C = F^T F, whose entries are of size 1, so it
+// errs by about eps whatever the deformation, and so does a stress written with C^-1 (the
+// neo-Hookean mu (I - C^-1)): C's entries sum three products (3 eps), C^-1's cofactors and
+// determinant add about 6 eps, so the stress errs by about 10 eps (lambda + 2 mu) (measured:
+// a HEX20 beam at rest stagnates at 1.1 times the estimate made with 1 eps); node a's force
+// by that times int |grad N_a| dV. termsNorm reports it in the units of its callers, who
+// take 1e-12 of the terms' size as the round-off floor: times 10 eps / 1e-12.
+std::vector<double> FiniteStrainForce::forceRoundoff(const FiniteStrainSolid& kernel, const ElementGeometry& g) {
+  const double floor = 10.0 * std::numeric_limits<double>::epsilon() / 1e-12 * kernel.modulus();
+  std::vector<double> r;
+  for (int a = 0; a < g.nodes; ++a) {
+    double s = 0.0;
+    for (int q = 0; q < g.points; ++q)
+      for (int J = 0; J < 3; ++J) s += g.weight[size_t(q)] * std::abs(g.dNdX[(size_t(q) * g.nodes + a) * 3 + J]);
+    for (int c = 0; c < kernel.componentsPerNode(); ++c) r.push_back(floor * s);
+  }
+  return r;
 }
 
 // Every element's plastic state's offset in the archive's global array (element order).

@@ -141,6 +141,8 @@ class FiniteStrainForce : public InternalForce {
   bool hourglass_ = false;  // a block has one-point elements
   bool linearPart_ = true;  // K_lin has a nonzero value (else its products are skipped)
   static bool anyNonzero(const CrsMatrix& K);
+  // Per element DOF: the round-off of its force (termsNorm; see the .cpp).
+  static std::vector<double> forceRoundoff(const FiniteStrainSolid& kernel, const ElementGeometry& g);
   void layoutArchive(const Mesh& mesh, const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels);
   std::vector<size_t> globalState_;  // per global element: its state's offset in the archive (-1: none)
   size_t globalStateSize_ = 0;
