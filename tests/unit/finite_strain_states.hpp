@@ -96,4 +96,43 @@ inline double checkPlasticTangent(const FiniteStrainSolid& el, const ElementCase
   return asym / norm;
 }
 
+// An element's force against central differences of the energy evaluate returns, at u (the
+// element's reference geometry from c), and a perturbed force failing the same check.
+inline void expectForceIsTheEnergysDerivative(const FiniteStrainSolid& el, const ElementCase& c,
+                                              const std::vector<double>& u, double scale = 0.1) {
+  auto W = [&](const std::vector<double>& x) {
+    std::vector<double> f;
+    return std::vector<double>{el.evaluate(c.x, x, f, nullptr)};
+  };
+  std::vector<double> f;
+  el.evaluate(c.x, u, f, nullptr);
+  Dense J(1, int(f.size()));
+  for (size_t k = 0; k < f.size(); ++k) J(0, int(k)) = f[k];
+  TangentCheckOptions o;
+  o.scale = scale;
+  EXPECT_TRUE(tangentMatches(W, J, u, o));
+  EXPECT_TRUE(tangentMismatches(W, perturbed(J), u, o));
+}
+
+// An element's tangent K (evaluate's) against central differences of its force at u, and a
+// perturbed K failing the same check.
+inline void expectTangentMatchesTheForce(const FiniteStrainSolid& el, const ElementGeometry& g,
+                                         const std::vector<double>& u, double scale = 0.1) {
+  auto R = [&](const std::vector<double>& x) {
+    std::vector<double> r;
+    el.evaluate(g, x, r, nullptr);
+    return r;
+  };
+  std::vector<double> f;
+  DenseMatrix K;
+  el.evaluate(g, u, f, &K);
+  Dense J(K.rows(), K.cols());
+  for (int i = 0; i < K.rows(); ++i)
+    for (int j = 0; j < K.cols(); ++j) J(i, j) = K(i, j);
+  TangentCheckOptions o;
+  o.scale = scale;
+  EXPECT_TRUE(tangentMatches(R, J, u, o));
+  EXPECT_TRUE(tangentMismatches(R, perturbed(J), u, o));
+}
+
 }  // namespace choc::test

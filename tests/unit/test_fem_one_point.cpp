@@ -49,23 +49,7 @@ class OnePoint : public ::testing::TestWithParam<ElementCase> {};
 TEST_P(OnePoint, TangentMatchesCentralDifferencesOfTheForce) {
   const ElementCase& c = GetParam();
   const FiniteStrainSolid el = onePoint(c, neoHookean());
-  const ElementGeometry g = el.geometry(c.x);
-  const std::vector<double> u = wobbled(c, 0.02);
-  auto R = [&](const std::vector<double>& x) {
-    std::vector<double> r;
-    el.evaluate(g, x, r, nullptr);
-    return r;
-  };
-  std::vector<double> f;
-  DenseMatrix K;
-  el.evaluate(g, u, f, &K);
-  test::Dense J(K.rows(), K.cols());
-  for (int i = 0; i < K.rows(); ++i)
-    for (int j = 0; j < K.cols(); ++j) J(i, j) = K(i, j);
-  test::TangentCheckOptions o;
-  o.scale = 0.1;
-  EXPECT_TRUE(test::tangentMatches(R, J, u, o));
-  EXPECT_TRUE(test::tangentMismatches(R, test::perturbed(J), u, o));
+  test::expectTangentMatchesTheForce(el, el.geometry(c.x), wobbled(c, 0.02));
 }
 
 TEST_P(OnePoint, PlasticTangentMatchesCentralDifferencesOfTheForce) {
@@ -81,20 +65,7 @@ TEST_P(OnePoint, PlasticTangentMatchesCentralDifferencesOfTheForce) {
 // hourglass energy): the balance counts what the force does.
 TEST_P(OnePoint, ForceIsTheDerivativeOfTheElementEnergy) {
   const ElementCase& c = GetParam();
-  const FiniteStrainSolid el = onePoint(c, neoHookean());
-  const std::vector<double> u = wobbled(c, 0.02);
-  auto W = [&](const std::vector<double>& x) {
-    std::vector<double> f;
-    return std::vector<double>{el.evaluate(c.x, x, f, nullptr)};
-  };
-  std::vector<double> f;
-  el.evaluate(c.x, u, f, nullptr);
-  test::Dense J(1, int(f.size()));
-  for (size_t k = 0; k < f.size(); ++k) J(0, int(k)) = f[k];
-  test::TangentCheckOptions o;
-  o.scale = 0.1;
-  EXPECT_TRUE(test::tangentMatches(W, J, u, o));
-  EXPECT_TRUE(test::tangentMismatches(W, test::perturbed(J), u, o));
+  test::expectForceIsTheEnergysDerivative(onePoint(c, neoHookean()), c, wobbled(c, 0.02));
 }
 
 // Under a homogeneous deformation the mean gradient is exact and every hourglass amplitude is

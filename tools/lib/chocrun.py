@@ -730,6 +730,33 @@ def turned_mesh(src_msh, out_msh, R):
     return out_msh
 
 
+def taylor_bar_3d_deck(work, n=2, full=0, R=None, end=None, points=("EDGE", "REAR", "CENTRE")):
+    """input/taylor_bar_3d.xml on meshes/taylor_bar_3d.geo with n elements across the radius (the
+    mesh written into `work`), Exodus off: the quarter, or with `full` the whole bar (no symmetry
+    planes, the `points`' three components recorded); with R (a rotation matrix) the bar, its wall
+    and its velocity turned as a rigid whole (the frame-invariance tests); `end` the end time.
+    Returns the deck tree."""
+    msh = gmsh_mesh("taylor_bar_3d.geo", os.path.join(work, f"bar3d_n{n}_full{full}.msh"), n=n, full=full)
+    d = load_deck(input_path("taylor_bar_3d.xml"))
+    set_param(d, "Analyses/impact/Exodus Interval", 0)
+    if full:
+        remove_sublist(d, "Model/Dirichlet")
+        set_param(d, "Analyses/impact/History", " ".join(f"{p}:{c}" for p in points for c in ("DX", "DY", "DZ")))
+    if end:
+        set_param(d, "Analyses/impact/End Time", end)
+    if R is not None:
+        msh = turned_mesh(msh, os.path.join(work, f"bar3d_n{n}_turned.msh"), R)
+        vec = lambda x: " ".join(repr(float(v)) for v in x)  # noqa: E731
+        set_param(d, "Analyses/impact/Contact/Pairs/wall/Obstacle/Normal", vec(R @ [0, 1, 0]))
+        ic = "Analyses/impact/Initial Conditions/flight"
+        set_param(d, ic + "/Field", "Rigid Velocity")
+        remove_param(d, ic + "/Components")
+        remove_param(d, ic + "/Value")
+        set_param(d, ic + "/Translation", vec(R @ [0, -227, 0]), create=True)
+    set_param(d, "Mesh/File", msh)
+    return d
+
+
 def renumbered_mesh(src_msh, out_msh):
     """The gmsh 4.1 mesh src_msh written to out_msh with node tag t renamed N + 1 - t, in the
     nodes and the elements (the numbering-invariance tests); returns out_msh."""

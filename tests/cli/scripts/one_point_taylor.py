@@ -43,28 +43,10 @@ def finish_run(d, label, ranks=1):
 
 
 def quarter(n, ranks=1, full=0, R=None, end=None):
-    msh = chocrun.gmsh_mesh("taylor_bar_3d.geo", os.path.join(work, f"bar_n{n}_full{full}.msh"), n=n, full=full)
-    d = chocrun.load_deck(os.path.join(src, "input", "taylor_bar_3d.xml"))
+    d = chocrun.taylor_bar_3d_deck(work, n=n, full=full, R=R, end=end, points=POINTS)
     chocrun.set_param(d, "Model/Blocks/BAR/Formulation", "one-point")
     chocrun.set_param(d, "Analyses/impact/Time Step", 4e-8 * 4 / n)
-    chocrun.set_param(d, "Analyses/impact/Exodus Interval", 0)
     label = f"one_point_n{n}_full{full}_np{ranks}" + ("_turned" if R is not None else "")
-    if full:
-        chocrun.remove_sublist(d, "Model/Dirichlet")
-        chocrun.set_param(d, "Analyses/impact/History",
-                          " ".join(f"{p}:{c}" for p in POINTS for c in ("DX", "DY", "DZ")))
-    if end:
-        chocrun.set_param(d, "Analyses/impact/End Time", end)
-    if R is not None:
-        msh = chocrun.turned_mesh(msh, os.path.join(work, "bar_turned.msh"), R)
-        vec = lambda x: " ".join(repr(float(v)) for v in x)  # noqa: E731
-        chocrun.set_param(d, "Analyses/impact/Contact/Pairs/wall/Obstacle/Normal", vec(R @ [0, 1, 0]))
-        ic = "Analyses/impact/Initial Conditions/flight"
-        chocrun.set_param(d, ic + "/Field", "Rigid Velocity")
-        chocrun.remove_param(d, ic + "/Components")
-        chocrun.remove_param(d, ic + "/Value")
-        chocrun.set_param(d, ic + "/Translation", vec(R @ [0, -227, 0]), create=True)
-    chocrun.set_param(d, "Mesh/File", msh)
     return finish_run(d, label, ranks)
 
 

@@ -59,26 +59,8 @@ def axisymmetric(n):
 
 
 def three_d(full=0, ranks=1, R=None, end=None):
-    msh = chocrun.gmsh_mesh("taylor_bar_3d.geo", os.path.join(work, f"bar3d_full{full}.msh"), n=2, full=full)
-    d = chocrun.load_deck(os.path.join(src, "input", "taylor_bar_3d.xml"))
-    chocrun.set_param(d, "Analyses/impact/Exodus Interval", 0)
+    d = chocrun.taylor_bar_3d_deck(work, n=2, full=full, R=R, end=end, points=POINTS)
     label = f"bar3d_full{full}_np{ranks}" + ("_turned" if R is not None else "")
-    if full:
-        chocrun.remove_sublist(d, "Model/Dirichlet")
-        chocrun.set_param(d, "Analyses/impact/History",
-                          " ".join(f"{p}:{c}" for p in POINTS for c in ("DX", "DY", "DZ")))
-    if end:
-        chocrun.set_param(d, "Analyses/impact/End Time", end)
-    if R is not None:
-        msh = chocrun.turned_mesh(msh, os.path.join(work, "bar3d_turned.msh"), R)
-        vec = lambda x: " ".join(repr(float(v)) for v in x)  # noqa: E731
-        chocrun.set_param(d, "Analyses/impact/Contact/Pairs/wall/Obstacle/Normal", vec(R @ [0, 1, 0]))
-        ic = "Analyses/impact/Initial Conditions/flight"
-        chocrun.set_param(d, ic + "/Field", "Rigid Velocity")
-        chocrun.remove_param(d, ic + "/Components")
-        chocrun.remove_param(d, ic + "/Value")
-        chocrun.set_param(d, ic + "/Translation", vec(R @ [0, -227, 0]), create=True)
-    chocrun.set_param(d, "Mesh/File", msh)
     h, _ = finish_run(d, label, ranks)
     return h
 
