@@ -417,7 +417,7 @@ void FiniteStrainSolid::addFBarForce(const PointView& p, const PointState& s, co
 
 double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f,
                                    DenseMatrix* K, const double* old, double* next, double* plasticWork,
-                                   bool elasticTangent, double dt) const {
+                                   bool elasticTangent, double dt, double* hourglassEnergy) const {
   const QuadratureRule& rule = this->rule();
   const int nc = componentsPerNode(), n = g.nodes, nd = n * nc;
   f.assign(size_t(nd), 0.0);
@@ -459,7 +459,11 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
     addTangent(kin_, p, A, w, *K);
   }
   if (fbarTangent) fbarTangent->finish(*K);
-  if (onePoint_) energy += addHourglass(g, u, f, K);
+  if (onePoint_) {
+    const double hg = addHourglass(g, u, f, K);
+    energy += hg;
+    if (hourglassEnergy) *hourglassEnergy = hg;
+  }
   return energy;
 }
 

@@ -144,10 +144,11 @@ class FiniteStrainSolid {
   // (stateSize() numbers) and, when given, writes the new one to `next` and adds the
   // increment's dissipated work (J2Response::plasticWork) times dV to *plasticWork. With
   // `elasticTangent`, K takes a plastic material's elastic tangent (the explicit critical step).
-  // dt: the increment's duration (a rate-dependent flow stress; 0: quasi-static).
+  // dt: the increment's duration (a rate-dependent flow stress; 0: quasi-static). One point:
+  // the hourglass part of the returned energy into *hourglassEnergy when given.
   double evaluate(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f, DenseMatrix* K,
                   const double* old = nullptr, double* next = nullptr, double* plasticWork = nullptr,
-                  bool elasticTangent = false, double dt = 0.0) const;
+                  bool elasticTangent = false, double dt = 0.0, double* hourglassEnergy = nullptr) const;
   double evaluate(const std::vector<Point3>& X, const std::vector<double>& u, std::vector<double>& f,
                   DenseMatrix* K) const {
     return evaluate(geometry(X), u, f, K);

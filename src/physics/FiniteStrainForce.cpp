@@ -180,15 +180,15 @@ std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTange
   auto data = uCol.getData();
   std::vector<double> ue, fe;
   DenseMatrix Ke;
-  if (trial) trialWork_ = 0.0, trialTime_ = time_;
+  if (trial) trialWork_ = 0.0, trialHourglass_ = 0.0, trialTime_ = time_;
   const double dt = time_ - committedTime_;
   for (const Element& e : elements_) {
     gather(e, data, ue);
-    double energy = 0.0, work = 0.0;
+    double energy = 0.0, work = 0.0, hourglass = 0.0;
     try {
       energy = e.kernel->evaluate(e.geometry, ue, fe, withTangent ? &Ke : nullptr, committed_.data() + e.state,
-                                  trial ? trial_.data() + e.state : nullptr, &work, elasticTangent, dt);
-      if (trial && e.owner) trialWork_ += work;
+                                  trial ? trial_.data() + e.state : nullptr, &work, elasticTangent, dt, &hourglass);
+      if (trial && e.owner) trialWork_ += work, trialHourglass_ += hourglass;
     } catch (const InvertedElement& err) {
       return describe(e, err.what());
     }
@@ -227,6 +227,7 @@ void FiniteStrainForce::internalForce(const Vector& u, Vector& out) const {
   if (forceAt_.is_null()) forceAt_ = rcp(new Vector(u.getMap()));
   forceAt_->assign(u);
   forceAtEnergy_ = energy;
+  forceAtHourglass_ = trialHourglass_;
 }
 
 RCP<const CrsMatrix> FiniteStrainForce::tangent(const Vector& u) {
@@ -288,8 +289,11 @@ double FiniteStrainForce::strainEnergy(const Vector& u, const Vector* /*internal
 }
 
 double FiniteStrainForce::hourglassEnergy(const Vector& u) const {
+  if (!hourglass_) return 0.0;  // the same on every rank (the model's blocks)
   double local = 0.0, global = 0.0;
-  if (hourglass_) {
+  if (sameState(forceAt_, u)) {  // the internal force at u summed it already
+    local = forceAtHourglass_;
+  } else {
     auto data = onColumns(u).getData();
     std::vector<double> ue;
     for (const Element& e : elements_) {

@@ -124,12 +124,14 @@ class FiniteStrainForce : public InternalForce {
   // energies of the state a step ended at without a second pass over the elements.
   mutable RCP<Vector> forceAt_;
   mutable double forceAtEnergy_ = 0.0;
+  mutable double forceAtHourglass_ = 0.0;  // the owners' hourglass energy there (this rank)
   bool sameState(const RCP<Vector>& at, const Vector& u) const;
   // The plastic states: committed, and the trial of the last internal force (see above).
   bool plastic_ = false;
   std::vector<double> committed_;
   mutable std::vector<double> trial_;
   mutable bool trialValid_ = false;
+  mutable double trialHourglass_ = 0.0;  // the owners' hourglass energy of the last trial pass (this rank)
   mutable double trialWork_ = 0.0;  // the owners' plastic work of the trial increment (this rank)
   double plasticWork_ = 0.0;        // the committed increments' plastic work, all ranks [J]
   // The time of the committed state and of the trial: the increment's duration for rate-dependent
