@@ -7,7 +7,7 @@
 #   (defaults: build/choc 9 500 meshes/scale_3d.exo; skipped when OUTPUT exists and is newer
 #    than choc, unless FORCE=1)
 set -euo pipefail
-top="$(cd "$(dirname "$0")/.." && pwd)"
+top="$(cd "$(dirname "$0")/../.." && pwd)"
 choc="${1:-$top/build/choc}"
 across="${2:-9}"
 along="${3:-500}"

@@ -2,7 +2,7 @@
 # make run: runs every SDNL111 input, then writes results/report.md with plots.
 # usage: tools/build/run-suite.sh [BUILD_DIR]
 set -uo pipefail
-top="$(cd "$(dirname "$0")/.." && pwd)"
+top="$(cd "$(dirname "$0")/../.." && pwd)"
 build="${1:-$top/build}"
 cd "$top"
 mkdir -p results
