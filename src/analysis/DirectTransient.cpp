@@ -183,20 +183,20 @@ DirectTransient::DirectTransient(const std::string& name, const Teuchos::Paramet
                    "use 'Linear Solver/Method' = Direct, GMRES or auto with follower pressures");
   }
   // (Central differences make no linear solve: their forward increments need no solver.)
-  // Multipliers against rigid obstacles alone are condensed out of an iterative solve; others
-  // make a saddle-point system.
+  // Multipliers against rigid obstacles alone are condensed out of an iterative solve, Lagrange's
+  // between meshed bodies without friction projected out; others make a saddle-point system.
   const bool saddlePoint = s_.contact.hasMultipliers() && !s_.contact.condensable();
+  const std::string which = s_.contact.frictionPair() ? "' between meshed bodies with friction" : "' between meshed bodies";
   if (!s_.explicitScheme && saddlePoint && params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
     throwInput(inputFile_, path("Linear Solver/Method"), "CG",
-               "the saddle-point system of contact method '" + s_.contact.methodName() +
-                   "' between meshed bodies is indefinite",
+               "the saddle-point system of contact method '" + s_.contact.methodName() + which + " is indefinite",
                "use Direct, GMRES or MINRES (or the Penalty method with CG)");
   const Teuchos::ParameterList& lp = params_.sublist("Linear Solver");
   if (!s_.explicitScheme && saddlePoint && lp.get<std::string>("Preconditioner") == "Multigrid" &&
       lp.get<std::string>("Method") != "Direct")
     throwInput(inputFile_, path("Linear Solver/Preconditioner"), "Multigrid",
-               "the Newton matrix of contact method '" + s_.contact.methodName() +
-                   "' between meshed bodies has multiplier rows, which multigrid for elasticity does not aggregate",
+               "the Newton matrix of contact method '" + s_.contact.methodName() + which +
+                   " has multiplier rows, which multigrid for elasticity does not aggregate",
                "use the Penalty method with Multigrid, or Method = Direct or auto");
 }
 
@@ -565,13 +565,22 @@ void DirectTransient::summarize(RunSummary& s, const TransientSummary& sum, cons
   }
 }
 
+namespace {
+
+// " (+ n contact pressures[, how they leave the Newton system])", or "" without multipliers.
+std::string pressuresClause(const ContactManager* contact, const StructuralOperator& op) {
+  if (!contact || !contact->method().hasMultipliers()) return "";
+  const char* how = op.condensedContact()   ? ", condensed out of the Newton system node by node"
+                    : op.projectedContact() ? ", projected out of the Newton system (C^T du = t by P = I - C (C^T C)^-1 C^T)"
+                                            : "";
+  return " (+ " + std::to_string(contact->numConstraints()) + " contact pressures" + how + ")";
+}
+
+}  // namespace
+
 void DirectTransient::describe(Model& model, const StructuralOperator& op) const {
   const ContactManager* contact = b_->contact.get();
-  log() << "  " << model.dofs().numGlobal() << " unknowns"
-        << (contact && contact->method().hasMultipliers()
-                ? " (+ " + std::to_string(contact->numConstraints()) + " contact pressures" +
-                      (op.condensedContact() ? ", condensed out of the Newton system node by node" : "") + ")"
-                : std::string())
+  log() << "  " << model.dofs().numGlobal() << " unknowns" << pressuresClause(contact, op)
         << "; " << (s_.explicitScheme ? std::string("central differences (explicit, lumped mass)")
                                          : s_.scheme.describe())
         << "\n";

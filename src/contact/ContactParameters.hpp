@@ -38,13 +38,14 @@ struct ContactSettings {
   // An explicit scheme enforces the multipliers by forward increments.
   bool forwardIncrementsWhenExplicit() const { return method == ContactMethodKind::Lagrange; }
   std::string methodName() const { return contactMethodName(method); }
-  // Multipliers that an implicit iterative solve condenses out (ContactCondensation): every
-  // pair against a rigid obstacle.
+  // Multipliers that an implicit iterative solve eliminates: every pair against a rigid obstacle
+  // (ContactCondensation, node by node, with or without friction), or Lagrange contact without
+  // friction on any pairs (ContactProjection).
   bool condensable() const {
     if (!hasMultipliers() || pairs.empty()) return false;
-    for (const auto& p : pairs)
-      if (!p.hasObstacle) return false;
-    return true;
+    bool obstacles = true;
+    for (const auto& p : pairs) obstacles = obstacles && p.hasObstacle;
+    return obstacles || (method == ContactMethodKind::Lagrange && !frictionPair());
   }
   // The first pair with a friction coefficient, or null.
   const PairDefinition* frictionPair() const {

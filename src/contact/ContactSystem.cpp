@@ -24,9 +24,9 @@ ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, Con
   const int rank = comm->getRank();
   const GO nU = GO(dofMap->getGlobalNumElements());
   nLocalDofs_ = dofMap->getNodeNumElements();
-  if (condense && contact_ && ContactCondensation::applies(*contact_))
-    condensation_ = std::make_unique<ContactCondensation>(*contact_);
-  extended_ = contact_ && contact_->method().hasMultipliers() && contact_->numConstraints() > 0 && !condensation_;
+  if (condense) eliminateMultipliers(dofMap);
+  extended_ = contact_ && contact_->method().hasMultipliers() && contact_->numConstraints() > 0 && !condensation_ &&
+              !projection_;
   const int nS = contact_ ? contact_->numConstraints() : 0;
   rowOfConstraint_.assign(nS, -1);
 
@@ -75,6 +75,15 @@ ContactSystem::ContactSystem(RCP<const CrsMatrix> K, RCP<const CrsMatrix> M, Con
 }
 
 ContactSystem::~ContactSystem() = default;
+
+// Node by node against obstacles alone, else projected where Lagrange has no friction.
+void ContactSystem::eliminateMultipliers(const RCP<const Map>& dofMap) {
+  if (!contact_) return;
+  if (ContactCondensation::applies(*contact_))
+    condensation_ = std::make_unique<ContactCondensation>(*contact_);
+  else if (ContactProjection::applies(*contact_))
+    projection_ = std::make_shared<ContactProjection>(*contact_, dofMap);
+}
 
 // Row i of the DOF block takes aK K(i,:) + aM M(i,:); A's pattern holds both. The values are
 // written through the local matrix (a search per entry by global index cost 0.37 s per fill
@@ -187,7 +196,7 @@ void ContactSystem::fillEntries(double aM, double aK, const std::vector<MatrixEn
 }
 
 std::vector<char> ContactSystem::statusKey() const {
-  if (!contact_) return {};
+  if (!contact_ || projection_) return {};  // projected: W holds no contact term
   std::vector<char> key = contact_->status();
   const int g = contact_->geometryVersion();  // the coefficients of curved obstacles' rows
   const char* b = reinterpret_cast<const char*>(&g);
@@ -199,6 +208,7 @@ std::vector<char> ContactSystem::statusKey() const {
 
 void ContactSystem::rightHandSide(const Vector& r, const Vector& u, MultiVector& b) const {
   if (condensation_) return condensation_->rightHandSide(r, u, b);
+  if (projection_) return projection_->rightHandSide(*A_, r, u, b);
   auto rd = r.getData();
   auto bd = b.getDataNonConst(0);
   for (size_t i = 0; i < nLocalDofs_; ++i) bd[i] = -rd[i];
@@ -210,6 +220,7 @@ void ContactSystem::rightHandSide(const Vector& r, const Vector& u, MultiVector&
 
 void ContactSystem::takeSolution(const MultiVector& x, Vector& du) const {
   if (condensation_) return condensation_->takeSolution(x, du);
+  if (projection_) return projection_->takeSolution(*A_, x, du);
   auto xd = x.getData(0);
   {
     auto d = du.getDataNonConst();

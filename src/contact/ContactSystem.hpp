@@ -10,11 +10,15 @@
 // Other nonlinear forces (shock links) add their tangent on couplings declared up front.
 //   condensed multipliers:  A = P (aM M + aK K) P + sigma Q Q^T                   (DOF map)
 // when asked for and every constraint involves its slave node alone (ContactCondensation).
+//   projected multipliers:  A = aM M + aK K, solved as P A P + sigma (I - P)         (DOF map)
+// when asked for, Lagrange without friction, some pair between meshed bodies (ContactProjection:
+// the matrix and its preconditioner do not depend on the contact statuses).
 #pragma once
 #include <memory>
 
 #include "contact/ContactCondensation.hpp"
 #include "contact/ContactManager.hpp"
+#include "contact/ContactProjection.hpp"
 #include "core/TpetraTypes.hpp"
 
 namespace choc {
@@ -28,6 +32,8 @@ class ContactSystem {
                 const std::vector<std::vector<GO>>& couplings = {}, bool condense = false);
   ~ContactSystem();
   bool condensed() const { return condensation_ != nullptr; }
+  // The projector an iterative solver must apply (ContactProjection), or null.
+  std::shared_ptr<const ConstraintProjector> projection() const { return projection_; }
   RCP<const Map> map() const { return map_; }  // DOF map, or extended by the multiplier rows
   bool extended() const { return extended_; }
   size_t numLocalDofs() const { return nLocalDofs_; }  // leading local entries are the DOFs
@@ -61,6 +67,8 @@ class ContactSystem {
   double maxDiagK_ = 0, maxDiagM_ = 0;
   bool extended_ = false;
   std::unique_ptr<ContactCondensation> condensation_;
+  std::shared_ptr<ContactProjection> projection_;
+  void eliminateMultipliers(const RCP<const Map>& dofMap);
   size_t nLocalDofs_ = 0;
   RCP<const Map> map_;
   RCP<CrsMatrix> A_;

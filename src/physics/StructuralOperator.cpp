@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -42,6 +43,8 @@ ContactSystem& StructuralOperator::system() {
                                               links_ ? links_->couplings() : std::vector<std::vector<GO>>(), condense_);
     rhs_ = rcp(new MultiVector(system_->map(), 1));
     x_ = rcp(new MultiVector(system_->map(), 1));
+    if (system_->projection() && !solver_->setProjection(system_->projection()))
+      throw std::logic_error("the linear solver cannot project out the contact multipliers (a direct solver)");
   }
   return *system_;
 }

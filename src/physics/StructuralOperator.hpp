@@ -74,6 +74,10 @@ class StructuralOperator : public ExplicitOperator {
   // (ContactCondensation: every constraint against a rigid obstacle, no friction).
   void setCondensedContact(bool on) { condense_ = on; }
   bool condensedContact() const { return condense_ && contact_ && ContactCondensation::applies(*contact_); }
+  // Lagrange between meshed bodies, no friction: the multipliers projected out (ContactProjection).
+  bool projectedContact() const {
+    return condense_ && contact_ && !ContactCondensation::applies(*contact_) && ContactProjection::applies(*contact_);
+  }
   // The internal force's products from half a symmetric matrix (InternalForce::
   // preferSymmetricProducts): for explicit runs, whose cost is those products. Implicit runs
   // keep the CRS product: their linear solve dominates, and the copy costs 0.4 kB per unknown.

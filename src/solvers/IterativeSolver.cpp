@@ -14,6 +14,7 @@
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
 #include "core/Memory.hpp"
+#include "solvers/ConstraintProjector.hpp"
 #include "solvers/ElasticityMultigrid.hpp"
 #include "solvers/SymmetricOperator.hpp"
 
@@ -73,10 +74,17 @@ class BelosSolver : public LinearSolver {
     }
     // The Belos problem and solver are built once per matrix and reused by every solve()
     // (only the right-hand side and the initial guess change between solves).
+    operator_ = krylovOperator(A_);
+    precOperator_ = Teuchos::null;
+    if (!prec_.is_null()) precOperator_ = prec_;
+    if (!multigrid_.is_null()) precOperator_ = multigrid_;
+    if (projector_) {  // P A P + sigma (I - P), preconditioned by P M^-1 P + (I - P) / sigma
+      operator_ = rcp(new ProjectedOperator(operator_, A_->getRangeMap(), *projector_, false));
+      precOperator_ = rcp(new ProjectedOperator(precOperator_, A_->getRangeMap(), *projector_, true));
+    }
     problem_ = rcp(new Belos::LinearProblem<double, MultiVector, Operator>());
-    problem_->setOperator(krylovOperator(A_));
-    if (!prec_.is_null()) problem_->setRightPrec(prec_);
-    if (!multigrid_.is_null()) problem_->setRightPrec(multigrid_);
+    problem_->setOperator(operator_);
+    if (!precOperator_.is_null()) problem_->setRightPrec(precOperator_);
     if (solver_.is_null()) {
       params_ = rcp(new Teuchos::ParameterList);
       params_->set("Convergence Tolerance", tol_);
@@ -132,7 +140,7 @@ class BelosSolver : public LinearSolver {
         return st;
       }
     }
-    st.relativeResidual = relativeResidual(*A_, b, x);
+    st.relativeResidual = projector_ ? operatorResidual(b, x) : relativeResidual(*A_, b, x);
     // Belos' own test is on the preconditioned residual: confirm with the true one. A solve
     // Belos reports unconverged (GMRES' loss-of-accuracy test) whose true residual is within
     // the tolerance itself is accepted.
@@ -142,6 +150,27 @@ class BelosSolver : public LinearSolver {
       st.message = "Belos " + method + " did not converge in " + std::to_string(st.iterations) +
                    " iterations (true relative residual " + format("%.3e", st.relativeResidual) + ")";
     return st;
+  }
+
+  bool setProjection(std::shared_ptr<const ConstraintProjector> projector) override {
+    projector_ = std::move(projector);
+    return true;
+  }
+
+  // ||b - A_P x|| / ||b||, the largest over the columns (the projected operator's product).
+  double operatorResidual(const MultiVector& b, const MultiVector& x) const {
+    MultiVector r(b, Teuchos::Copy);
+    operator_->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
+    std::vector<double> rn(b.getNumVectors()), bn(b.getNumVectors());
+    r.norm2(rn);
+    b.norm2(bn);
+    double worst = 0.0;
+    for (size_t j = 0; j < rn.size(); ++j) {
+      const double rel = bn[j] > 0.0 ? rn[j] / bn[j] : rn[j];
+      if (!std::isfinite(rel)) return rel;
+      worst = std::max(worst, rel);
+    }
+    return worst;
   }
 
   std::string description() const override {
@@ -162,9 +191,9 @@ class BelosSolver : public LinearSolver {
     } else {
       indefinite_->setParameters(p);
     }
-    auto problem = rcp(new Belos::LinearProblem<double, MultiVector, Operator>(A_, problem_->getLHS(), problem_->getRHS()));
-    if (!prec_.is_null()) problem->setRightPrec(prec_);
-    if (!multigrid_.is_null()) problem->setRightPrec(multigrid_);
+    auto problem = rcp(new Belos::LinearProblem<double, MultiVector, Operator>(
+        projector_ ? operator_ : RCP<const Operator>(A_), problem_->getLHS(), problem_->getRHS()));
+    if (!precOperator_.is_null()) problem->setRightPrec(precOperator_);
     problem->setProblem();
     indefinite_->setProblem(problem);
     return indefinite_;
@@ -191,6 +220,8 @@ class BelosSolver : public LinearSolver {
   RCP<Teuchos::ParameterList> params_;
   RCP<const CrsMatrix> A_;
   RCP<SymmetricOperator> symmetric_;
+  std::shared_ptr<const ConstraintProjector> projector_;
+  RCP<const Operator> operator_, precOperator_;  // what the Krylov iterations multiply by
   RCP<Preconditioner> prec_;
   RCP<ElasticityMultigrid> multigrid_;
   RCP<Belos::LinearProblem<double, MultiVector, Operator>> problem_;

@@ -11,6 +11,7 @@
 
 #include "core/TpetraTypes.hpp"
 #include "fem/NodalBlocks.hpp"
+#include "solvers/ConstraintProjector.hpp"
 
 namespace choc {
 
@@ -38,6 +39,10 @@ class LinearSolver {
   // setMatrix(factored) and updateMatrix(current).
   virtual std::vector<long long> keptState() const { return {}; }
   virtual void restoreKeptState(const std::vector<long long>& /*state*/) {}
+  // The following matrices' solves eliminate the projector's constraints (the operator and
+  // preconditioner of solvers/ConstraintProjector.hpp; the projector may change between solves,
+  // the preconditioner stays A's). False when this solver cannot (a direct solver).
+  virtual bool setProjection(std::shared_ptr<const ConstraintProjector> /*projector*/) { return false; }
   virtual LinearSolveStatus solve(const MultiVector& b, MultiVector& x) = 0;
   virtual std::string description() const = 0;
   int factorizations() const { return factorizations_; }

@@ -6,8 +6,10 @@
 //     TET10 rubber ball, 4,713 unknowns, mass-dominated: CG + Jacobi 0.2 s per step against
 //     KLU2's 3 s);
 //   - a matrix that is not symmetric positive definite (contact multipliers between meshed
-//     bodies, friction, links; multipliers against rigid obstacles alone are condensed out of
-//     an iterative solve, leaving K's and M's regime, contact/ContactCondensation.hpp):
+//     bodies with friction, friction, links; multipliers against rigid obstacles alone are
+//     condensed out of an iterative solve, leaving K's and M's regime,
+//     contact/ContactCondensation.hpp, and Lagrange's without friction projected out,
+//     contact/ContactProjection.hpp):
 //     Direct, whatever the size (Jacobi has no diagonal to invert on a multiplier row), with
 //     the distributed package (MUMPS, when the build has it) above kAlwaysDirectUpTo: it factors
 //     on every rank where KLU2 gathers the system to rank 0 (measured on the scale scene's bars

@@ -3,6 +3,7 @@
 
 usage: tools/bench/bench_scale.py [--build DIR] [--sizes] [--end-time T] [--repeat N]
                                   [--solver input|auto] [--mesh ACROSS ALONG] [--json PATH]
+                                  [--contact lagrange [--friction MU]]
 
 Generates meshes/scale_3d.exo (tools/build/make-scale-mesh.sh) when missing, runs the input with
 np = 1 and np = 2 (mpirun --allow-run-as-root --oversubscribe --bind-to none), and reports, per
@@ -20,6 +21,10 @@ weighs on both runs of a pair). --solver auto drops the input's 'Method' and 'Pr
 mass-dominated) with the default adaptive linear tolerance, and compares its np = 1 histories
 with one run of the input as written. --mesh ACROSS ALONG runs the scene on another mesh (made
 in the work directory; e.g. --mesh 3 40 for a smoke test).
+--contact lagrange runs the scene with Lagrange contact (no penalty stiffness; with --friction MU
+a Coulomb coefficient on the pair) beside the input's penalty contact with the same linear
+solver, np = 1 and 2 for each, and reports Lagrange's time per step over penalty's per np (the
+issue's bounds: 1.5 without friction, 2.5 with) and the largest difference of their histories.
 Writes the figures to results/bench/bench_scale.json (bench_scale_auto.json with --solver auto),
 from which tools/docs/performance_pages.py makes docs/performance/generated/.
 """
@@ -57,6 +62,7 @@ def measure(choc, xml, np_, outdir, series):
            "krylov_per_step": krylov / steps, "krylov_per_newton": krylov / max(newton, 1),
            "mib_per_rank": chocrun.peak_mib_per_rank(s), "bytes_per_unknown": chocrun.bytes_per_unknown(s),
            "cpu_s_per_rank": v("cpu_seconds_per_rank"), "linear_solver": v("linear_solver/description"),
+           "factorizations": v("factorizations"),
            "choc_commit": v("choc/commit")}
     for key, timer in (("assembly_ms", "assembly"), ("solve_ms", "linear_solve"), ("contact_ms", "contact"),
                        ("output_ms", "output")):
@@ -105,6 +111,8 @@ def main():
     ap.add_argument("--mesh", type=int, nargs=2, metavar=("ACROSS", "ALONG"),
                     help="run on ACROSS x ACROSS x ALONG HEX8 per bar instead of meshes/scale_3d.exo")
     ap.add_argument("--json", default=None, help="the figures' file (default results/bench/<bench>.json)")
+    ap.add_argument("--contact", choices=("input", "lagrange"), default="input")
+    ap.add_argument("--friction", type=float, default=0.0)
     a = ap.parse_args()
     choc = chocrun.choc_path(a.build)
     tmp = tempfile.mkdtemp(prefix="choc-bench-")
@@ -128,6 +136,8 @@ def main():
         chocrun.remove_param(deck, f"{an}/Linear Solver/Preconditioner")
         src = chocrun.write_deck(deck, os.path.join(tmp, "scale-3d-auto.xml"))
         series += ", linear solver 'auto'"
+    if a.contact == "lagrange":
+        return lagrange_against_penalty(choc, deck, an, src, series, a, tmp)
     runs = median_runs(choc, src, a.repeat, tmp, "np", series)
     print("linear solver:", runs[0]["linear_solver"])
     if a.solver == "auto":
@@ -159,6 +169,40 @@ def main():
     name = "bench_scale" + ("_auto" if a.solver == "auto" else "")
     chocrun.write_bench_json(name, "Scale: the implicit scale scene on 1 and 2 ranks" +
                              (", linear solver 'auto'" if a.solver == "auto" else ""),
+                             runs, tables, vars(a), a.json, choc_commit=runs[0]["choc_commit"])
+    print(f"\nruns in {tmp}")
+
+
+LAGRANGE_COLUMNS = COLUMNS[:7] + [["solve_ms", "solve", ",.1f"], ["krylov_per_step", "Krylov/step", ".1f"],
+                                  ["newton", "Newton", "d"], ["factorizations", "set-ups", "d"],
+                                  ["vs_penalty", "time/step over penalty's", ".2f"], ["speedup", "speed-up", ".2f"],
+                                  ["mib_per_rank", "MiB per rank", "list:.0f"], ["load", "load", ".1f"]]
+
+
+def lagrange_against_penalty(choc, deck, an, penalty_xml, series, a, tmp):
+    """The scene with Lagrange contact (and friction) beside the penalty deck, the same solver."""
+    chocrun.set_param(deck, f"{an}/Contact/Method", "Lagrange")
+    chocrun.remove_param(deck, f"{an}/Contact/Penalty Stiffness")
+    label = "Lagrange"
+    if a.friction > 0:
+        pair = chocrun.sublists(deck, f"{an}/Contact/Pairs")[0]
+        chocrun.set_param(deck, f"{an}/Contact/Pairs/{pair}/Friction Coefficient", a.friction, create=True)
+        label += f", mu = {a.friction:g}"
+    lagrange_xml = chocrun.write_deck(deck, os.path.join(tmp, "scale-3d-lagrange.xml"))
+    penalty = median_runs(choc, penalty_xml, a.repeat, tmp, "pen", series + ", penalty")
+    lagrange = median_runs(choc, lagrange_xml, a.repeat, tmp, "lag", series + ", " + label)
+    for p, l in zip(penalty, lagrange):
+        l["vs_penalty"] = l["ms_per_step"] / p["ms_per_step"]
+    diff = compare(os.path.join(tmp, "pen1"), os.path.join(tmp, "lag1"))
+    lagrange[0]["histories_vs_penalty"] = diff
+    print("Lagrange against penalty, np = 1, max |diff| / peak: " + ", ".join(f"{c} {d:.1e}" for c, d in diff.items()))
+    print("linear solver (Lagrange):", lagrange[0]["linear_solver"])
+    runs = penalty + lagrange
+    title = f"{series}: {label} contact against penalty" + (f" (medians of {a.repeat} runs per np)" if a.repeat > 1 else "")
+    tables = [{"title": title, "columns": LAGRANGE_COLUMNS, "note": NOTE}]
+    chocrun.print_tables(runs, tables)
+    name = "bench_scale_lagrange" + ("_friction" if a.friction > 0 else "")
+    chocrun.write_bench_json(name, "Scale: the implicit scale scene with " + label + " contact against penalty",
                              runs, tables, vars(a), a.json, choc_commit=runs[0]["choc_commit"])
     print(f"\nruns in {tmp}")
 

@@ -1,0 +1,58 @@
+// Lagrange multipliers between meshed bodies eliminated from an iterative Newton solve by an
+// orthogonal projection. An active constraint s reads c_s^T du = t_s, c_s = B_s^T involving its
+// slave node and the nodes of its master face (t_s = rowResidual(s, g_s) / S); with C the active
+// columns, G = C^T C (small: one row per active slave node, factored by Cholesky on every rank),
+// P = I - C G^-1 C^T and d0 = C G^-1 t, the correction du = d0 + P x solves
+//     (P W P + sigma (I - P)) x = P (-R - W d0)
+// by CG (solvers/ConstraintProjector.hpp), W untouched: its preconditioner stays when the active
+// set changes. The multipliers follow by least squares on the DOF equations,
+//     C dlambda = W du + R,   dlambda = G^-1 C^T (W du + R),
+// exact where the solve is: the same Newton iterates as the saddle-point system to the solver's
+// tolerance. Applies to Lagrange contact without friction (friction's tangent is not in span C,
+// and the node-by-node condensation, ContactCondensation, serves pairs against obstacles alone).
+#pragma once
+#include <vector>
+
+#include "contact/ContactManager.hpp"
+#include "core/TpetraTypes.hpp"
+#include "solvers/ConstraintProjector.hpp"
+
+namespace choc {
+
+class ContactProjection : public ConstraintProjector {
+ public:
+  // Lagrange multipliers (no stiffness in the matrix), no friction, some pair between meshed
+  // bodies (otherwise ContactCondensation serves).
+  static bool applies(const ContactManager& contact);
+  ContactProjection(ContactManager& contact, RCP<const Map> dofMap) : contact_(contact), map_(std::move(dofMap)) {}
+
+  void project(const MultiVector& X, MultiVector& Y) const override;
+  double scale() const override { return contact_.scale(); }
+  // b = P (-r - W d0) at u, for the current statuses and coefficients (C and G rebuilt when
+  // they changed). Throws NumericalError when the active constraints are linearly dependent.
+  void rightHandSide(const CrsMatrix& W, const Vector& r, const Vector& u, MultiVector& b);
+  // du = P x + d0; the pressures corrected (collective).
+  void takeSolution(const CrsMatrix& W, const MultiVector& x, Vector& du) const;
+  int activeConstraints() const { return int(active_.size()); }
+
+ private:
+  struct Entry {
+    LO row;    // local row of the DOF on this rank
+    int k;     // active constraint
+    double c;  // its coefficient
+  };
+  ContactManager& contact_;
+  RCP<const Map> map_;
+  std::vector<char> key_;        // statuses and coefficient version C and G were built for
+  bool built_ = false;
+  std::vector<int> active_;      // active constraints (indices into the manager's)
+  std::vector<Entry> entries_;   // C's entries on the rows this rank owns
+  std::vector<double> cholesky_; // G = L L^T, column-major, lower
+  std::vector<double> d0Coef_;   // G^-1 t: d0 = C d0Coef_
+  RCP<Vector> residual_;         // R of the last right-hand side
+  void build();
+  std::vector<double> transposeTimes(const double* x) const;  // C^T x, summed over the ranks
+  void solveG(std::vector<double>& y) const;                   // y = G^-1 y
+};
+
+}  // namespace choc

@@ -1,0 +1,24 @@
+#include <Tpetra_MultiVector.hpp>
+
+#include "solvers/ConstraintProjector.hpp"
+
+namespace choc {
+
+ProjectedOperator::ProjectedOperator(RCP<const Operator> inner, RCP<const Map> map,
+                                     const ConstraintProjector& projector, bool inverseScale)
+    : inner_(std::move(inner)), map_(std::move(map)), projector_(projector), inverseScale_(inverseScale) {}
+
+void ProjectedOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp /*mode*/, double alpha,
+                              double beta) const {
+  const size_t nv = X.getNumVectors();
+  MultiVector px(map_, nv), bpx(map_, nv), out(map_, nv);
+  projector_.project(X, px);  // P X
+  if (inner_.is_null()) bpx.assign(px);
+  else inner_->apply(px, bpx);
+  projector_.project(bpx, out);  // P B P X
+  const double c = inverseScale_ ? 1.0 / projector_.scale() : projector_.scale();
+  out.update(c, X, -c, px, 1.0);  // + c (X - P X)
+  Y.update(alpha, out, beta);
+}
+
+}  // namespace choc
