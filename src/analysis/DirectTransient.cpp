@@ -184,9 +184,9 @@ DirectTransient::DirectTransient(const std::string& name, const Teuchos::Paramet
   }
   // (Central differences make no linear solve: their forward increments need no solver.)
   // Multipliers against rigid obstacles alone are condensed out of an iterative solve, Lagrange's
-  // between meshed bodies without friction projected out; others make a saddle-point system.
+  // between meshed bodies projected out; others (Continuous') make a saddle-point system.
   const bool saddlePoint = s_.contact.hasMultipliers() && !s_.contact.condensable();
-  const std::string which = s_.contact.frictionPair() ? "' between meshed bodies with friction" : "' between meshed bodies";
+  const std::string which = "' between meshed bodies";
   if (!s_.explicitScheme && saddlePoint && params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
     throwInput(inputFile_, path("Linear Solver/Method"), "CG",
                "the saddle-point system of contact method '" + s_.contact.methodName() + which + " is indefinite",
@@ -402,7 +402,8 @@ void DirectTransient::buildSolver(const Model& model) {
       r.notSymmetricBecause = "shock links";
     else if (hasFollowers)
       r.notSymmetricBecause = "follower pressures (their load stiffness)";
-    // Friction against obstacles alone, the multipliers condensed: W plus the sliding nodes' rows.
+    // Friction with the multipliers condensed (obstacles alone) or projected (Lagrange): W plus
+    // the sliding nodes' rows.
     r.nearlySymmetric = !b_->links && b_->contact && b_->contact->hasFriction() && s_.contact.condensable();
     r.tangentChanges = b_->finiteStrain;
     if (r.unknowns > r.alwaysDirectUpTo() && (r.symmetricPositive() || r.nearlySymmetric)) {

@@ -39,13 +39,13 @@ struct ContactSettings {
   bool forwardIncrementsWhenExplicit() const { return method == ContactMethodKind::Lagrange; }
   std::string methodName() const { return contactMethodName(method); }
   // Multipliers that an implicit iterative solve eliminates: every pair against a rigid obstacle
-  // (ContactCondensation, node by node, with or without friction), or Lagrange contact without
-  // friction on any pairs (ContactProjection).
+  // (ContactCondensation, node by node), or Lagrange contact on any pairs (ContactProjection);
+  // with or without friction.
   bool condensable() const {
     if (!hasMultipliers() || pairs.empty()) return false;
     bool obstacles = true;
     for (const auto& p : pairs) obstacles = obstacles && p.hasObstacle;
-    return obstacles || (method == ContactMethodKind::Lagrange && !frictionPair());
+    return obstacles || method == ContactMethodKind::Lagrange;
   }
   // The first pair with a friction coefficient, or null.
   const PairDefinition* frictionPair() const {

@@ -1,5 +1,6 @@
 #include "contact/ContactProjection.hpp"
 
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -15,8 +16,7 @@
 namespace choc {
 
 bool ContactProjection::applies(const ContactManager& contact) {
-  if (!contact.method().hasMultipliers() || contact.method().stiffness() != 0.0 || contact.hasFriction() ||
-      contact.numPairs() == 0)
+  if (!contact.method().hasMultipliers() || contact.method().stiffness() != 0.0 || contact.numPairs() == 0)
     return false;
   for (int p = 0; p < contact.numPairs(); ++p)
     if (!contact.pair(p).hasObstacle) return true;
@@ -49,6 +49,7 @@ void ContactProjection::build() {
       for (const auto& [j, cj] : list)
         if (i >= j) cholesky_[size_t(j) * m + i] += ci * cj;
   if (m == 0) return;
+  gram_ = cholesky_;
   std::vector<double> diag(m);
   for (int i = 0; i < m; ++i) diag[i] = cholesky_[size_t(i) * m + i];
   Teuchos::LAPACK<int, double> lapack;
@@ -90,14 +91,84 @@ void ContactProjection::project(const MultiVector& X, MultiVector& Y) const {
   }
 }
 
-void ContactProjection::rightHandSide(const CrsMatrix& W, const Vector& r, const Vector& u, MultiVector& b) {
+void ContactProjection::setMultiplierColumns(std::vector<MatrixEntry> entries, GO multiplierBase) {
+  multiplierColumns_ = std::move(entries);
+  multiplierBase_ = multiplierBase;
+  built_ = false;  // V follows each fill
+}
+
+std::vector<char> ContactProjection::key() const {
   std::vector<char> key = contact_.status();
   const int version = contact_.geometryVersion();
   const char* v = reinterpret_cast<const char*>(&version);
   key.insert(key.end(), v, v + sizeof version);
-  if (!built_ || key != key_) {
+  return key;
+}
+
+// V - C from the friction entries in the active constraints' columns, C^T V summed over the
+// ranks and LU-factored; V = C (no sliding node) leaves P_L = P.
+void ContactProjection::buildOblique() {
+  frictionEntries_.clear();
+  const int m = int(active_.size());
+  std::vector<int> activeIndex(contact_.numConstraints(), -1);
+  for (int k = 0; k < m; ++k) activeIndex[active_[k]] = k;
+  const double S = scale();
+  for (const MatrixEntry& e : multiplierColumns_) {
+    const int k = activeIndex[size_t(e.col - multiplierBase_)];
+    const LO l = map_->getLocalElement(e.row);
+    if (k >= 0 && l != Teuchos::OrdinalTraits<LO>::invalid() && e.value != 0.0)
+      frictionEntries_.push_back({l, k, -e.value / S});
+  }
+  int any = frictionEntries_.empty() ? 0 : 1, anyAll = 0;
+  Teuchos::reduceAll<int, int>(*map_->getComm(), Teuchos::REDUCE_MAX, any, Teuchos::outArg(anyAll));
+  oblique_ = anyAll != 0;
+  if (!oblique_) return;
+  // C^T V = G + C^T (V - C): the second term from this rank's rows, summed.
+  std::vector<std::vector<std::pair<int, double>>> cByRow(map_->getNodeNumElements());
+  for (const Entry& e : entries_) cByRow[size_t(e.row)].push_back({e.k, e.c});
+  std::vector<double> mine(size_t(m) * m, 0.0);
+  for (const Entry& f : frictionEntries_)
+    for (const auto& [k, c] : cByRow[size_t(f.row)]) mine[size_t(f.k) * m + k] += c * f.c;
+  ctvLU_.assign(size_t(m) * m, 0.0);
+  Teuchos::reduceAll<int, double>(*map_->getComm(), Teuchos::REDUCE_SUM, m * m, mine.data(), ctvLU_.data());
+  for (int j = 0; j < m; ++j)  // + G (its lower triangle kept)
+    for (int i = 0; i < m; ++i) ctvLU_[size_t(j) * m + i] += gram_[size_t(std::min(i, j)) * m + std::max(i, j)];
+  ctvPivots_.assign(size_t(m), 0);
+  Teuchos::LAPACK<int, double> lapack;
+  int info = 0;
+  lapack.GETRF(m, m, ctvLU_.data(), m, ctvPivots_.data(), &info);
+  if (info != 0)
+    throw NumericalError("contact: the friction of the sliding nodes makes the projected constraints singular "
+                         "(C^T V, pivot " + std::to_string(info) + ")");
+}
+
+void ContactProjection::solveCtV(std::vector<double>& y) const {
+  const int m = int(active_.size());
+  if (m == 0) return;
+  Teuchos::LAPACK<int, double> lapack;
+  int info = 0;
+  lapack.GETRS('N', m, 1, ctvLU_.data(), m, ctvPivots_.data(), y.data(), m, &info);
+}
+
+void ContactProjection::projectRows(const MultiVector& X, MultiVector& Y) const {
+  if (!oblique_) return project(X, Y);
+  Y.assign(X);
+  for (size_t j = 0; j < X.getNumVectors(); ++j) {
+    auto x = X.getData(j);
+    std::vector<double> y = transposeTimes(x.getRawPtr());
+    solveCtV(y);
+    auto out = Y.getDataNonConst(j);
+    for (const Entry& e : entries_) out[e.row] -= e.c * y[e.k];
+    for (const Entry& e : frictionEntries_) out[e.row] -= e.c * y[e.k];
+  }
+}
+
+void ContactProjection::rightHandSide(const CrsMatrix& W, const Vector& r, const Vector& u, MultiVector& b) {
+  std::vector<char> k = key();
+  if (!built_ || k != key_) {
     build();
-    key_ = std::move(key);
+    buildOblique();
+    key_ = std::move(k);
     built_ = true;
   }
   const std::vector<double> g = contact_.gaps(u);
@@ -114,7 +185,7 @@ void ContactProjection::rightHandSide(const CrsMatrix& W, const Vector& r, const
   MultiVector rhs(map_, 1);  // -r - W d0
   W.apply(d0, rhs);
   rhs.update(-1.0, r, -1.0);
-  project(rhs, b);
+  projectRows(rhs, b);
 }
 
 void ContactProjection::takeSolution(const CrsMatrix& W, const MultiVector& x, Vector& du) const {
@@ -130,7 +201,8 @@ void ContactProjection::takeSolution(const CrsMatrix& W, const MultiVector& x, V
   W.apply(du, z);
   z.update(1.0, *residual_, 1.0);
   std::vector<double> y = transposeTimes(z.getData().getRawPtr());
-  solveG(y);
+  if (oblique_) solveCtV(y);  // V dlambda = z in range(C): (C^T V) dlambda = C^T z
+  else solveG(y);
   const double S = scale();
   const int nS = contact_.numConstraints(), rank = map_->getComm()->getRank();
   std::vector<double> mine(nS, 0.0), all(nS, 0.0);

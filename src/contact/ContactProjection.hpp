@@ -8,8 +8,11 @@
 // set changes. The multipliers follow by least squares on the DOF equations,
 //     C dlambda = W du + R,   dlambda = G^-1 C^T (W du + R),
 // exact where the solve is: the same Newton iterates as the saddle-point system to the solver's
-// tolerance. Applies to Lagrange contact without friction (friction's tangent is not in span C,
-// and the node-by-node condensation, ContactCondensation, serves pairs against obstacles alone).
+// tolerance. With friction a sliding node's multiplier column is V = C + mu T (its friction force
+// grows with lambda; W carries friction's tangent): the rows are projected by the oblique
+// P_L = I - V (C^T V)^-1 C^T, which annihilates V, and (C^T V) dlambda = C^T (W du + R); GMRES
+// solves (P_L W P + sigma (I - P)) x = P_L (-R - W d0). Applies to Lagrange contact with some pair
+// between meshed bodies (ContactCondensation, node by node, serves pairs against obstacles alone).
 #pragma once
 #include <vector>
 
@@ -21,12 +24,16 @@ namespace choc {
 
 class ContactProjection : public ConstraintProjector {
  public:
-  // Lagrange multipliers (no stiffness in the matrix), no friction, some pair between meshed
-  // bodies (otherwise ContactCondensation serves).
+  // Lagrange multipliers (no stiffness in the matrix), some pair between meshed bodies
+  // (otherwise ContactCondensation serves).
   static bool applies(const ContactManager& contact);
   ContactProjection(ContactManager& contact, RCP<const Map> dofMap) : contact_(contact), map_(std::move(dofMap)) {}
 
   void project(const MultiVector& X, MultiVector& Y) const override;
+  void projectRows(const MultiVector& X, MultiVector& Y) const override;
+  // The saddle-point matrix's entries in the multipliers' columns besides -sigma C (friction's,
+  // global column multiplierBase + s; rows this rank owns), from each fill: V = C - entries / sigma.
+  void setMultiplierColumns(std::vector<MatrixEntry> entries, GO multiplierBase);
   double scale() const override { return contact_.scale(); }
   // b = P (-r - W d0) at u, for the current statuses and coefficients (C and G rebuilt when
   // they changed). Throws NumericalError when the active constraints are linearly dependent.
@@ -48,11 +55,21 @@ class ContactProjection : public ConstraintProjector {
   std::vector<int> active_;      // active constraints (indices into the manager's)
   std::vector<Entry> entries_;   // C's entries on the rows this rank owns
   std::vector<double> cholesky_; // G = L L^T, column-major, lower
+  std::vector<double> gram_;     // G's lower triangle
+  std::vector<MatrixEntry> multiplierColumns_;
+  GO multiplierBase_ = 0;
+  bool oblique_ = false;         // V != C: P_L = I - V (C^T V)^-1 C^T
+  std::vector<Entry> frictionEntries_;  // V - C on this rank's rows
+  std::vector<double> ctvLU_;    // C^T V, LU-factored (column-major)
+  std::vector<int> ctvPivots_;
+  void buildOblique();
+  void solveCtV(std::vector<double>& y) const;                 // y = (C^T V)^-1 y
   std::vector<double> d0Coef_;   // G^-1 t: d0 = C d0Coef_
   RCP<Vector> residual_;         // R of the last right-hand side
   void build();
   std::vector<double> transposeTimes(const double* x) const;  // C^T x, summed over the ranks
   void solveG(std::vector<double>& y) const;                   // y = G^-1 y
+  std::vector<char> key() const;  // what C, G and V depend on
 };
 
 }  // namespace choc

@@ -179,7 +179,7 @@ void ContactSystem::fillEntries(double aM, double aK, const std::vector<MatrixEn
   const GO nU = GO(K_->getRowMap()->getGlobalNumElements());
   std::vector<MatrixEntry> multiplierColumns;
   for (const MatrixEntry& e : entries) {
-    if (condensation_ && e.col >= nU) {
+    if ((condensation_ || projection_) && e.col >= nU) {
       multiplierColumns.push_back(e);
       continue;
     }
@@ -187,6 +187,7 @@ void ContactSystem::fillEntries(double aM, double aK, const std::vector<MatrixEn
                             Teuchos::ArrayView<const double>(&e.value, 1));
   }
   if (condensation_) condensation_->project(A_, multiplierColumns, nU);  // every row was rewritten above
+  if (projection_) projection_->setMultiplierColumns(std::move(multiplierColumns), nU);
   A_->fillComplete(map_, map_);
   filled_ = true;
   lastAM_ = aM;
@@ -196,7 +197,7 @@ void ContactSystem::fillEntries(double aM, double aK, const std::vector<MatrixEn
 }
 
 std::vector<char> ContactSystem::statusKey() const {
-  if (!contact_ || projection_) return {};  // projected: W holds no contact term
+  if (!contact_ || (projection_ && !contact_->hasFriction())) return {};  // projected: W holds no contact term
   std::vector<char> key = contact_->status();
   const int g = contact_->geometryVersion();  // the coefficients of curved obstacles' rows
   const char* b = reinterpret_cast<const char*>(&g);

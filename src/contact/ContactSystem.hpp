@@ -10,8 +10,8 @@
 // Other nonlinear forces (shock links) add their tangent on couplings declared up front.
 //   condensed multipliers:  A = P (aM M + aK K) P + sigma Q Q^T                   (DOF map)
 // when asked for and every constraint involves its slave node alone (ContactCondensation).
-//   projected multipliers:  A = aM M + aK K, solved as P A P + sigma (I - P)         (DOF map)
-// when asked for, Lagrange without friction, some pair between meshed bodies (ContactProjection:
+//   projected multipliers:  A = aM M + aK K (+ friction's tangent), solved as P_L A P + sigma (I - P)
+// when asked for, Lagrange, some pair between meshed bodies (ContactProjection; without friction
 // the matrix and its preconditioner do not depend on the contact statuses).
 #pragma once
 #include <memory>

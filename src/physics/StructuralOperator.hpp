@@ -74,7 +74,7 @@ class StructuralOperator : public ExplicitOperator {
   // (ContactCondensation: every constraint against a rigid obstacle, no friction).
   void setCondensedContact(bool on) { condense_ = on; }
   bool condensedContact() const { return condense_ && contact_ && ContactCondensation::applies(*contact_); }
-  // Lagrange between meshed bodies, no friction: the multipliers projected out (ContactProjection).
+  // Lagrange with a pair between meshed bodies: the multipliers projected out (ContactProjection).
   bool projectedContact() const {
     return condense_ && contact_ && !ContactCondensation::applies(*contact_) && ContactProjection::applies(*contact_);
   }

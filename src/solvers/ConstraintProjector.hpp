@@ -1,8 +1,10 @@
 // Linear equality constraints C^T x = t eliminated from a Krylov solve by an orthogonal
 // projector P = I - C (C^T C)^-1 C^T onto their null space. The solver multiplies by
-//     A_P = P A P + sigma (I - P)        and preconditions with     P M^-1 P + (I - P) / sigma,
+//     A_P = P_L A P + sigma (I - P)      and preconditions with     P M^-1 P + (I - P) / sigma,
 // where M^-1 is the preconditioner of A itself (built from A, so a change of constraints keeps
-// it): both symmetric positive definite when A and M^-1 are on the null space, so CG applies.
+// it). P_L, the rows' projector, is P unless the multipliers' columns V differ from C (friction:
+// P_L = I - V (C^T V)^-1 C^T, which annihilates V; range(P_L) is still null(C^T)). With P_L = P
+// both are symmetric positive definite when A and M^-1 are on the null space, so CG applies.
 // The caller writes its right-hand side in range(P) and adds the constrained part of the
 // solution itself (contact/ContactProjection.hpp).
 #pragma once
@@ -15,11 +17,14 @@ class ConstraintProjector {
   virtual ~ConstraintProjector() = default;
   // Y = P X (collective; X and Y on the solver's map, may not alias).
   virtual void project(const MultiVector& X, MultiVector& Y) const = 0;
+  // Y = P_L X (collective).
+  virtual void projectRows(const MultiVector& X, MultiVector& Y) const { project(X, Y); }
   // sigma: the scale of A (its largest diagonal entry), so that A_P is as well conditioned as A.
   virtual double scale() const = 0;
 };
 
-// Y = alpha (P B P X + c (X - P X)) + beta Y with B an operator (null: the identity).
+// Y = alpha (P_L B P X + c (X - P X)) + beta Y with B an operator (null: the identity): the
+// system's operator (c = sigma), or with P for P_L the preconditioner (c = 1 / sigma).
 class ProjectedOperator : public Operator {
  public:
   ProjectedOperator(RCP<const Operator> inner, RCP<const Map> map, const ConstraintProjector& projector,

@@ -15,7 +15,8 @@ void ProjectedOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETr
   projector_.project(X, px);  // P X
   if (inner_.is_null()) bpx.assign(px);
   else inner_->apply(px, bpx);
-  projector_.project(bpx, out);  // P B P X
+  if (inverseScale_) projector_.project(bpx, out);  // P M P X
+  else projector_.projectRows(bpx, out);            // P_L A P X
   const double c = inverseScale_ ? 1.0 / projector_.scale() : projector_.scale();
   out.update(c, X, -c, px, 1.0);  // + c (X - P X)
   Y.update(alpha, out, beta);

@@ -5,18 +5,17 @@
 //     factorisation), only up to kChangingTangentDirectUpTo, then by the regime below (the 3D
 //     TET10 rubber ball, 4,713 unknowns, mass-dominated: CG + Jacobi 0.2 s per step against
 //     KLU2's 3 s);
-//   - a matrix that is not symmetric positive definite (contact multipliers between meshed
-//     bodies with friction, friction, links; multipliers against rigid obstacles alone are
-//     condensed out of an iterative solve, leaving K's and M's regime,
-//     contact/ContactCondensation.hpp, and Lagrange's without friction projected out,
-//     contact/ContactProjection.hpp):
+//   - a matrix that is not symmetric positive definite (Continuous contact multipliers between
+//     meshed bodies, friction, links; multipliers against rigid obstacles alone are condensed out
+//     of an iterative solve, leaving K's and M's regime, contact/ContactCondensation.hpp, and
+//     Lagrange's between meshed bodies projected out, contact/ContactProjection.hpp):
 //     Direct, whatever the size (Jacobi has no diagonal to invert on a multiplier row), with
 //     the distributed package (MUMPS, when the build has it) above kAlwaysDirectUpTo: it factors
 //     on every rank where KLU2 gathers the system to rank 0 (measured on the scale scene's bars
 //     with Lagrange contact, docs/performance/direct-packages.md: at 43,308 unknowns MUMPS takes
 //     0.95 of KLU2's time on one rank and 0.61 on two, where KLU2 gains nothing); but GMRES +
 //     Jacobi when mass-dominated (theta <= kJacobiUpTo) and only a few rows are not symmetric
-//     (friction against rigid obstacles, whose multipliers an iterative solve condenses out);
+//     (friction with Lagrange multipliers, which an iterative solve condenses or projects out);
 //   - symmetric and mass-dominated (theta <= kJacobiUpTo, theta the largest ratio of a row's
 //     stiffness to its mass in the Newton matrix): CG + Jacobi, whose iterations are bounded by
 //     the condition number of D^-1 W, at most about 1 + theta;

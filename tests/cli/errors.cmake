@@ -161,11 +161,11 @@ choc_cli_reference_error(obstacle_zero_radius bad_obstacle_zero_radius.xml
   "parameter 'Analyses/impact/Contact/Pairs/interface/Obstacle/Radius' = '0': the sphere's radius must be > 0. give the radius \\[m\\]")
 choc_cli_reference_error(cg_with_contact_multipliers bad_cg_multiplier.xml
   "parameter 'Analyses/impact/Linear Solver/Method' = 'CG': the saddle-point system of contact method 'Continuous' between meshed bodies is indefinite. use Direct, GMRES or MINRES")
-# Multigrid for elasticity aggregates nodal unknowns: a Newton matrix with multiplier rows (Lagrange
-# with friction between meshed bodies; against obstacles they are condensed out, without friction
-# projected out) is refused.
+# Multigrid for elasticity aggregates nodal unknowns: a Newton matrix with multiplier rows
+# (Continuous contact between meshed bodies; Lagrange's are condensed out against obstacles and
+# projected out between meshed bodies) is refused.
 choc_cli_input_error(multigrid_with_contact_multipliers check bad_multigrid_multiplier.xml
-  "parameter 'Analyses/impact/Linear Solver/Preconditioner' = 'Multigrid': the Newton matrix of contact method 'Lagrange' between meshed bodies with friction has multiplier rows, which multigrid for elasticity does not aggregate. use the Penalty method with Multigrid, or Method = Direct or auto")
+  "parameter 'Analyses/impact/Linear Solver/Preconditioner' = 'Multigrid': the Newton matrix of contact method 'Continuous' between meshed bodies has multiplier rows, which multigrid for elasticity does not aggregate. use the Penalty method with Multigrid, or Method = Direct or auto")
 # ... but central differences make no linear solve: the same input by them is valid.
 choc_cli_test(explicit_lagrange_with_cg RC 0 STDOUT "explicit_lagrange_cg.xml is valid"
               ARGS check ${CLI_INPUTS}/explicit_lagrange_cg.xml)
