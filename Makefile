@@ -47,6 +47,9 @@ verify: build
 bench: build
 	$(PYTHON) tools/bench/bench_scale.py --build $(BUILD) --sizes --repeat 3 $(BENCH_ARGS)
 	$(PYTHON) tools/bench/bench_scale.py --build $(BUILD) --solver auto --repeat 3
+	$(PYTHON) tools/bench/bench_scale.py --build $(BUILD) --contact lagrange --repeat 3
+	$(PYTHON) tools/bench/bench_scale.py --build $(BUILD) --contact lagrange --solver auto --repeat 3
+	$(PYTHON) tools/bench/bench_scale.py --build $(BUILD) --contact lagrange --solver auto --friction 0.1 --repeat 3
 	$(PYTHON) tools/bench/bench_modal_direct.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_explicit.py --build $(BUILD) --end-time 2e-5
 	$(PYTHON) tools/bench/bench_explicit.py --build $(BUILD) --end-time 2e-5 --mesh 18 560 --ranks 2 --contact lagrange

@@ -40,6 +40,7 @@ class ProjectedOperator : public Operator {
   RCP<const Map> map_;
   const ConstraintProjector& projector_;
   bool inverseScale_;  // c = 1 / sigma (a preconditioner), else sigma
+  mutable RCP<MultiVector> px_, bpx_, out_;  // work vectors, kept between products
 };
 
 }  // namespace choc

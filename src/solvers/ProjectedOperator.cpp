@@ -11,7 +11,12 @@ ProjectedOperator::ProjectedOperator(RCP<const Operator> inner, RCP<const Map> m
 void ProjectedOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp /*mode*/, double alpha,
                               double beta) const {
   const size_t nv = X.getNumVectors();
-  MultiVector px(map_, nv), bpx(map_, nv), out(map_, nv);
+  if (px_.is_null() || px_->getNumVectors() != nv) {  // allocated once: a product a Krylov iteration
+    px_ = rcp(new MultiVector(map_, nv, false));
+    bpx_ = rcp(new MultiVector(map_, nv, false));
+    out_ = rcp(new MultiVector(map_, nv, false));
+  }
+  MultiVector &px = *px_, &bpx = *bpx_, &out = *out_;
   projector_.project(X, px);  // P X
   if (inner_.is_null()) bpx.assign(px);
   else inner_->apply(px, bpx);

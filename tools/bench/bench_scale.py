@@ -201,7 +201,7 @@ def lagrange_against_penalty(choc, deck, an, penalty_xml, series, a, tmp):
     title = f"{series}: {label} contact against penalty" + (f" (medians of {a.repeat} runs per np)" if a.repeat > 1 else "")
     tables = [{"title": title, "columns": LAGRANGE_COLUMNS, "note": NOTE}]
     chocrun.print_tables(runs, tables)
-    name = "bench_scale_lagrange" + ("_friction" if a.friction > 0 else "")
+    name = "bench_scale_lagrange" + ("_auto" if a.solver == "auto" else "") + ("_friction" if a.friction > 0 else "")
     chocrun.write_bench_json(name, "Scale: the implicit scale scene with " + label + " contact against penalty",
                              runs, tables, vars(a), a.json, choc_commit=runs[0]["choc_commit"])
     print(f"\nruns in {tmp}")
