@@ -80,16 +80,22 @@ void ContactProjection::solveG(std::vector<double>& y) const {
   lapack.POTRS('L', m, 1, cholesky_.data(), m, y.data(), m, &info);
 }
 
-void ContactProjection::project(const MultiVector& X, MultiVector& Y) const {
+// Y = X - C z (and - (V - C) z when oblique) with z = G^-1 C^T X, or (C^T V)^-1 C^T X.
+void ContactProjection::subtractColumns(const MultiVector& X, MultiVector& Y, bool oblique) const {
   Y.assign(X);
   for (size_t j = 0; j < X.getNumVectors(); ++j) {
     auto x = X.getData(j);
     std::vector<double> y = transposeTimes(x.getRawPtr());
-    solveG(y);
+    if (oblique) solveCtV(y);
+    else solveG(y);
     auto out = Y.getDataNonConst(j);
     for (const Entry& e : entries_) out[e.row] -= e.c * y[e.k];
+    if (oblique)
+      for (const Entry& e : frictionEntries_) out[e.row] -= e.c * y[e.k];
   }
 }
+
+void ContactProjection::project(const MultiVector& X, MultiVector& Y) const { subtractColumns(X, Y, false); }
 
 void ContactProjection::setMultiplierColumns(std::vector<MatrixEntry> entries, GO multiplierBase) {
   multiplierColumns_ = std::move(entries);
@@ -150,18 +156,7 @@ void ContactProjection::solveCtV(std::vector<double>& y) const {
   lapack.GETRS('N', m, 1, ctvLU_.data(), m, ctvPivots_.data(), y.data(), m, &info);
 }
 
-void ContactProjection::projectRows(const MultiVector& X, MultiVector& Y) const {
-  if (!oblique_) return project(X, Y);
-  Y.assign(X);
-  for (size_t j = 0; j < X.getNumVectors(); ++j) {
-    auto x = X.getData(j);
-    std::vector<double> y = transposeTimes(x.getRawPtr());
-    solveCtV(y);
-    auto out = Y.getDataNonConst(j);
-    for (const Entry& e : entries_) out[e.row] -= e.c * y[e.k];
-    for (const Entry& e : frictionEntries_) out[e.row] -= e.c * y[e.k];
-  }
-}
+void ContactProjection::projectRows(const MultiVector& X, MultiVector& Y) const { subtractColumns(X, Y, oblique_); }
 
 void ContactProjection::rightHandSide(const CrsMatrix& W, const Vector& r, const Vector& u, MultiVector& b) {
   std::vector<char> k = key();

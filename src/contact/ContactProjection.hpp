@@ -64,6 +64,7 @@ class ContactProjection : public ConstraintProjector {
   std::vector<int> ctvPivots_;
   void buildOblique();
   void solveCtV(std::vector<double>& y) const;                 // y = (C^T V)^-1 y
+  void subtractColumns(const MultiVector& X, MultiVector& Y, bool oblique) const;
   std::vector<double> d0Coef_;   // G^-1 t: d0 = C d0Coef_
   RCP<Vector> residual_;         // R of the last right-hand side
   void build();
