@@ -65,7 +65,9 @@ void declareNewton(ParameterList& nw) {
                 "'adaptive' until its residual is a tenth of what the residual test allows (its "
                 "tolerance of the reference, or the round-off floor; never tighter than 'Linear "
                 "Solver/Tolerance'; the Newton tests are unchanged); 'fixed' "
-                "always to 'Linear Solver/Tolerance'. A direct solver is exact either way");
+                "always to 'Linear Solver/Tolerance'. A direct solve is exact either way; GMRES "
+                "on a kept factorisation ('Linear Solver/Update Budget') stops as an iterative "
+                "solver does");
 }
 
 // Analyses/<transient>/Pressures/<name>: dead or follower, uniform or linear in X.
