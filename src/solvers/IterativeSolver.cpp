@@ -183,7 +183,7 @@ class BelosSolver : public LinearSolver {
   // default, DGKS, projects on the whole basis at once by a matrix product, which OpenBLAS
   // packs before multiplying: on the Lagrange scale scene with friction (300,300 unknowns, 18
   // iterations per solve) the packing took a third of the run, and IMGS solves the same
-  // systems in the same iterations in 0.82 of DGKS's time (0.80 of its linear-solve time).
+  // systems in the same iterations in 0.83 of DGKS's time (0.80 of its linear-solve time).
   void setGmresParameters(Teuchos::ParameterList& p) const {
     p.set("Num Blocks", std::min(maxIters_, 300));
     p.set("Orthogonalization", "IMGS");
