@@ -671,8 +671,8 @@ void DirectTransient::logFigures(const TransientSummary& sum, const Model& model
                     sum.steps, sum.newtonIterations, double(sum.newtonIterations) / std::max(1, sum.steps),
                     sum.maxNewtonPerStep, sum.activeSetIterations, f.refactorizations,
                     f.keptFactorizations > 0
-                        ? format(" (%d changes of contact status solved by GMRES on the factorisation "
-                                 "kept, see Update Budget)", f.keptFactorizations).c_str()
+                        ? format(" (%d changes of contact status solved on the factorisation kept, see "
+                                 "Update Budget)", f.keptFactorizations).c_str()
                         : "",
                     sum.failedSteps, sum.smallestStep);
   if (sum.backtracks > 0)

@@ -10,6 +10,7 @@
 #include "core/Errors.hpp"
 #include "core/DidYouMean.hpp"
 #include "core/Memory.hpp"
+#include "solvers/CapacitanceUpdate.hpp"
 #include "solvers/FactorizationBackend.hpp"
 #include "solvers/PreconditionedGmres.hpp"
 
@@ -21,8 +22,8 @@ namespace {
 // contact status while it pays.
 class KeptDirectSolver : public LinearSolver {
  public:
-  KeptDirectSolver(std::unique_ptr<FactorizationBackend> backend, double tol, int budget)
-      : backend_(std::move(backend)), tol_(tol), budget_(budget) {}
+  KeptDirectSolver(std::unique_ptr<FactorizationBackend> backend, double tol, int budget, bool capacitance)
+      : backend_(std::move(backend)), tol_(tol), budget_(budget), capacitance_(capacitance) {}
 
   // The backend's failure is the same on every rank (none waits in the next solve).
   void setMatrix(RCP<const CrsMatrix> A) override {
@@ -32,6 +33,8 @@ class KeptDirectSolver : public LinearSolver {
     const std::string failure = backend_->factor(A);
     if (!failure.empty()) reportFactorizationFailure(*A, failure);
     ++factorizations_;
+    columns_.reset(A);
+    byCapacitance_ = false;
   }
 
   // An allocation failure is out of memory. KLU2 says only that its factorisation failed, for
@@ -59,28 +62,66 @@ class KeptDirectSolver : public LinearSolver {
     stale_ = true;
     spent_ = 0;
     counted_ = false;
+    prepared_ = false;
+    byCapacitance_ = false;
   }
 
   bool mayKeepFactorization() const override { return !A_.is_null() && budget() > 0; }
-  std::vector<long long> keptState() const override { return {stale_, spent_, counted_}; }
+  // stale_, spent_, counted_, prepared_, byCapacitance_, then the capacitance form's blocks of
+  // columns (a checkpoint of a version before it has the first three).
+  std::vector<long long> keptState() const override {
+    std::vector<long long> s = {stale_, spent_, counted_, prepared_, byCapacitance_};
+    const std::vector<long long> blocks = columns_.blocks();
+    s.insert(s.end(), blocks.begin(), blocks.end());
+    return s;
+  }
+  // After setMatrix() of the factored matrix and updateMatrix() of the last one (collective):
+  // the same columns computed in the same blocks, and the last matrix prepared as it was.
   void restoreKeptState(const std::vector<long long>& s) override {
-    if (s.size() != 3) return;
+    if (s.size() < 3) return;
     stale_ = s[0] != 0;
     spent_ = int(s[1]);
     counted_ = s[2] != 0;
+    if (s.size() < 5) return;
+    std::string failure = columns_.restoreBlocks(A_->getRowMap(), s, 5, factoredSolve());
+    if (failure.empty() && s[3] != 0 && s[4] != 0)
+      prepared_ = byCapacitance_ = columns_.prepare(*A_, capacitanceColumns(), factoredSolve(), failure);
+    else
+      prepared_ = s[3] != 0;
+    if (!failure.empty()) throw NumericalError("restoring the kept factorisation: " + failure);
   }
 
-  // x = A^-1 b by the factorisation (by GMRES on the kept one while it pays, see
-  // solveByUpdate()); then, while the residual is above the tolerance, up to
-  // kRefinements steps of iterative refinement (x += A^-1 (b - A x)): a solve whose error
-  // is only the factorisation's round-off amplified by the matrix's conditioning (stiff
-  // contact and friction springs) is brought within the tolerance; a singular one is not.
+  // x = A^-1 b for a matrix set by updateMatrix(): on the kept factorisation by its capacitance
+  // form (exact, refined like a direct solve) when its columns fit, else by GMRES on it while it
+  // pays (solveByUpdate()), else by a new factorisation.
   LinearSolveStatus solve(const MultiVector& b, MultiVector& x) override {
+    if (stale_ && !prepared_ && capacitance_) {
+      prepared_ = true;
+      std::string failure;
+      byCapacitance_ = columns_.prepare(*A_, capacitanceColumns(), factoredSolve(), failure);
+      if (!failure.empty()) return failedStatus(failure);
+    }
+    if (byCapacitance_) {
+      LinearSolveStatus st = refinedSolve(b, x);
+      if (st.converged) {
+        countUpdate();
+        return st;
+      }
+      byCapacitance_ = false;  // not within the tolerance: refactor
+    }
     if (stale_ && spent_ < budget()) {
       LinearSolveStatus st = solveByUpdate(b, x);
       if (st.converged || !st.message.empty()) return st;
     }
     if (stale_) setMatrix(A_);  // the kept factorisation no longer pays: refactor
+    return refinedSolve(b, x);
+  }
+
+  // x = A^-1 b by solveOnce(); then, while the residual is above the tolerance, up to
+  // kRefinements steps of iterative refinement (x += A^-1 (b - A x)): a solve whose error
+  // is only the factorisation's round-off amplified by the matrix's conditioning (stiff
+  // contact and friction springs) is brought within the tolerance; a singular one is not.
+  LinearSolveStatus refinedSolve(const MultiVector& b, MultiVector& x) {
     LinearSolveStatus st;
     std::string failure = solveOnce(b, x);
     st.relativeResidual = failure.empty() ? relativeResidual(*A_, b, x) : NAN;
@@ -92,10 +133,7 @@ class KeptDirectSolver : public LinearSolver {
       x.update(1.0, d, 1.0);
       st.relativeResidual = relativeResidual(*A_, b, x);
     }
-    if (!failure.empty()) {
-      st.message = "direct solve failed: " + failure;
-      return st;
-    }
+    if (!failure.empty()) return failedStatus(failure);
     st.converged = std::isfinite(st.relativeResidual) && st.relativeResidual <= tol_;
     if (!st.converged && atRoundoffFloor(b, x, st.relativeResidual)) st.converged = true;
     if (!st.converged) {
@@ -165,14 +203,41 @@ class KeptDirectSolver : public LinearSolver {
     }
     st.relativeResidual = relativeResidual(*A_, b, x);
     st.converged = st.relativeResidual <= tolerance;
-    if (st.converged && !counted_) {
-      ++updates_;
-      counted_ = true;
-    }
+    if (st.converged) countUpdate();
     return st;
   }
 
-  std::string solveOnce(const MultiVector& b, MultiVector& x) { return backend_->solve(b, x); }
+  // A matrix solved on the kept factorisation counts once.
+  void countUpdate() {
+    if (counted_) return;
+    ++updates_;
+    counted_ = true;
+  }
+
+  static LinearSolveStatus failedStatus(const std::string& failure) {
+    LinearSolveStatus st;
+    st.message = "direct solve failed: " + failure;
+    return st;
+  }
+
+  // The capacitance form's columns may hold as many entries as the factors (an estimate of 8
+  // times the matrix's when the backend does not say), so that they cost no more memory than the
+  // factors and applying them no more than a solve; none when the budget is 0.
+  size_t capacitanceColumns() const {
+    if (!capacitance_ || budget() <= 0) return 0;
+    double factors = backend_->factorEntries();
+    if (!(factors > 0.0)) factors = 8.0 * double(A_->getGlobalNumEntries());
+    return size_t(factors / double(A_->getGlobalNumRows()));
+  }
+
+  CapacitanceUpdate::FactoredSolve factoredSolve() {
+    return [this](const MultiVector& b, MultiVector& x) { return backend_->solve(b, x); };
+  }
+
+  // A solve with the factorisation, through the capacitance form while A is not the factored matrix.
+  std::string solveOnce(const MultiVector& b, MultiVector& x) {
+    return byCapacitance_ ? columns_.solve(b, x, factoredSolve()) : backend_->solve(b, x);
+  }
 
   std::unique_ptr<FactorizationBackend> backend_;
   double tol_;
@@ -180,19 +245,23 @@ class KeptDirectSolver : public LinearSolver {
   bool stale_ = false;  // A_ is not the factored matrix
   int spent_ = 0;       // extra preconditioned solves spent on the current matrix
   bool counted_ = false;  // the current matrix was solved on the kept factorisation
+  bool prepared_ = false;       // the capacitance form was tried for A_
+  bool byCapacitance_ = false;  // A_ is solved by the capacitance form on the kept factorisation
+  bool capacitance_;             // 'Update Form' = capacitance
+  CapacitanceUpdate columns_;
   RCP<const CrsMatrix> A_;
 };
 
 }  // namespace
 
 std::unique_ptr<LinearSolver> makeDirectSolver(const std::string& package, double tol, int budget,
-                                               bool symmetric) {
+                                               bool symmetric, bool capacitance) {
   if (package == "MUMPS" && mumpsAvailable())
-    return std::make_unique<KeptDirectSolver>(makeMumpsBackend(symmetric), tol, budget);
+    return std::make_unique<KeptDirectSolver>(makeMumpsBackend(symmetric), tol, budget, capacitance);
   if (package == "MUMPS" || !amesos2Available(package))
     throw InputError("Linear Solver: direct package '" + package + "' is not available in this build; use " +
                      joinNames(directPackages()));
-  return std::make_unique<KeptDirectSolver>(makeAmesos2RootBackend(package), tol, budget);
+  return std::make_unique<KeptDirectSolver>(makeAmesos2RootBackend(package), tol, budget, capacitance);
 }
 
 }  // namespace choc

@@ -10,7 +10,10 @@ namespace choc {
 // refactorisation (0: always refactor; -1: by the size, see DirectSolver.cpp).
 // Throws InputError for a package this build does not have.
 // symmetric: every matrix set will be symmetric (a package may factor half of it).
+// capacitance: a kept factorisation solves changed rows by the capacitance form first
+// (solvers/CapacitanceUpdate.hpp), else by GMRES alone.
 std::unique_ptr<LinearSolver> makeDirectSolver(const std::string& package, double residualTolerance,
-                                               int budget = -1, bool symmetric = false);
+                                               int budget = -1, bool symmetric = false,
+                                               bool capacitance = true);
 
 }  // namespace choc

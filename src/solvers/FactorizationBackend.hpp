@@ -24,6 +24,8 @@ class FactorizationBackend {
   // x = A^-1 b with the last factorisation (collective). The failure's message or "".
   virtual std::string solve(const MultiVector& b, MultiVector& x) = 0;
   virtual std::string name() const = 0;
+  // The entries of the last factorisation's factors, summed over the ranks (0: unknown).
+  virtual double factorEntries() const { return 0.0; }
 };
 
 // Amesos2's `package` on rank 0 (query with amesos2Available first).

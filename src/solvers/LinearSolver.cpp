@@ -36,12 +36,21 @@ Teuchos::ParameterList linearSolverParameters() {
                 "src/solvers/FactorizationBackend.hpp");
   declareInt(p, "Update Budget", -1,
              "Method = Direct: after a change of contact status alone (same time step and "
-             "coefficients) the factorisation is kept and the changed matrix solved by GMRES "
-             "preconditioned by it (a low-rank update) until that matrix has cost this many "
-             "extra preconditioned solves, then it is factored itself; 0 always refactors; -1 "
-             "(auto): none below 5,000 unknowns, else the measured cost of a KLU2 "
-             "factorisation in solves (40 at 43,308 unknowns, 93 at 115,392)",
+             "coefficients) the factorisation is kept, and a changed matrix that 'Update Form' "
+             "does not solve is solved by GMRES preconditioned by it (a low-rank update) until "
+             "that matrix has cost this many extra preconditioned solves, then it is factored "
+             "itself; 0 always refactors (no update of either form); -1 (auto): none below "
+             "5,000 unknowns, else the measured cost of a KLU2 factorisation in solves (40 at "
+             "43,308 unknowns, 93 at 115,392)",
              Range::atLeast(-1));
+  declareChoice(p, "Update Form", "capacitance", {"capacitance", "GMRES"},
+                "Method = Direct, a kept factorisation (Update Budget): 'capacitance' solves a "
+                "matrix that differs from the factored one in a few rows exactly, by one solve "
+                "with the factorisation and a dense matrix of the changed rows (the "
+                "Sherman-Morrison-Woodbury form; each changed row's column of the inverse is "
+                "computed once and kept with the factorisation, at most as many columns as the "
+                "factors hold entries per unknown, then it refactors), GMRES when it does not "
+                "apply; 'GMRES': GMRES alone (src/solvers/CapacitanceUpdate.hpp)");
   declareChoice(p, "Preconditioner", "RILUK",
                 {"None", "RILUK", "ILUT", "Jacobi", "Gauss-Seidel", "Additive Schwarz", "Multigrid"},
                 "preconditioner of the Krylov methods: Ifpack2's (RILUK, ILUT and Gauss-Seidel act "
@@ -66,7 +75,8 @@ std::unique_ptr<LinearSolver> makeLinearSolver(const Teuchos::ParameterList& par
   if (method == "Direct" || method == "auto")  // 'auto' unresolved (no regime known): Direct
     return makeDirectSolver(params.get<std::string>("Direct Package"),
                             std::max(params.get<double>("Tolerance"), 1e-8),
-                            params.get<int>("Update Budget"), symmetric);
+                            params.get<int>("Update Budget"), symmetric,
+                            params.get<std::string>("Update Form") == "capacitance");
   return makeIterativeSolver(params, std::move(blocks));
 }
 

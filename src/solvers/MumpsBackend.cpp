@@ -51,6 +51,9 @@ class MumpsInstance {
     return f;
   }
 
+  // INFOG(29): the factors' entries (negative: in millions).
+  double factorEntries() const { return id_.infog[28] < 0 ? -1e6 * id_.infog[28] : double(id_.infog[28]); }
+
   // x = A^-1 b, the right-hand side gathered on rank 0 (MUMPS' centralised right-hand side).
   std::string solve(const MultiVector& b, MultiVector& x) {
     const auto comm = A_->getComm();
@@ -60,18 +63,17 @@ class MumpsInstance {
       importer_ = rcp(new Tpetra::Import<LO, GO>(A_->getRowMap(), rootMap_));
       importerSource_ = A_->getRowMap();
     }
-    MultiVector root(rootMap_, 1);
-    for (size_t j = 0; j < b.getNumVectors(); ++j) {
-      root.doImport(*b.getVector(j), *importer_, Tpetra::INSERT);
-      auto data = root.getDataNonConst(0);
-      id_.rhs = comm->getRank() == 0 ? data.getRawPtr() : nullptr;
-      id_.nrhs = 1;
-      id_.lrhs = MUMPS_INT(n);
-      const std::string f = run(3, "solve");
-      id_.rhs = nullptr;
-      if (!f.empty()) return f;
-      x.getVectorNonConst(j)->doExport(root, *importer_, Tpetra::INSERT);
-    }
+    // Every column in one solve phase (MUMPS blocks them: the factors are read once per block).
+    MultiVector root(rootMap_, b.getNumVectors());
+    root.doImport(b, *importer_, Tpetra::INSERT);
+    auto data = root.get1dViewNonConst();
+    id_.rhs = comm->getRank() == 0 ? data.getRawPtr() : nullptr;
+    id_.nrhs = MUMPS_INT(b.getNumVectors());
+    id_.lrhs = MUMPS_INT(n);
+    const std::string f = run(3, "solve");
+    id_.rhs = nullptr;
+    if (!f.empty()) return f;
+    x.doExport(root, *importer_, Tpetra::INSERT);
     return "";
   }
 
@@ -175,6 +177,7 @@ class MumpsBackend : public FactorizationBackend {
     return current_->factor(A);
   }
   std::string solve(const MultiVector& b, MultiVector& x) override { return current_->solve(b, x); }
+  double factorEntries() const override { return factored_ ? current_->factorEntries() : 0.0; }
   // "MUMPS", then the factorisation last made: "MUMPS (LU)" or "MUMPS (LDL^T)".
   std::string name() const override {
     if (!factored_) return "MUMPS";
