@@ -81,9 +81,10 @@ std::vector<CapacitanceUpdate::Change> CapacitanceUpdate::changes(const CrsMatri
   return E;
 }
 
-bool CapacitanceUpdate::prepare(const CrsMatrix& A, size_t maxColumns, const FactoredSolve& solveP,
-                                std::string& failure) {
+bool CapacitanceUpdate::prepare(const CrsMatrix& A, size_t maxColumns, size_t maxNew, const FactoredSolve& solveP,
+                                std::string& failure, size_t& computed) {
   failure.clear();
+  computed = 0;
   rows_.clear();
   cols_.clear();
   int local = sameGraph(A) ? 1 : 0, everywhere = 0;
@@ -101,9 +102,10 @@ bool CapacitanceUpdate::prepare(const CrsMatrix& A, size_t maxColumns, const Fac
   std::vector<GO> missing;
   for (GO row : rows_)
     if (!W_.count(row)) missing.push_back(row);
-  if (cols_.size() > maxColumns || W_.size() + missing.size() > maxColumns) return false;
+  if (cols_.size() > maxColumns || W_.size() + missing.size() > maxColumns || missing.size() > maxNew) return false;
   failure = computeColumns(A.getRowMap(), missing, solveP);
   if (!failure.empty()) return false;
+  computed = missing.size();
   return factorDense(E);
 }
 

@@ -30,9 +30,11 @@ class CapacitanceUpdate {
   // P was factored: keeps its values and forgets the columns of the previous P.
   void reset(const RCP<const CrsMatrix>& P);
   // Makes ready to solve with A (collective). False (with an empty failure) when A is not
-  // P's graph or its changed rows need more than maxColumns columns or the dense matrix is
-  // singular: the caller refactors. failure: a solve that failed.
-  bool prepare(const CrsMatrix& A, size_t maxColumns, const FactoredSolve& solveP, std::string& failure);
+  // P's graph, its changed rows need more than maxColumns columns in all or more than maxNew
+  // new ones, or the dense matrix is singular: the caller solves otherwise. failure: a solve
+  // that failed. computed: the new columns computed.
+  bool prepare(const CrsMatrix& A, size_t maxColumns, size_t maxNew, const FactoredSolve& solveP,
+               std::string& failure, size_t& computed);
   // x = A^-1 b for the prepared A (collective): one solve with P.
   std::string solve(const MultiVector& b, MultiVector& x, const FactoredSolve& solveP) const;
   // The blocks of columns computed since reset(), in order (each: its size, then its rows), and

@@ -26,6 +26,8 @@ class FactorizationBackend {
   virtual std::string name() const = 0;
   // The entries of the last factorisation's factors, summed over the ranks (0: unknown).
   virtual double factorEntries() const { return 0.0; }
+  // Right-hand sides solved in one block for the cost of one solved alone (rounded down).
+  virtual int columnsPerSolve() const { return 1; }
 };
 
 // Amesos2's `package` on rank 0 (query with amesos2Available first).
