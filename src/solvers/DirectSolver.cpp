@@ -107,7 +107,7 @@ class KeptDirectSolver : public LinearSolver {
         countUpdate();
         return st;
       }
-      byCapacitance_ = false;  // not within the tolerance: refactor
+      byCapacitance_ = false;  // not within the tolerance: GMRES on the kept factorisation, or refactor
     }
     if (stale_ && spent_ < budget()) {
       LinearSolveStatus st = solveByUpdate(b, x);
@@ -213,9 +213,9 @@ class KeptDirectSolver : public LinearSolver {
   // are bought when they cost no more than a factorisation (budget(): GMRES failing would
   // refactor), or once the GMRES iterations spent on kept factorisations since the last
   // purchase (rent_, carried across factorisations) reach their cost; the rent is then spent.
-  // The oblique sphere's sliding buys its 280 columns after a few matrices and keeps them for
-  // the rest; the scale bars' 2 changed matrices at 115,392 unknowns (a face of 256 rows, 42
-  // GMRES iterations in all) never do.
+  // The oblique sphere's contact zone grows node by node: each block is cheaper than a
+  // factorisation and bought at once; the scale bars' 2 changed matrices at 115,392 unknowns (a
+  // face of 256 rows at once, 42 GMRES iterations in all) never buy.
   std::string prepareCapacitance() {
     prepared_ = true;
     std::string failure;
