@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_LAPACK.hpp>
@@ -145,17 +144,20 @@ std::string CapacitanceUpdate::computeColumns(const RCP<const Map>& map, const s
   return "";
 }
 
-// v's entries at the global indices `at`, on every rank (the owners' values; the sums are exact).
-std::vector<double> CapacitanceUpdate::rowsOf(const Vector& v, const std::vector<GO>& at) const {
-  std::vector<double> mine(at.size(), 0.0), all(at.size(), 0.0);
-  const auto map = v.getMap();
-  const auto data = v.getData();
-  for (size_t q = 0; q < at.size(); ++q) {
-    const LO i = map->getLocalElement(at[q]);
-    if (i != Teuchos::OrdinalTraits<LO>::invalid()) mine[q] = data[i];
+// The entries of each vector of vs at the global indices `at`, on every rank, vector after
+// vector (the owners' values, in one reduction; the sums are exact).
+std::vector<double> CapacitanceUpdate::rowsOf(const std::vector<const Vector*>& vs, const std::vector<GO>& at) const {
+  std::vector<double> mine(vs.size() * at.size(), 0.0), all(mine.size(), 0.0);
+  if (mine.empty()) return all;
+  const auto map = vs.front()->getMap();
+  for (size_t j = 0; j < vs.size(); ++j) {
+    const auto data = vs[j]->getData();
+    for (size_t q = 0; q < at.size(); ++q) {
+      const LO i = map->getLocalElement(at[q]);
+      if (i != Teuchos::OrdinalTraits<LO>::invalid()) mine[j * at.size() + q] = data[i];
+    }
   }
-  if (!at.empty())
-    Teuchos::reduceAll<int, double>(*map->getComm(), Teuchos::REDUCE_SUM, int(at.size()), mine.data(), all.data());
+  Teuchos::reduceAll<int, double>(*map->getComm(), Teuchos::REDUCE_SUM, int(mine.size()), mine.data(), all.data());
   return all;
 }
 
@@ -166,14 +168,15 @@ bool CapacitanceUpdate::factorDense(const std::vector<Change>& E) {
   for (const Change& e : E) EbyCol_[indexOf(cols_, e.col) * nr + indexOf(rows_, e.row)] += e.value;
   M_.assign(nc * nc, 0.0);
   for (size_t q = 0; q < nc; ++q) M_[q * nc + q] = 1.0;
-  for (size_t j = 0; j < nr; ++j) {
-    const std::vector<double> Wc = rowsOf(*W_.at(rows_[j]), cols_);  // column j of W_c
+  std::vector<const Vector*> W;
+  for (GO row : rows_) W.push_back(W_.at(row).get());
+  const std::vector<double> Wc = rowsOf(W, cols_);  // W_c by columns (|c| x |r|)
+  for (size_t j = 0; j < nr; ++j)
     for (size_t q = 0; q < nc; ++q) {
       const double e = EbyCol_[q * nr + j];
       if (e != 0.0)
-        for (size_t i = 0; i < nc; ++i) M_[q * nc + i] += Wc[i] * e;
+        for (size_t i = 0; i < nc; ++i) M_[q * nc + i] += Wc[j * nc + i] * e;
     }
-  }
   if (nc == 0) return true;
   Teuchos::LAPACK<int, double> lapack;
   const int n = int(nc);
@@ -201,9 +204,10 @@ std::string CapacitanceUpdate::solve(const MultiVector& b, MultiVector& x, const
   Teuchos::LAPACK<int, double> lapack;
   for (size_t j = 0; j < x.getNumVectors(); ++j) {
     auto xj = x.getVectorNonConst(j);
-    std::vector<double> xc = rowsOf(*xj, cols_);
+    std::vector<double> xc = rowsOf({xj.get()}, cols_);
     int info = 0;
     lapack.GETRS('N', int(nc), 1, M_.data(), int(nc), pivots_.data(), xc.data(), int(nc), &info);
+    if (info != 0) return "the capacitance form's dense solve failed (LAPACK dgetrs info " + std::to_string(info) + ")";
     for (size_t k = 0; k < nr; ++k) {
       double y = 0.0;  // (E x_c)_k
       for (size_t q = 0; q < nc; ++q) y += EbyCol_[q * nr + k] * xc[q];

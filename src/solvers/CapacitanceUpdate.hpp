@@ -54,7 +54,7 @@ class CapacitanceUpdate {
   bool sameGraph(const CrsMatrix& A) const;
   std::vector<Change> changes(const CrsMatrix& A) const;
   std::string computeColumns(const RCP<const Map>& map, const std::vector<GO>& rows, const FactoredSolve& solveP);
-  std::vector<double> rowsOf(const Vector& v, const std::vector<GO>& at) const;
+  std::vector<double> rowsOf(const std::vector<const Vector*>& vs, const std::vector<GO>& at) const;
   bool factorDense(const std::vector<Change>& E);
 
   RCP<const CrsMatrix> P_;       // the factored matrix object (may be refilled: values_ holds P)
