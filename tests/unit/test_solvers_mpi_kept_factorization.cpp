@@ -4,8 +4,9 @@
 // I has rank <= r) to the solver's tolerance, without a new factorisation; a budget too small
 // for that rank, or a budget of 0, refactors and still gives the new matrix's solution; a
 // relaxed tolerance (the inexact Newton's) stops GMRES earlier. 'capacitance' (the default):
-// the same matrices solved exactly with no iteration and no new factorisation, and a change
-// in more rows than its columns may hold refactors.
+// the same matrices solved exactly with no iteration and no new factorisation, a change in
+// more rows than its columns may hold refactors, and columns that cost more than a
+// factorisation are bought once GMRES' iterations on the kept factorisation reach their price.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -218,6 +219,52 @@ TEST(MpiKeptFactorization, TheCapacitanceFormRestartsBitForBit) {
   EXPECT_EQ(first->keptState(), restarted->keptState());
   auto a = x.getData(0), r = xRestart.getData(0);
   for (size_t i = 0; i < x.getLocalLength(); ++i) ASSERT_EQ(a[i], r[i]) << "entry " << i;
+}
+
+// A0 with column j changed in the 5 rows whose graph holds it (j - 7, j - 1, j, j + 1, j + 7):
+// entry (i, j) += f (1 + (i - j) / 10). A rank-1 change (u e_j^T) in 5 rows: the capacitance form
+// needs 5 columns, GMRES on A0's factorisation at most 2 iterations (P^-1 A = I + w e_j^T has
+// two eigenvalues).
+RCP<CrsMatrix> columnChanged(GO j, double f) {
+  auto A = matrix({});
+  A->resumeFill();
+  for (GO i : {j - 7, j - 1, j, j + 1, j + 7}) {
+    if (!A->getRowMap()->isNodeGlobalElement(i)) continue;
+    const double v = f * (1.0 + double(i - j) / 10.0);
+    A->sumIntoGlobalValues(i, Teuchos::ArrayView<const GO>(&j, 1), Teuchos::ArrayView<const double>(&v, 1));
+  }
+  A->fillComplete();
+  return A;
+}
+
+// Rent or buy: with a budget of 3 solves the 5 columns a change of column 120 needs cost more
+// than a factorisation, so the first matrices are solved by GMRES on the kept factorisation
+// (1 or 2 iterations each, the rent); once the rent reaches 5 the columns are bought, and that
+// matrix and the next on the same rows are solved with no iteration. Every solution to 1e-10
+// of a fresh factorisation's, one factorisation in all.
+TEST(MpiKeptFactorization, GmresRentBuysTheColumnsOnceItReachesTheirPrice) {
+  auto solver = makeLinearSolver(directWithBudget(3, "capacitance"));
+  solver->setMatrix(matrix({}));
+  int rent = 0, bought = -1;
+  for (int k = 1; k <= 6; ++k) {
+    auto A = columnChanged(120, 0.5 + 0.25 * k);
+    MultiVector b(A->getRangeMap(), 1), x(A->getDomainMap(), 1), xRef(A->getDomainMap(), 1);
+    reference(A, b, xRef);
+    solver->updateMatrix(A);
+    const LinearSolveStatus st = solver->solve(b, x);
+    ASSERT_TRUE(st.converged) << st.message;
+    EXPECT_LT(relativeDifference(x, xRef), 1e-10) << "matrix " << k;
+    EXPECT_EQ(solver->factorizations(), 1) << "matrix " << k;
+    if (bought < 0 && rent < 5) {
+      EXPECT_GE(st.iterations, 1) << "matrix " << k << ": bought before the rent reached 5";
+      EXPECT_LE(st.iterations, 2) << "matrix " << k;
+      rent += st.iterations;
+    } else {
+      if (bought < 0) bought = k;
+      EXPECT_EQ(st.iterations, 0) << "matrix " << k << ": the rent " << rent << " did not buy";
+    }
+  }
+  EXPECT_GT(bought, 0) << "the columns were never bought (rent " << rent << ")";
 }
 
 // GMRES itself, with the identity as preconditioner on a diagonal matrix of eigenvalues 2, 3
