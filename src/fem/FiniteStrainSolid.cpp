@@ -513,6 +513,7 @@ void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vecto
         plastic->vonMises += w * vonMises(c);
         plastic->equivalentPlasticStrain += w * st[kJ2Alpha];
         plastic->temperature += w * st[kJ2Temperature];
+        plastic->damage += w * st[kJ2Damage];
         plastic->pressure -= w * trace(c) / 3;
       }
     } else {
@@ -527,8 +528,15 @@ void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vecto
   for (double& v : sigma) v /= volume;
   energyDensity /= volume;
   if (plastic)
-    for (double* v : {&plastic->vonMises, &plastic->equivalentPlasticStrain, &plastic->temperature, &plastic->pressure})
+    for (double* v : {&plastic->vonMises, &plastic->equivalentPlasticStrain, &plastic->temperature, &plastic->pressure,
+                      &plastic->damage})
       *v /= volume;
+}
+
+double FiniteStrainSolid::largestDamage(const double* state) const {
+  double d = 0.0;
+  for (int q = 0; q < rule().size(); ++q) d = std::max(d, state[kJ2StateSize * q + kJ2Damage]);
+  return d;
 }
 
 }  // namespace choc

@@ -103,6 +103,7 @@ struct PlasticAverages {
   double equivalentPlasticStrain = 0.0;  // alpha [-]
   double temperature = 0.0;              // Johnson-Cook's (0 for the laws without temperature)
   double pressure = 0.0;                 // -tr(sigma) / 3 [Pa]
+  double damage = 0.0;                   // Johnson-Cook's D (0 without it)
 };
 
 class FiniteStrainSolid {
@@ -126,6 +127,9 @@ class FiniteStrainSolid {
   bool plastic() const { return material_.plastic != nullptr; }
   // A plastic material whose flow stress carries a temperature (Johnson-Cook).
   bool thermal() const { return plastic() && material_.plastic->flowStress().hasTemperature(); }
+  // A plastic material that accumulates Johnson-Cook's damage, and its largest point value in a state.
+  bool damaged() const { return plastic() && material_.plastic->hasDamage(); }
+  double largestDamage(const double* state) const;
   // Finite-strain kinematics (every hyperelastic kernel; a plastic one with a finite-strain material).
   bool finiteKinematics() const { return !plastic() || material_.plastic->finiteStrain(); }
   // The numbers of state an element keeps (0 for a hyperelastic material), and their virgin values.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -78,7 +79,9 @@ FlowStress flowOf(const J2Parameters& p) {
 }  // namespace
 
 J2Plasticity::J2Plasticity(const J2Parameters& p, bool finiteStrain)
-    : p_(p), flow_(flowOf(p)), finite_(finiteStrain) {
+    : p_(p), flow_(flowOf(p)), damage_(p.damage, p.jc), finite_(finiteStrain) {
+  if (p.damage.enabled && !p.johnsonCook)
+    throw std::invalid_argument("J2 plasticity material: Johnson-Cook damage needs the Johnson-Cook model");
   mu_ = p.youngsModulus / (2 * (1 + p.poissonsRatio));
   kappa_ = p.youngsModulus / (3 * (1 - 2 * p.poissonsRatio));
   hk_ = p.kinematicHardening;
@@ -146,6 +149,17 @@ void J2Plasticity::respond(const Mat3& F, const double* old, bool withTangent, J
     respondFinite(F, old, withTangent, elasticTangent, dt, out);
   else
     respondSmall(F, old, withTangent, elasticTangent, dt, out);
+  accumulateDamage(old, dt, out);
+}
+
+void J2Plasticity::accumulateDamage(const double* old, double dt, J2Response& out) const {
+  out.state[kJ2Damage] = old[kJ2Damage];
+  const double dalpha = out.state[kJ2Alpha] - old[kJ2Alpha];
+  if (!damage_.enabled() || !(dalpha > 0)) return;
+  const double equivalent = vonMises(out.cauchy);  // the flow stress: > 0 at a yielding point
+  const double triaxiality = equivalent > 0 ? trace(out.cauchy) / (3 * equivalent) : 0.0;
+  const double failure = damage_.failureStrain(triaxiality, dalpha, dt, old[kJ2Temperature]);
+  out.state[kJ2Damage] += dalpha / std::max(failure, std::numeric_limits<double>::min());
 }
 
 // What both kinematics end a point with: alpha, the stored energy K/2 (tr eps)^2 + mu ||theta e||^2

@@ -40,6 +40,7 @@
 #include <string>
 
 #include "materials/FlowStress.hpp"
+#include "materials/JohnsonCookDamage.hpp"
 #include "materials/SymmetricEigen.hpp"
 #include "materials/Tensor2.hpp"
 
@@ -53,6 +54,7 @@ struct J2Parameters {
   FlowCurve curve;           // when not empty, the flow stress instead of yieldStress and hardening
   bool johnsonCook = false;  // the Johnson-Cook law below instead of both
   JohnsonCookParameters jc;
+  JohnsonCookDamageParameters damage;  // Johnson-Cook's cumulative damage, reported (Johnson-Cook only)
 };
 
 // The parameters of linear isotropic hardening.
@@ -64,10 +66,11 @@ inline J2Parameters linearHardening(double E, double nu, double yieldStress, dou
 
 // A point's state: the plastic tensor (C_p^-1 or eps_p: xx yy zz xy yz zx), alpha, the
 // last accepted W, P and F (for the increment's dissipated work, below), the temperature and
-// the back stress beta (xx yy zz xy yz zx; zero without kinematic hardening).
-constexpr int kJ2StateSize = 33;
+// the back stress beta (xx yy zz xy yz zx; zero without kinematic hardening) and Johnson-Cook's
+// damage D (JohnsonCookDamage.hpp; zero without it).
+constexpr int kJ2StateSize = 34;
 constexpr int kJ2Alpha = 6, kJ2Energy = 7, kJ2Stress = 8, kJ2Deformation = 17, kJ2Temperature = 26,
-              kJ2BackStress = 27;
+              kJ2BackStress = 27, kJ2Damage = 33;
 
 struct J2Response {
   Mat3 P{};                  // first Piola-Kirchhoff stress (small strain: sigma)
@@ -86,12 +89,14 @@ struct J2Response {
 class J2Plasticity {
  public:
   // Throws std::invalid_argument (naming the value) for E <= 0, nu outside (-1, 0.5),
-  // sigma_y <= 0, H < 0 or H_k < 0, H_k > 0 in finite strain, and for a flow curve or
-  // Johnson-Cook parameters out of range.
+  // sigma_y <= 0, H < 0 or H_k < 0, H_k > 0 in finite strain, for a flow curve or
+  // Johnson-Cook parameters out of range, and for damage without Johnson-Cook's flow stress.
   J2Plasticity(const J2Parameters& p, bool finiteStrain);
   bool finiteStrain() const { return finite_; }
   const J2Parameters& parameters() const { return p_; }
   const FlowStress& flowStress() const { return flow_; }
+  // Johnson-Cook's damage is accumulated in the state (kJ2Damage).
+  bool hasDamage() const { return damage_.enabled(); }
   double shearModulus() const { return mu_; }
   double bulkModulus() const { return kappa_; }
   // The state of a virgin point.
@@ -118,10 +123,13 @@ class J2Plasticity {
                     J2Response& out) const;
   void finishPoint(const Mat3& F, const double* old, const Return& r, double tr, double normE,
                    J2Response& out, const double* storedEnergy = nullptr) const;
+  // D_n + d alpha / eps_f at the new Cauchy stress (JohnsonCookDamage.hpp) into out.state.
+  void accumulateDamage(const double* old, double dt, J2Response& out) const;
   void finiteTangent(const SymmetricEigen& eig, const double* x, const double* n, double theta, double thetabar,
                      const Mat3& FG, const Mat3& Fi, J2Response& out) const;
   J2Parameters p_;
   FlowStress flow_;
+  JohnsonCookDamage damage_;
   bool finite_;
   double mu_, kappa_;
   double hk_ = 0.0;  // H_k

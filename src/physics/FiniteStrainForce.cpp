@@ -12,6 +12,8 @@
 
 #include "core/CollectiveFailure.hpp"
 #include "core/Errors.hpp"
+#include "core/Format.hpp"
+#include "core/Log.hpp"
 #include "fem/ElementFrequencyBound.hpp"
 #include "physics/Model.hpp"
 
@@ -106,6 +108,7 @@ void FiniteStrainForce::layoutArchive(const Mesh& mesh,
     if (n == 0) continue;
     plastic_ = true;
     thermal_ = thermal_ || kernels[size_t(b)]->thermal();
+    damage_ = damage_ || kernels[size_t(b)]->damaged();
     globalState_[size_t(ge)] = globalStateSize_;
     globalStateSize_ += size_t(n);
   }
@@ -119,6 +122,31 @@ void FiniteStrainForce::commit() {
   Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_SUM, trialWork_, Teuchos::outArg(work));
   plasticWork_ += work;
   trialValid_ = false;
+  if (damage_ && !failurePredicted_) reportPredictedFailure();
+}
+
+// The first committed state in which a point's damage reaches 1: one line on the log naming the
+// element (the lowest-numbered among those whose largest point damage is the largest of all).
+void FiniteStrainForce::reportPredictedFailure() {
+  double local = 0.0;
+  for (const Element& e : elements_)
+    if (e.owner) local = std::max(local, e.kernel->largestDamage(committed_.data() + e.state));
+  const Comm& comm = *K0_->getComm();
+  double largest = 0.0;
+  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MAX, local, Teuchos::outArg(largest));
+  if (!(largest >= 1.0)) return;
+  failurePredicted_ = true;
+  int first = std::numeric_limits<int>::max(), mine = first;
+  for (const Element& e : elements_)
+    if (e.owner && e.kernel->largestDamage(committed_.data() + e.state) == largest) mine = std::min(mine, e.number);
+  Teuchos::reduceAll<int, int>(comm, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(first));
+  std::string line;
+  for (const Element& e : elements_)
+    if (e.owner && e.number == first)
+      line = format("damage: Johnson-Cook's D reached %.4g at t = %.6g s in ", largest, committedTime_) +
+             describe(e, "failure predicted there (reported only: no softening, no erosion)");
+  line = collectiveFailure(comm, line);
+  if (isRootRank()) log() << line << "\n";
 }
 
 // Each element's committed state by its owner, summed over the ranks into one array in global
@@ -353,6 +381,7 @@ std::vector<std::string> FiniteStrainForce::elementFieldNames() const {
   names.push_back("STRAIN_ENERGY_DENSITY");
   if (plastic_) names.insert(names.end(), {"VON_MISES", "EQ_PLASTIC_STRAIN", "PRESSURE"});
   if (thermal_) names.push_back("TEMPERATURE");
+  if (damage_) names.push_back("DAMAGE");
   return names;
 }
 
@@ -382,6 +411,7 @@ void FiniteStrainForce::elementFields(const Vector& u, std::vector<std::vector<d
     values[size_t(stresses + 2)][size_t(e.number)] = pa.equivalentPlasticStrain;
     values[size_t(stresses + 3)][size_t(e.number)] = pa.pressure;
     if (thermal_) values[size_t(stresses + 4)][size_t(e.number)] = pa.temperature;
+    if (damage_) values[size_t(stresses + (thermal_ ? 5 : 4))][size_t(e.number)] = pa.damage;
   }
   throwIfFailed(failure);
 }

@@ -74,7 +74,8 @@ class FiniteStrainForce : public InternalForce {
   // (and SIGMA_YZ, SIGMA_ZX in 3D; axisymmetric: XX radial, YY axial, ZZ hoop, XY the rz
   // shear), STRAIN_ENERGY_DENSITY (the stored elastic energy), and with plastic blocks
   // VON_MISES, EQ_PLASTIC_STRAIN and PRESSURE (-tr sigma / 3), with Johnson-Cook blocks
-  // TEMPERATURE (0 on the other blocks); plastic blocks' values are those their state records at
+  // TEMPERATURE, with Johnson-Cook damage DAMAGE (the element's average of its points' D; 0 on
+  // the other blocks); plastic blocks' values are those their state records at
   // the last accepted step. On the nonlinear blocks, each element by the rank owning its first node.
   std::vector<std::string> elementFieldNames() const override;
   std::vector<char> elementFieldBlocks() const override { return finiteBlocks_; }
@@ -140,6 +141,9 @@ class FiniteStrainForce : public InternalForce {
   mutable double trialTime_ = 0.0;
   bool timeKnown_ = false;
   bool thermal_ = false;  // a block's flow stress carries a temperature
+  bool damage_ = false;   // a block accumulates Johnson-Cook's damage
+  bool failurePredicted_ = false;  // a point's damage reached 1 (logged once)
+  void reportPredictedFailure();
   bool hourglass_ = false;  // a block has one-point elements
   bool linearPart_ = true;  // K_lin has a nonzero value (else its products are skipped)
   static bool anyNonzero(const CrsMatrix& K);

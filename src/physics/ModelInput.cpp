@@ -48,6 +48,23 @@ void declareJohnsonCookParameters(ParameterList& mat) {
                 Range::closed(0.0, 1.0));
 }
 
+// eps_f = (D1 + D2 exp(D3 sigma*)) (1 + D4 ln rate*) (1 + D5 T*), D = sum d alpha / eps_f
+// (JohnsonCookDamage.hpp).
+void declareDamageParameters(ParameterList& mat) {
+  declareChoice(mat, "Damage", "none", {"none", "Johnson-Cook"},
+                "'Johnson-Cook' materials: 'Johnson-Cook' accumulates Johnson and Cook's damage D = sum "
+                "d alpha / eps_f, eps_f = (D1 + D2 exp(D3 sigma*)) (1 + D4 ln rate*) (1 + D5 T*), sigma* the "
+                "stress triaxiality, rate* and T* the flow stress's; reported (the DAMAGE element variable, "
+                "the log when D first reaches 1), not coupled: no softening, no element erosion");
+  const char* terms[5][2] = {{"D1", "the failure strain's constant term [-] (>= 0)"},
+                             {"D2", "the triaxiality term's factor [-] (>= 0; D1 + D2 > 0)"},
+                             {"D3", "the triaxiality exponent's factor [-] (usually negative)"},
+                             {"D4", "the strain-rate coefficient [-] (>= 0)"},
+                             {"D5", "the temperature coefficient [-] (>= 0)"}};
+  for (const auto& t : terms)
+    declareDouble(mat, std::string("Johnson-Cook ") + t[0], 0.0, std::string("'Damage' = 'Johnson-Cook': ") + t[1]);
+}
+
 void declareMaterialParameters(ParameterList& model) {
   ParameterList& mat = declareNamedSublists(model, "Materials", "isotropic elastic materials, by name");
   declareRequiredDouble(mat, "Young's Modulus", "E [Pa]", Range::positive());
@@ -82,6 +99,7 @@ void declareMaterialParameters(ParameterList& model) {
                 "increasing, sigma non-decreasing, constant beyond the last point), instead of 'Yield "
                 "Stress' and 'Hardening Modulus'");
   declareJohnsonCookParameters(mat);
+  declareDamageParameters(mat);
 }
 
 void declareSectionParameters(ParameterList& blk) {

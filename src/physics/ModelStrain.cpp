@@ -46,6 +46,11 @@ std::shared_ptr<const FiniteStrainSolid> Model::strainKernel(const ElementBlock&
   ElementFormulation form{fbar, bp.get<std::string>("Formulation") == "one-point",
                           bp.get<double>("Hourglass Coefficient")};
   if (form.onePoint) checkOnePoint(blk, finite || plastic);
+  if (mp.get<std::string>("Damage") != "none" && law != "Johnson-Cook")
+    throwInput(inputFile_, "Model/Materials/" + materialName + "/Damage", mp.get<std::string>("Damage"),
+               "Johnson-Cook damage needs the Johnson-Cook flow stress (its reference rate and temperatures); the "
+               "material's 'Model' is '" + law + "'",
+               "set 'Model' = 'Johnson-Cook', or 'Damage' = 'none'");
   if (!finite && !plastic) return nullptr;
   if (plastic && finite && mp.get<double>("Kinematic Hardening Modulus") > 0)
     throwInput(inputFile_, "Model/Materials/" + materialName + "/Kinematic Hardening Modulus",
@@ -86,6 +91,19 @@ void Model::checkOnePoint(const ElementBlock& blk, bool elementByElement) const 
                "set 'Strain' = 'finite' (and a hyperelastic material), or 'Formulation' = 'standard'");
 }
 
+namespace {
+
+JohnsonCookDamageParameters damageParameters(const Teuchos::ParameterList& mp) {
+  JohnsonCookDamageParameters d;
+  d.enabled = mp.get<std::string>("Damage") == "Johnson-Cook";
+  d.D1 = mp.get<double>("Johnson-Cook D1"), d.D2 = mp.get<double>("Johnson-Cook D2");
+  d.D3 = mp.get<double>("Johnson-Cook D3"), d.D4 = mp.get<double>("Johnson-Cook D4");
+  d.D5 = mp.get<double>("Johnson-Cook D5");
+  return d;
+}
+
+}  // namespace
+
 // A 'J2 plasticity' or 'Johnson-Cook' material's parameters (J2Plasticity checks their ranges).
 J2Parameters Model::plasticParameters(const std::string& materialName, const Teuchos::ParameterList& mp) const {
   const std::string path = "Model/Materials/" + materialName + "/";
@@ -104,8 +122,10 @@ J2Parameters Model::plasticParameters(const std::string& materialName, const Teu
     jc.specificHeat = mp.get<double>("Specific Heat");
     jc.taylorQuinney = mp.get<double>("Taylor-Quinney Coefficient");
     jc.density = mp.get<double>("Density");
+    p.damage = damageParameters(mp);
     return p;
   }
+
   const std::string curve = mp.get<std::string>("Flow Curve");
   if (curve.empty()) {
     if (!(p.yieldStress > 0))

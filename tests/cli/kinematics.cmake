@@ -56,6 +56,11 @@ choc_cli_script(taylor_bar 300)
 # plastic strain and temperature against the published values widened by the mesh's own error,
 # the temperature as the plastic work's heat, 2 ranks equal 1 (scripts/taylor_bar_johnson_cook.py).
 choc_cli_script(taylor_bar_johnson_cook 300)
+# Johnson-Cook damage on that bar (5 x 51): not coupled (the histories equal the run without,
+# byte for byte), a constant failure strain's D = alpha / D1 on every element, the log's line when
+# D first reaches 1, 0 <= D <= alpha / D1 with 4340 steel's fit, 2 ranks equal 1
+# (scripts/johnson_cook_damage.py).
+choc_cli_script(johnson_cook_damage 120)
 # F-bar in the implicit schemes (its consistent tangent): the Taylor bar held on the wall, its first
 # 2 us by average acceleration against central differences within the implicit run's Richardson
 # estimate, at most 4 Newton corrections per step, the standard QUAD4 locking, 2 ranks equal 1
