@@ -56,7 +56,12 @@ choc_cli_script(taylor_bar 300)
 # plastic strain and temperature against the published values widened by the mesh's own error,
 # the temperature as the plastic work's heat, 2 ranks equal 1 (scripts/taylor_bar_johnson_cook.py).
 choc_cli_script(taylor_bar_johnson_cook 300)
-# Johnson-Cook damage on that bar (5 x 51): not coupled (the histories equal the run without,
+# The Johnson-Cook bar in 3D (the quarter, HEX8 F-bar, n = 2 and 4): length, diameter, largest
+# plastic strain and temperature on n = 4 against the published 3D values widened by the mesh's own
+# error, the quarter against the axisymmetric bar of the same element size, no energy created, 2
+# ranks equal 1 (scripts/taylor_bar_johnson_cook_3d.py).
+choc_cli_script(taylor_bar_johnson_cook_3d 400)
+# Johnson-Cook damage on the axisymmetric bar (5 x 51): not coupled (the histories equal the run without,
 # byte for byte), a constant failure strain's D = alpha / D1 on every element, the log's line when
 # D first reaches 1, 0 <= D <= alpha / D1 with 4340 steel's fit, 2 ranks equal 1
 # (scripts/johnson_cook_damage.py).

@@ -730,14 +730,15 @@ def turned_mesh(src_msh, out_msh, R):
     return out_msh
 
 
-def taylor_bar_3d_deck(work, n=2, full=0, R=None, end=None, points=("EDGE", "REAR", "CENTRE")):
-    """input/taylor_bar_3d.xml on meshes/taylor_bar_3d.geo with n elements across the radius (the
-    mesh written into `work`), Exodus off: the quarter, or with `full` the whole bar (no symmetry
-    planes, the `points`' three components recorded); with R (a rotation matrix) the bar, its wall
-    and its velocity turned as a rigid whole (the frame-invariance tests); `end` the end time.
-    Returns the deck tree."""
+def taylor_bar_3d_deck(work, n=2, full=0, R=None, end=None, points=("EDGE", "REAR", "CENTRE"),
+                       deck="taylor_bar_3d.xml", speed=227):
+    """input/`deck` (a bar flying at `speed` along -y) on meshes/taylor_bar_3d.geo with n elements
+    across the radius (the mesh written into `work`), Exodus off: the quarter, or with `full` the
+    whole bar (no symmetry planes, the `points`' three components recorded); with R (a rotation
+    matrix) the bar, its wall and its velocity turned as a rigid whole (the frame-invariance tests);
+    `end` the end time. Returns the deck tree."""
     msh = gmsh_mesh("taylor_bar_3d.geo", os.path.join(work, f"bar3d_n{n}_full{full}.msh"), n=n, full=full)
-    d = load_deck(input_path("taylor_bar_3d.xml"))
+    d = load_deck(input_path(deck))
     set_param(d, "Analyses/impact/Exodus Interval", 0)
     if full:
         remove_sublist(d, "Model/Dirichlet")
@@ -752,7 +753,7 @@ def taylor_bar_3d_deck(work, n=2, full=0, R=None, end=None, points=("EDGE", "REA
         set_param(d, ic + "/Field", "Rigid Velocity")
         remove_param(d, ic + "/Components")
         remove_param(d, ic + "/Value")
-        set_param(d, ic + "/Translation", vec(R @ [0, -227, 0]), create=True)
+        set_param(d, ic + "/Translation", vec(R @ [0, -speed, 0]), create=True)
     set_param(d, "Mesh/File", msh)
     return d
 
