@@ -23,6 +23,10 @@ solved directly, to the solvers' tolerances.
     against CG + Jacobi, to 1e-7 of each peak, and its 9 checks pass; its node-to-face analysis by
     CG + Jacobi on the mesh renumbered (chocrun.renumbered_mesh) equals the drawn one to 1e-8 of
     each peak (Newton's relative tolerance; the order of the sums changes).
+  - The sparse factorisation of G and C^T V (ReplicatedSparseLU, used from 1,000 active
+    constraints) forced from the first (CHOC_TEST_SPARSE_GRAM_FROM=1): the bars by CG + Jacobi,
+    the sliding bars by GMRES on 1 and 2 ranks (C^T V's friction entries gathered from both) and
+    the non-matching meshes, against Direct to the same bounds.
 usage: projected_contact.py CHOC SOURCE_DIR WORK_DIR"""
 import os
 import re
@@ -38,6 +42,7 @@ import chocrun  # noqa: E402
 from bench_kept_factorization import scene_deck  # noqa: E402  (the benchmark's scene)
 
 PROJECTED = "projected out of the Newton system"
+SPARSE = {"CHOC_TEST_SPARSE_GRAM_FROM": "1"}  # G and C^T V factored sparse from one active constraint
 failures = []
 
 
@@ -75,8 +80,9 @@ def bars():
     columns = ["A:DZ", "A:VZ", "C:DZ", "interface:force", "energy:total"]
     direct = figures(run_deck(choc, work, "direct", deck("Direct")))
     print(f"Direct: {direct[0]} factorisations, {direct[1]} impacts")
-    for name, prec, ranks in (("cg_jacobi", "Jacobi", 1), ("cg_multigrid", "Multigrid", 1), ("cg_jacobi_np2", "Jacobi", 2)):
-        log = run_deck(choc, work, name, deck("CG", prec), ranks)
+    for name, prec, ranks, env in (("cg_jacobi", "Jacobi", 1, None), ("cg_multigrid", "Multigrid", 1, None),
+                                   ("cg_jacobi_np2", "Jacobi", 2, None), ("cg_jacobi_sparse", "Jacobi", 1, SPARSE)):
+        log = run_deck(choc, work, name, deck("CG", prec), ranks, env)
         f, impacts = figures(log)
         print(f"{name}: {f} preconditioner set-ups, {impacts} impacts")
         if PROJECTED not in log:
@@ -100,8 +106,9 @@ def sliding():
     print(f"friction: the largest tangential force over the largest normal force {ratio:.4f} (mu = 0.1)")
     if not abs(ratio - 0.1) <= 1e-3:
         failures.append(f"friction: the nodes do not slide (tangential over normal force {ratio:.4f}, mu = 0.1)")
-    for name, ranks in (("friction_gmres", 1), ("friction_gmres_np2", 2)):
-        log = run_deck(choc, work, name, deck("GMRES", "Jacobi", friction=0.1), ranks)
+    for name, ranks, env in (("friction_gmres", 1, None), ("friction_gmres_np2", 2, None),
+                             ("friction_gmres_sparse", 1, SPARSE), ("friction_gmres_sparse_np2", 2, SPARSE)):
+        log = run_deck(choc, work, name, deck("GMRES", "Jacobi", friction=0.1), ranks, env)
         if PROJECTED not in log:
             failures.append(f"{name}: the log does not say the pressures are projected out")
         compare(os.path.join(work, "friction_direct", "impact.history.csv"),
@@ -120,15 +127,16 @@ def nonmatching():
     for an in chocrun.analyses(d):
         chocrun.set_param(d, f"Analyses/{an}/Linear Solver/Method", "CG")
         chocrun.set_param(d, f"Analyses/{an}/Linear Solver/Preconditioner", "Jacobi", create=True)
-    log = run_deck(choc, work, "nonmatching_cg", chocrun.deck_text(d))
-    if log.count(PROJECTED) != 2:
-        failures.append("non-matching: the log does not say both analyses' pressures are projected out")
-    m = re.search(r"(\d+) checks, (\d+) NOOK", log)
-    if not m or m.group(2) != "0":
-        failures.append("non-matching by CG: its checks do not all pass")
-    for an in chocrun.analyses(d):
-        compare(chocrun.history_path(direct, an), chocrun.history_path(os.path.join(work, "nonmatching_cg"), an),
-                ["N1:DZ", "interface:force", "energy:total"], f"non-matching '{an}', CG + Jacobi against Direct")
+    for name, env in (("nonmatching_cg", None), ("nonmatching_cg_sparse", SPARSE)):
+        log = run_deck(choc, work, name, chocrun.deck_text(d), env=env)
+        if log.count(PROJECTED) != 2:
+            failures.append(f"{name}: the log does not say both analyses' pressures are projected out")
+        m = re.search(r"(\d+) checks, (\d+) NOOK", log)
+        if not m or m.group(2) != "0":
+            failures.append(f"{name}: its checks do not all pass")
+        for an in chocrun.analyses(d):
+            compare(chocrun.history_path(direct, an), chocrun.history_path(os.path.join(work, name), an),
+                    ["N1:DZ", "interface:force", "energy:total"], f"non-matching '{an}', {name} against Direct")
 
 
 def renumbered():
