@@ -1,6 +1,7 @@
 #include "contact/ContactProjection.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <map>
 #include <string>
 
@@ -14,6 +15,19 @@
 #include "core/Errors.hpp"
 
 namespace choc {
+
+namespace {
+
+// 1,000 by measurement (docs/performance/direct-packages.md, "Many active constraints"); test
+// hook: CHOC_TEST_SPARSE_GRAM_FROM=N (the tests of the sparse path on small scenes).
+int initialSparseFrom() {
+  const char* e = std::getenv("CHOC_TEST_SPARSE_GRAM_FROM");
+  return e && *e ? std::max(0, std::atoi(e)) : 1000;
+}
+
+}  // namespace
+
+int ContactProjection::sparseFrom = initialSparseFrom();
 
 bool ContactProjection::applies(const ContactManager& contact) {
   if (!contact.method().hasMultipliers() || contact.method().stiffness() != 0.0 || contact.numPairs() == 0)
@@ -29,7 +43,7 @@ void ContactProjection::build() {
   const auto& cs = contact_.constraints();
   active_.clear();
   entries_.clear();
-  std::map<GO, std::vector<std::pair<int, double>>> byDof;  // DOF -> (active constraint, coefficient)
+  ConstraintsByDof byDof;
   for (int s = 0; s < int(cs.size()); ++s) {
     if (!contact_.status()[s]) continue;
     const int k = int(active_.size());
@@ -42,6 +56,31 @@ void ContactProjection::build() {
       if (l != Teuchos::OrdinalTraits<LO>::invalid()) entries_.push_back({l, k, coef});
     }
   }
+  const int m = int(active_.size());
+  sparse_ = m >= sparseFrom;
+  if (sparse_)
+    factorSparseGram(byDof);
+  else
+    factorDenseGram(byDof);
+}
+
+void ContactProjection::throwDependent(int k) const {
+  const auto& cs = contact_.constraints();
+  throw NumericalError("contact: the active constraints are linearly dependent" +
+                       (k >= 0 ? " at slave node " + std::to_string(cs[active_[size_t(k)]].geometry.slaveNode + 1) : "") +
+                       " (two slave nodes on one point, or a constraint along fixed components)");
+}
+
+void ContactProjection::factorSparseGram(const ConstraintsByDof& byDof) {
+  gramEntries_.clear();
+  cholesky_.clear(), gram_.clear();
+  for (const auto& [dof, list] : byDof)
+    for (const auto& [i, ci] : list)
+      for (const auto& [j, cj] : list) gramEntries_.push_back({i, j, ci * cj});
+  if (!sparseG_.factor(int(active_.size()), gramEntries_)) throwDependent(-1);
+}
+
+void ContactProjection::factorDenseGram(const ConstraintsByDof& byDof) {
   const int m = int(active_.size());
   cholesky_.assign(size_t(m) * size_t(m), 0.0);
   for (const auto& [dof, list] : byDof)
@@ -58,10 +97,7 @@ void ContactProjection::build() {
   // A pivot far below its diagonal: the constraint is (nearly) a combination of the others.
   for (int i = 0; info == 0 && i < m; ++i)
     if (!(cholesky_[size_t(i) * m + i] * cholesky_[size_t(i) * m + i] > 1e-12 * diag[i])) info = i + 1;
-  if (info != 0)
-    throw NumericalError("contact: the active constraints are linearly dependent at slave node " +
-                         std::to_string(cs[active_[size_t(std::max(info, 1) - 1)]].geometry.slaveNode + 1) +
-                         " (two slave nodes on one point, or a constraint along fixed components)");
+  if (info != 0) throwDependent(std::max(info, 1) - 1);
 }
 
 std::vector<double> ContactProjection::transposeTimes(const double* x) const {
@@ -75,6 +111,7 @@ std::vector<double> ContactProjection::transposeTimes(const double* x) const {
 void ContactProjection::solveG(std::vector<double>& y) const {
   const int m = int(active_.size());
   if (m == 0) return;
+  if (sparse_) return sparseG_.solve(y);
   Teuchos::LAPACK<int, double> lapack;
   int info = 0;
   lapack.POTRS('L', m, 1, cholesky_.data(), m, y.data(), m, &info);
@@ -129,6 +166,14 @@ void ContactProjection::buildOblique() {
   Teuchos::reduceAll<int, int>(*map_->getComm(), Teuchos::REDUCE_MAX, any, Teuchos::outArg(anyAll));
   oblique_ = anyAll != 0;
   if (!oblique_) return;
+  if (sparse_) {  // C^T V = G + C^T (V - C)
+    std::vector<ReplicatedSparseLU::Entry> ctv = frictionCoupling();
+    ctv.insert(ctv.end(), gramEntries_.begin(), gramEntries_.end());
+    if (!sparseCtV_.factor(m, ctv))
+      throw NumericalError("contact: the friction of the sliding nodes makes the projected constraints singular "
+                           "(C^T V, sparse)");
+    return;
+  }
   // C^T V = G + C^T (V - C): the second term from this rank's rows, summed.
   std::vector<std::vector<std::pair<int, double>>> cByRow(map_->getNodeNumElements());
   for (const Entry& e : entries_) cByRow[size_t(e.row)].push_back({e.k, e.c});
@@ -148,9 +193,44 @@ void ContactProjection::buildOblique() {
                          "(C^T V, pivot " + std::to_string(info) + ")");
 }
 
+std::vector<ReplicatedSparseLU::Entry> ContactProjection::frictionCoupling() const {
+  std::vector<std::vector<std::pair<int, double>>> cByRow(map_->getNodeNumElements());
+  for (const Entry& e : entries_) cByRow[size_t(e.row)].push_back({e.k, e.c});
+  std::map<std::pair<int, int>, double> mine;
+  for (const Entry& f : frictionEntries_)
+    for (const auto& [k, c] : cByRow[size_t(f.row)]) mine[{k, f.k}] += c * f.c;
+  // Every rank's entries to every rank: the counts, then the (row, col) pairs and the values.
+  std::vector<int> ij;
+  std::vector<double> values;
+  for (const auto& [key, v] : mine) ij.push_back(key.first), ij.push_back(key.second), values.push_back(v);
+  const Comm& comm = *map_->getComm();
+  const int ranks = comm.getSize(), count = int(values.size());
+  std::vector<int> counts(size_t(ranks), 0);
+  Teuchos::gatherAll<int, int>(comm, 1, &count, ranks, counts.data());
+  int total = 0;
+  for (int c : counts) total += c;
+  std::vector<double> allValues(size_t(total), 0.0);
+  std::vector<int> allIJ(size_t(2 * total), 0);
+  int offset = 0;
+  for (int r = 0; r < comm.getRank(); ++r) offset += counts[size_t(r)];
+  // Each rank writes its slice, the others zeros: a sum is the concatenation.
+  std::copy(values.begin(), values.end(), allValues.begin() + offset);
+  std::copy(ij.begin(), ij.end(), allIJ.begin() + 2 * offset);
+  std::vector<double> sumValues(allValues.size(), 0.0);
+  std::vector<int> sumIJ(allIJ.size(), 0);
+  if (total > 0) {
+    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, total, allValues.data(), sumValues.data());
+    Teuchos::reduceAll<int, int>(comm, Teuchos::REDUCE_SUM, 2 * total, allIJ.data(), sumIJ.data());
+  }
+  std::vector<ReplicatedSparseLU::Entry> out;
+  for (int t = 0; t < total; ++t) out.push_back({sumIJ[size_t(2 * t)], sumIJ[size_t(2 * t + 1)], sumValues[size_t(t)]});
+  return out;
+}
+
 void ContactProjection::solveCtV(std::vector<double>& y) const {
   const int m = int(active_.size());
   if (m == 0) return;
+  if (sparse_) return sparseCtV_.solve(y);
   Teuchos::LAPACK<int, double> lapack;
   int info = 0;
   lapack.GETRS('N', m, 1, ctvLU_.data(), m, ctvPivots_.data(), y.data(), m, &info);

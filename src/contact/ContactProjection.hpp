@@ -14,11 +14,13 @@
 // solves (P_L W P + sigma (I - P)) x = P_L (-R - W d0). Applies to Lagrange contact with some pair
 // between meshed bodies (ContactCondensation, node by node, serves pairs against obstacles alone).
 #pragma once
+#include <map>
 #include <vector>
 
 #include "contact/ContactManager.hpp"
 #include "core/TpetraTypes.hpp"
 #include "solvers/ConstraintProjector.hpp"
+#include "solvers/ReplicatedSparseLU.hpp"
 
 namespace choc {
 
@@ -41,6 +43,10 @@ class ContactProjection : public ConstraintProjector {
   // du = P x + d0; the pressures corrected (collective).
   void takeSolution(const CrsMatrix& W, const MultiVector& x, Vector& du) const;
   int activeConstraints() const { return int(active_.size()); }
+  // From this many active constraints G and C^T V are factored sparse (their dense factors take
+  // m^2 doubles and m^3 / 3 operations on every rank); settable for the tests of both paths.
+  static int sparseFrom;
+  bool sparse() const { return sparse_; }
 
  private:
   struct Entry {
@@ -54,8 +60,17 @@ class ContactProjection : public ConstraintProjector {
   bool built_ = false;
   std::vector<int> active_;      // active constraints (indices into the manager's)
   std::vector<Entry> entries_;   // C's entries on the rows this rank owns
-  std::vector<double> cholesky_; // G = L L^T, column-major, lower
-  std::vector<double> gram_;     // G's lower triangle
+  std::vector<double> cholesky_; // G = L L^T, column-major, lower (dense)
+  std::vector<double> gram_;     // G's lower triangle (dense)
+  bool sparse_ = false;          // G and C^T V factored sparse (from sparseFrom constraints)
+  std::vector<ReplicatedSparseLU::Entry> gramEntries_;  // G, both triangles (sparse)
+  ReplicatedSparseLU sparseG_, sparseCtV_;
+  using ConstraintsByDof = std::map<GO, std::vector<std::pair<int, double>>>;  // DOF -> (constraint, coefficient)
+  void factorDenseGram(const ConstraintsByDof& byDof);
+  void factorSparseGram(const ConstraintsByDof& byDof);
+  void throwDependent(int k) const;
+  // C^T (V - C) from this rank's rows, as (i, j, value), gathered from every rank (sparse path).
+  std::vector<ReplicatedSparseLU::Entry> frictionCoupling() const;
   std::vector<MatrixEntry> multiplierColumns_;
   GO multiplierBase_ = 0;
   bool oblique_ = false;         // V != C: P_L = I - V (C^T V)^-1 C^T
