@@ -68,3 +68,6 @@ gmsh -3 -format msh41 "$here/copper_bar.geo" -o "$here/copper_bar.msh" > /dev/nu
 # The compact block of the direct solvers' benchmark: a 0.1 m steel cube in 10 x 10 x 10 HEX8
 # (tools/bench/bench_block_drop.py makes the larger ones with -setnumber n).
 gmsh -3 -format msh41 "$here/compact_block.geo" -o "$here/compact_block.msh" > /dev/null
+# Two stacked plates whose whole interface is in contact (input/stacked_plates.xml; 961 slave
+# nodes at n = 30; tools/bench/bench_projected_gram.py makes the larger ones).
+gmsh -3 -format msh41 -setnumber n 30 "$here/stacked_plates.geo" -o "$here/stacked_plates.msh" > /dev/null

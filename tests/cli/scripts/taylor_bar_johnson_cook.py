@@ -35,7 +35,6 @@ choc, src, work = sys.argv[1:4]
 sys.path.insert(0, os.path.join(src, "tools", "lib"))
 import chocrun  # noqa: E402
 
-R0, L0 = 3.2e-3, 32.4e-3
 A, B, N, C, RHO, HEAT, CHI, T0 = 806e6, 614e6, 0.168, 0.0089, 7830, 460, 0.9, 20.0
 PUBLISHED = {"length": (26.52, 26.56), "diameter": (11.15, 11.22), "strain": (1.78, 1.84),
              "temperature": (582, 597)}
@@ -66,20 +65,9 @@ def run(n, label, ranks=1):
     chocrun.run(choc, chocrun.write_deck(d, os.path.join(work, label + ".xml")), out, ranks=ranks)
     chocrun.require_completed(chocrun.read_summary(out, "impact"))
     h = chocrun.read_history(out, "impact")
-    e0 = h["energy:total"][1]
     fields = chocrun.read_element_fields(os.path.join(out, "impact.exo"), ("EQ_PLASTIC_STRAIN", "TEMPERATURE"))
     strain, temp = fields["EQ_PLASTIC_STRAIN"], fields["TEMPERATURE"]
-    v = {"diameter": 2 * (R0 + h["EDGE:DX"][-1]) * 1e3,
-         "length": (L0 + h["REAR:DY"][-1] - h["CENTRE:DY"][-1]) * 1e3,
-         "strain": float(strain.max()), "temperature": float(temp.max())}
-    bal = np.asarray(h["energy:balance"])
-    print(f"{label}: " + ", ".join(f"{k} {x:.4f}" for k, x in v.items()) +
-          f"; plastic work {h['energy:dissipated'][-1] / e0:.4f} E0, balance in [{bal.min() / e0:.2e}, "
-          f"{bal.max() / e0:.2e}] E0")
-    if not bal.max() <= 1e-6 * e0:
-        failures.append(f"{label}: energy created, balance up to {bal.max() / e0:.2e} E0")
-    if not h["energy:dissipated"][-1] >= 0.97 * e0:
-        failures.append(f"{label}: plastic work {h['energy:dissipated'][-1]:.4g} J below 97 % of E0")
+    v = chocrun.taylor_bar_outcome(label, h, strain, temp, failures)
     plastic = np.asarray(h["energy:plastic"])
     heat = RHO * HEAT * float(np.sum((temp - T0) * ring_volumes(os.path.join(out, "impact.exo"))))
     print(f"{label}: heat {heat:.6g} J against chi x energy:plastic {CHI * plastic[-1]:.6g} J "

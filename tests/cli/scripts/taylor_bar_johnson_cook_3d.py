@@ -21,13 +21,10 @@ usage: taylor_bar_johnson_cook_3d.py CHOC SOURCE_DIR WORK_DIR"""
 import os
 import sys
 
-import numpy as np
-
 choc, src, work = sys.argv[1:4]
 sys.path.insert(0, os.path.join(src, "tools", "lib"))
 import chocrun  # noqa: E402
 
-R0, L0 = 3.2e-3, 32.4e-3
 PUBLISHED_3D = {"length": (26.52, 26.55), "diameter": (11.18, 11.22), "strain": (1.84, 1.84),
                 "temperature": (597, 597)}
 os.makedirs(work, exist_ok=True)
@@ -40,18 +37,8 @@ def finish_run(d, label, ranks=1):
     chocrun.run(choc, chocrun.write_deck(d, os.path.join(work, label + ".xml")), out, ranks=ranks)
     chocrun.require_completed(chocrun.read_summary(out, "impact"))
     h = chocrun.read_history(out, "impact")
-    e0 = h["energy:total"][1]
-    bal = np.asarray(h["energy:balance"])
     f = chocrun.read_element_fields(os.path.join(out, "impact.exo"), ("EQ_PLASTIC_STRAIN", "TEMPERATURE"))
-    v = {"diameter": 2 * (R0 + h["EDGE:DX"][-1]) * 1e3, "length": (L0 + h["REAR:DY"][-1] - h["CENTRE:DY"][-1]) * 1e3,
-         "strain": float(f["EQ_PLASTIC_STRAIN"].max()), "temperature": float(f["TEMPERATURE"].max())}
-    print(f"{label}: " + ", ".join(f"{k} {x:.4f}" for k, x in v.items()) +
-          f"; plastic work {h['energy:dissipated'][-1] / e0:.4f} E0, balance in [{bal.min() / e0:.2e}, "
-          f"{bal.max() / e0:.2e}] E0")
-    if not bal.max() <= 1e-6 * e0:
-        failures.append(f"{label}: energy created, balance up to {bal.max() / e0:.2e} E0")
-    if not h["energy:dissipated"][-1] >= 0.97 * e0:
-        failures.append(f"{label}: plastic work {h['energy:dissipated'][-1]:.4g} J below 97 % of E0")
+    v = chocrun.taylor_bar_outcome(label, h, f["EQ_PLASTIC_STRAIN"], f["TEMPERATURE"], failures)
     return v, h
 
 
