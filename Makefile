@@ -56,6 +56,7 @@ bench: build
 	$(PYTHON) tools/bench/bench_kept_factorization.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_direct_packages.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_block_drop.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_projected_gram.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_multigrid.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_bracket.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_oblique_sphere.py --build $(BUILD)
@@ -63,10 +64,12 @@ bench: build
 	$(PYTHON) tools/bench/bench_plastic.py --build $(BUILD)
 
 # The direct packages on contact scenes: KLU2 on rank 0 against MUMPS on every rank, 1 and 2
-# ranks; the scale scene's bars, then a compact block (against penalty contact too).
+# ranks; the scale scene's bars, then a compact block (against penalty contact too); the Gram
+# matrix of many active constraints between meshed bodies, dense or sparse (stacked plates).
 bench-direct: build
 	$(PYTHON) tools/bench/bench_direct_packages.py --build $(BUILD)
 	$(PYTHON) tools/bench/bench_block_drop.py --build $(BUILD)
+	$(PYTHON) tools/bench/bench_projected_gram.py --build $(BUILD)
 
 # The bracket drop with friction: implicit and explicit, 1 and 2 ranks, against an implicit run at
 # a small step (--sizes 1.5e-3 for about 200,000 unknowns).

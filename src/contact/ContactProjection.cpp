@@ -18,11 +18,11 @@ namespace choc {
 
 namespace {
 
-// 1,000 by measurement (docs/performance/direct-packages.md, "Many active constraints"); test
+// 300 by measurement (docs/performance/direct-packages.md, "Many active constraints"); test
 // hook: CHOC_TEST_SPARSE_GRAM_FROM=N (the tests of the sparse path on small scenes).
 int initialSparseFrom() {
   const char* e = std::getenv("CHOC_TEST_SPARSE_GRAM_FROM");
-  return e && *e ? std::max(0, std::atoi(e)) : 1000;
+  return e && *e ? std::max(0, std::atoi(e)) : 300;
 }
 
 }  // namespace

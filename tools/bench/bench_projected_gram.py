@@ -4,8 +4,8 @@ plate pressed onto the lower at 1 m/s, every slave node of the non-matching inte
 the first step, 5 steps of 1 us, CG + Jacobi with the pressures projected out) on
 meshes/stacked_plates.geo with n = --sizes ((n + 1)^2 active constraints), G = C^T C factored
   - dense: Cholesky of the m x m matrix on every rank (m^2 doubles, m^3 / 3 operations per
-    factorisation, m^2 per solve; the path below 1,000 active constraints),
-  - sparse: KLU2 on each rank alone (solvers/ReplicatedSparseLU.hpp; the path from 1,000),
+    factorisation, m^2 per solve; the path below 300 active constraints),
+  - sparse: KLU2 on each rank alone (solvers/ReplicatedSparseLU.hpp; the path from 300),
 forced by the test hook CHOC_TEST_SPARSE_GRAM_FROM, dense only up to --dense-max. Reports per
 size, path and rank count the medians over --repeat runs (the paths alternating) of the time per
 step, the linear-solve and contact times, the Krylov iterations, the peak memory, and the

@@ -23,7 +23,7 @@ solved directly, to the solvers' tolerances.
     against CG + Jacobi, to 1e-7 of each peak, and its 9 checks pass; its node-to-face analysis by
     CG + Jacobi on the mesh renumbered (chocrun.renumbered_mesh) equals the drawn one to 1e-8 of
     each peak (Newton's relative tolerance; the order of the sums changes).
-  - The sparse factorisation of G and C^T V (ReplicatedSparseLU, used from 1,000 active
+  - The sparse factorisation of G and C^T V (ReplicatedSparseLU, used from 300 active
     constraints) forced from the first (CHOC_TEST_SPARSE_GRAM_FROM=1): the bars by CG + Jacobi,
     the sliding bars by GMRES on 1 and 2 ranks (C^T V's friction entries gathered from both) and
     the non-matching meshes, against Direct to the same bounds.
