@@ -241,6 +241,7 @@ void ContactProjection::projectRows(const MultiVector& X, MultiVector& Y) const 
 void ContactProjection::rightHandSide(const CrsMatrix& W, const Vector& r, const Vector& u, MultiVector& b) {
   std::vector<char> k = key();
   if (!built_ || k != key_) {
+    built_ = false;  // a factorisation that throws leaves nothing to reuse
     build();
     buildOblique();
     key_ = std::move(k);
