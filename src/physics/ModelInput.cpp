@@ -61,8 +61,9 @@ void declareDamageParameters(ParameterList& mat) {
                              {"D3", "the triaxiality exponent's factor [-] (usually negative)"},
                              {"D4", "the strain-rate coefficient [-] (>= 0)"},
                              {"D5", "the temperature coefficient [-] (>= 0)"}};
-  for (const auto& t : terms)
-    declareDouble(mat, std::string("Johnson-Cook ") + t[0], 0.0, std::string("'Damage' = 'Johnson-Cook': ") + t[1]);
+  for (const auto& t : terms)  // D3 any sign; the others >= 0 (JohnsonCookDamage.hpp)
+    declareDouble(mat, std::string("Johnson-Cook ") + t[0], 0.0, std::string("'Damage' = 'Johnson-Cook': ") + t[1],
+                  std::string(t[0]) == "D3" ? Range::any() : Range::nonNegative());
 }
 
 void declareMaterialParameters(ParameterList& model) {

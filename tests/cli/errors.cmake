@@ -348,7 +348,7 @@ choc_cli_input_error(johnson_cook_no_melting check bad_johnson_cook_no_melting.x
 choc_cli_input_error(johnson_cook_melted check bad_johnson_cook_melted.xml
   "parameter 'Model/Materials/steel': Johnson-Cook material: 'Initial Temperature' 1600 is at or above the melting temperature 1540")
 choc_cli_input_error(damage_fit check bad_damage_fit.xml
-  "parameter 'Model/Materials/steel': Johnson-Cook damage: needs 'Johnson-Cook D1' >= 0 .a negative D1 makes the failure strain negative at high triaxiality., got -0.09")
+  "parameter 'Model/Materials/steel/Johnson-Cook D1' = '-0.09': out of range. valid: a number in .0, inf.")
 choc_cli_input_error(damage_without_johnson_cook check bad_damage_without_johnson_cook.xml
   "parameter 'Model/Materials/steel/Damage' = 'Johnson-Cook': Johnson-Cook damage needs the Johnson-Cook flow stress .its reference rate and temperatures.. the material's 'Model' is 'J2 plasticity'. set 'Model' = 'Johnson-Cook', or 'Damage' = 'none'")
 choc_cli_input_error(plastic_modal_transient check bad_plastic_modal.xml
