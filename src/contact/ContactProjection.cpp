@@ -175,11 +175,8 @@ void ContactProjection::buildOblique() {
     return;
   }
   // C^T V = G + C^T (V - C): the second term from this rank's rows, summed.
-  std::vector<std::vector<std::pair<int, double>>> cByRow(map_->getNodeNumElements());
-  for (const Entry& e : entries_) cByRow[size_t(e.row)].push_back({e.k, e.c});
   std::vector<double> mine(size_t(m) * m, 0.0);
-  for (const Entry& f : frictionEntries_)
-    for (const auto& [k, c] : cByRow[size_t(f.row)]) mine[size_t(f.k) * m + k] += c * f.c;
+  for (const auto& [ij, v] : localFrictionCoupling()) mine[size_t(ij.second) * m + ij.first] += v;
   ctvLU_.assign(size_t(m) * m, 0.0);
   Teuchos::reduceAll<int, double>(*map_->getComm(), Teuchos::REDUCE_SUM, m * m, mine.data(), ctvLU_.data());
   for (int j = 0; j < m; ++j)  // + G (its lower triangle kept)
@@ -193,16 +190,20 @@ void ContactProjection::buildOblique() {
                          "(C^T V, pivot " + std::to_string(info) + ")");
 }
 
-std::vector<ReplicatedSparseLU::Entry> ContactProjection::frictionCoupling() const {
+std::map<std::pair<int, int>, double> ContactProjection::localFrictionCoupling() const {
   std::vector<std::vector<std::pair<int, double>>> cByRow(map_->getNodeNumElements());
   for (const Entry& e : entries_) cByRow[size_t(e.row)].push_back({e.k, e.c});
   std::map<std::pair<int, int>, double> mine;
   for (const Entry& f : frictionEntries_)
     for (const auto& [k, c] : cByRow[size_t(f.row)]) mine[{k, f.k}] += c * f.c;
+  return mine;
+}
+
+std::vector<ReplicatedSparseLU::Entry> ContactProjection::frictionCoupling() const {
   // Every rank's entries to every rank: the counts, then the (row, col) pairs and the values.
   std::vector<int> ij;
   std::vector<double> values;
-  for (const auto& [key, v] : mine) ij.push_back(key.first), ij.push_back(key.second), values.push_back(v);
+  for (const auto& [key, v] : localFrictionCoupling()) ij.push_back(key.first), ij.push_back(key.second), values.push_back(v);
   const Comm& comm = *map_->getComm();
   const int ranks = comm.getSize(), count = int(values.size());
   std::vector<int> counts(size_t(ranks), 0);

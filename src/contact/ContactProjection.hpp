@@ -46,7 +46,6 @@ class ContactProjection : public ConstraintProjector {
   // From this many active constraints G and C^T V are factored sparse (their dense factors take
   // m^2 doubles and m^3 / 3 operations on every rank); settable for the tests of both paths.
   static int sparseFrom;
-  bool sparse() const { return sparse_; }
 
  private:
   struct Entry {
@@ -69,7 +68,9 @@ class ContactProjection : public ConstraintProjector {
   void factorDenseGram(const ConstraintsByDof& byDof);
   void factorSparseGram(const ConstraintsByDof& byDof);
   void throwDependent(int k) const;
-  // C^T (V - C) from this rank's rows, as (i, j, value), gathered from every rank (sparse path).
+  // C^T (V - C) from this rank's rows: (i, j) -> value.
+  std::map<std::pair<int, int>, double> localFrictionCoupling() const;
+  // Every rank's localFrictionCoupling, as (i, j, value) entries (sparse path).
   std::vector<ReplicatedSparseLU::Entry> frictionCoupling() const;
   std::vector<MatrixEntry> multiplierColumns_;
   GO multiplierBase_ = 0;

@@ -78,6 +78,14 @@ FlowStress FlowStress::johnsonCook(const JohnsonCookParameters& p) {
   return f;
 }
 
+double johnsonCookLogRate(const JohnsonCookParameters& p, double dalpha, double dt) {
+  return dt > 0 && dalpha > 0 && dalpha > p.referenceRate * dt ? std::log(dalpha / (p.referenceRate * dt)) : 0.0;
+}
+
+double johnsonCookHomologous(const JohnsonCookParameters& p, double temperature) {
+  return std::clamp((temperature - p.referenceTemperature) / (p.meltingTemperature - p.referenceTemperature), 0.0, 1.0);
+}
+
 FlowStress::Value FlowStress::at(double alphaOld, double dalpha, double dt, double temperature) const {
   const double alpha = alphaOld + dalpha;
   Value v;
@@ -103,14 +111,9 @@ FlowStress::Value FlowStress::at(double alphaOld, double dalpha, double dt, doub
   const double power = alpha > 0 ? std::pow(alpha, p.n) : 0.0;
   const double hardening = p.A + p.B * power;
   const double dHardening = alpha > 0 ? p.n * p.B * power / alpha : (p.n == 1.0 ? p.B : 0.0);
-  double rate = 1.0, dRate = 0.0;
-  if (dt > 0 && dalpha > 0 && dalpha > p.referenceRate * dt) {
-    rate = 1 + p.C * std::log(dalpha / (p.referenceRate * dt));
-    dRate = p.C / dalpha;
-  }
-  const double homologous =
-      std::clamp((temperature - p.referenceTemperature) / (p.meltingTemperature - p.referenceTemperature), 0.0, 1.0);
-  const double thermal = 1 - std::pow(homologous, p.m);
+  const double logRate = johnsonCookLogRate(p, dalpha, dt);
+  const double rate = 1 + p.C * logRate, dRate = logRate > 0 ? p.C / dalpha : 0.0;
+  const double thermal = 1 - std::pow(johnsonCookHomologous(p, temperature), p.m);
   v.stress = hardening * rate * thermal;
   v.slope = (dHardening * rate + hardening * dRate) * thermal;
   return v;

@@ -39,6 +39,12 @@ struct JohnsonCookParameters {
   double density = 0.0;                        // rho [kg/m^3]
 };
 
+// Johnson-Cook's rate and temperature terms, shared by the flow stress and the damage
+// (JohnsonCookDamage.hpp): ln(rate / rate_0) for the plastic increment dalpha over dt, 0 below
+// rate_0 or without duration; T* = (T - T_0) / (T_m - T_0) clamped to [0, 1].
+double johnsonCookLogRate(const JohnsonCookParameters& p, double dalpha, double dt);
+double johnsonCookHomologous(const JohnsonCookParameters& p, double temperature);
+
 class FlowStress {
  public:
   static FlowStress linear(double yieldStress, double hardening);

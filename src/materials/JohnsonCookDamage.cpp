@@ -1,7 +1,6 @@
 // Johnson and Cook's failure strain (formula and range in the header).
 #include "materials/JohnsonCookDamage.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -33,18 +32,8 @@ JohnsonCookDamage::JohnsonCookDamage(const JohnsonCookDamageParameters& d, const
 
 double JohnsonCookDamage::failureStrain(double triaxiality, double dalpha, double dt, double temperature) const {
   const double stress = d_.D1 + d_.D2 * std::exp(d_.D3 * triaxiality);
-  double rate = 1.0;
-  if (dt > 0 && dalpha > flow_.referenceRate * dt) rate = 1 + d_.D4 * std::log(dalpha / (flow_.referenceRate * dt));
-  const double homologous = std::clamp(
-      (temperature - flow_.referenceTemperature) / (flow_.meltingTemperature - flow_.referenceTemperature), 0.0, 1.0);
-  return stress * rate * (1 + d_.D5 * homologous);
-}
-
-std::string JohnsonCookDamage::describe() const {
-  std::ostringstream s;
-  s << "Johnson-Cook damage, D1 = " << d_.D1 << ", D2 = " << d_.D2 << ", D3 = " << d_.D3 << ", D4 = " << d_.D4
-    << ", D5 = " << d_.D5;
-  return s.str();
+  const double rate = 1 + d_.D4 * johnsonCookLogRate(flow_, dalpha, dt);
+  return stress * rate * (1 + d_.D5 * johnsonCookHomologous(flow_, temperature));
 }
 
 }  // namespace choc

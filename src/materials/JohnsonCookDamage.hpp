@@ -14,8 +14,6 @@
 // negative D1 (Armco iron, Ti-6Al-4V), whose failure strain turns negative at high triaxiality
 // (outside the fit's range): refused.
 #pragma once
-#include <string>
-
 #include "materials/FlowStress.hpp"
 
 namespace choc {
@@ -34,7 +32,6 @@ class JohnsonCookDamage {
   // eps_f at the triaxiality, the plastic increment dalpha over dt (dt <= 0: no rate effect) and
   // the temperature.
   double failureStrain(double triaxiality, double dalpha, double dt, double temperature) const;
-  std::string describe() const;
 
  private:
   JohnsonCookDamageParameters d_;
