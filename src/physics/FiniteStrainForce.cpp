@@ -128,14 +128,10 @@ void FiniteStrainForce::commit() {
 // The first committed state in which a point's damage reaches 1: one line on the log naming the
 // element (the lowest-numbered among those whose largest point damage is the largest of all).
 void FiniteStrainForce::reportPredictedFailure() {
-  double local = 0.0;
-  for (const Element& e : elements_)
-    if (e.owner) local = std::max(local, e.kernel->largestDamage(committed_.data() + e.state));
-  const Comm& comm = *K0_->getComm();
-  double largest = 0.0;
-  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MAX, local, Teuchos::outArg(largest));
+  const double largest = largestCommittedDamage();
   if (!(largest >= 1.0)) return;
   failurePredicted_ = true;
+  const Comm& comm = *K0_->getComm();
   int first = std::numeric_limits<int>::max(), mine = first;
   for (const Element& e : elements_)
     if (e.owner && e.kernel->largestDamage(committed_.data() + e.state) == largest) mine = std::min(mine, e.number);
@@ -147,6 +143,15 @@ void FiniteStrainForce::reportPredictedFailure() {
              describe(e, "failure predicted there (reported only: no softening, no erosion)");
   line = collectiveFailure(comm, line);
   if (isRootRank()) log() << line << "\n";
+}
+
+// The largest point damage of the committed states over every rank (collective).
+double FiniteStrainForce::largestCommittedDamage() const {
+  double local = 0.0, largest = 0.0;
+  for (const Element& e : elements_)
+    if (e.owner) local = std::max(local, e.kernel->largestDamage(committed_.data() + e.state));
+  Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_MAX, local, Teuchos::outArg(largest));
+  return largest;
 }
 
 // Each element's committed state by its owner, summed over the ranks into one array in global
@@ -175,6 +180,8 @@ void FiniteStrainForce::unarchive(const StateArchive& a) {
                 committed_.begin() + long(e.state));
   plasticWork_ = a.getDouble("internal/plasticWork");
   committedTime_ = a.getDouble("internal/plasticTime");
+  // A failure the run before the checkpoint logged is not logged again.
+  failurePredicted_ = damage_ && largestCommittedDamage() >= 1.0;
   timeKnown_ = true;
   trialValid_ = false;
 }

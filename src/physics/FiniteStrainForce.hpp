@@ -144,6 +144,7 @@ class FiniteStrainForce : public InternalForce {
   bool damage_ = false;   // a block accumulates Johnson-Cook's damage
   bool failurePredicted_ = false;  // a point's damage reached 1 (logged once)
   void reportPredictedFailure();
+  double largestCommittedDamage() const;
   bool hourglass_ = false;  // a block has one-point elements
   bool linearPart_ = true;  // K_lin has a nonzero value (else its products are skipped)
   static bool anyNonzero(const CrsMatrix& K);

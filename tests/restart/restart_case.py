@@ -3,6 +3,7 @@
 uninterrupted run, bit for bit on the same ranks and to solver tolerance on others.
 
   restart_case.py stops   CHOC INPUT OUT --analysis A --steps N... [--contact-column COL --contact-steps N...]
+                          [--log-once PATTERN]
   restart_case.py ranks   CHOC INPUT OUT --analysis A --steps N --np-first P --np-restart Q --tolerance T
   restart_case.py kill    CHOC INPUT OUT --seeds S... [--kills K]
   restart_case.py fault   CHOC INPUT OUT --file-size BYTES
@@ -11,7 +12,8 @@ uninterrupted run, bit for bit on the same ranks and to solver tolerance on othe
 stops: the reference run, then for each N a run stopped at the end of nominal step N of
   analysis A (CHOC_TEST_SIGNAL_AT_STEP) and continued with --restart; histories and Exodus files
   must be identical to the reference's (tools/oracles/compare_results.py). With --contact-column, the
-  reference history must show contact (COL != 0) at each of --contact-steps.
+  reference history must show contact (COL != 0) at each of --contact-steps. With --log-once, a line
+  matching PATTERN is logged once by the reference and once by the stopped and continued runs together.
 ranks: stopped on P ranks, continued on Q ranks; equal to the 1-rank reference to T of peak.
   (With --checkpoint-steps or --checkpoint-seconds, every mode runs a copy of INPUT with checkpoints.)
 kill: SIGKILL at random moments (seeded), then --restart from the last checkpoint (or from the
@@ -96,7 +98,7 @@ def stop_and_restart(a, ref, n, np_first=1, np_restart=1):
     out = os.path.join(a.out, "stop%d_np%d_%d" % (n, np_first, np_restart))
     shutil.rmtree(out, ignore_errors=True)
     p = run(choc(a, out, np_=np_first), env={"CHOC_TEST_SIGNAL_AT_STEP": "%s:%d" % (a.analysis, n)},
-            expect=143)
+            expect=143, log=out + ".first.log")
     if "--restart" not in p.stderr:
         fail("the interruption message does not say how to continue: " + p.stderr)
     ck = checkpoint_of(out, a.analysis)
@@ -116,6 +118,23 @@ def history_column(path, column):
     return [r[j] for r in rows]
 
 
+def count_lines(path, pattern):
+    with open(path) as f:
+        return sum(1 for line in f if re.search(pattern, line))
+
+
+def check_logged_once(a, ref, out):
+    """--log-once: the pattern's line is on the reference's log once, and once on the stopped run's
+    and the continued run's logs together (a message the run before the checkpoint gave is not given again)."""
+    if not a.log_once:
+        return
+    counts = [count_lines(ref + ".log", a.log_once), count_lines(out + ".first.log", a.log_once),
+              count_lines(out + ".restart.log", a.log_once)]
+    print("/%s/: %d line(s) in the reference's log, %d before the stop, %d after it" % (a.log_once, *counts))
+    if counts[0] != 1 or counts[1] + counts[2] != 1:
+        fail("the line /%s/ is not logged exactly once (reference, before the stop, after it: %s)" % (a.log_once, counts))
+
+
 def cmd_stops(a):
     ref, _ = reference(a)
     if a.contact_column:
@@ -125,7 +144,9 @@ def cmd_stops(a):
                 fail("step %d is not in contact (%s = 0): the test would not stop mid-contact" % (n, a.contact_column))
             print("step %d: %s = %g (in contact)" % (n, a.contact_column, col[n]))
     for n in a.steps:
-        compare(ref, stop_and_restart(a, ref, n))
+        out = stop_and_restart(a, ref, n)
+        compare(ref, out)
+        check_logged_once(a, ref, out)
     print("OK")
 
 
@@ -316,6 +337,7 @@ def main():
     ap.add_argument("--analysis")
     ap.add_argument("--steps", type=int, nargs="*", default=[])
     ap.add_argument("--contact-column")
+    ap.add_argument("--log-once", help="stops: a log line's pattern that must be logged exactly once")
     ap.add_argument("--contact-steps", type=int, nargs="*", default=[])
     ap.add_argument("--np-first", type=int, default=1)
     ap.add_argument("--np-restart", type=int, default=1)
