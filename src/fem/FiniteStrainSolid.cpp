@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 
 #include "fem/FBarTangent.hpp"
 #include "fem/IsoparametricPoint.hpp"
@@ -72,16 +73,36 @@ double rowValue(Kinematics k, const GradientRow& r, const PointView& p, int a) {
   return p.dNdX[a * 3 + r.J];
 }
 
+// The common node counts with the count known to the compiler (its loops unrolled, the sums in
+// registers), any other through the run-time count (N = 0): the same terms in the same order.
+template <class Kernel>
+void byNodeCount(int nodes, Kernel&& kernel) {
+  switch (nodes) {
+    case 4: return kernel(std::integral_constant<int, 4>{});
+    case 8: return kernel(std::integral_constant<int, 8>{});
+    case 10: return kernel(std::integral_constant<int, 10>{});
+    case 20: return kernel(std::integral_constant<int, 20>{});
+    default: return kernel(std::integral_constant<int, 0>{});
+  }
+}
+
+// 3D: G_iJ = sum_a u_a,i dN_a/dX_J, every row in one pass over the nodes.
+template <int N>
+void displacementGradient3D(int nodes, const double* __restrict dNdX, const double* __restrict u, double G[3][3]) {
+  const int n = N ? N : nodes;
+  double s[3][3] = {};
+  for (int a = 0; a < n; ++a)
+    for (int i = 0; i < 3; ++i)
+      for (int J = 0; J < 3; ++J) s[i][J] += dNdX[a * 3 + J] * u[a * 3 + i];
+  for (int i = 0; i < 3; ++i)
+    for (int J = 0; J < 3; ++J) G[i][J] = s[i][J];
+}
+
 Mat3 deformationGradient(Kinematics k, const PointView& p, const std::vector<double>& u) {
   Mat3 F = identity3();
   if (k == Kinematics::ThreeD) {  // every row, one pass over the nodes (the same sums, in the same order)
-    Mat3 G{};
-    for (int a = 0; a < p.nodes; ++a) {
-      const double* g = p.dNdX + a * 3;
-      const double* ua = &u[size_t(a * 3)];
-      for (int i = 0; i < 3; ++i)
-        for (int J = 0; J < 3; ++J) G[i][J] += g[J] * ua[i];
-    }
+    double G[3][3];
+    byNodeCount(p.nodes, [&](auto N) { displacementGradient3D<decltype(N)::value>(p.nodes, p.dNdX, u.data(), G); });
     for (int i = 0; i < 3; ++i)
       for (int J = 0; J < 3; ++J) F[i][J] += G[i][J];
     return F;
@@ -95,6 +116,18 @@ Mat3 deformationGradient(Kinematics k, const PointView& p, const std::vector<dou
   return F;
 }
 
+// 3D: f_a,i += sum_J s_iJ dN_a/dX_J.
+template <int N>
+void addNodalForces3D(int nodes, const double* __restrict dNdX, const double (&s)[3][3], double* __restrict f) {
+  const int n = N ? N : nodes;
+  for (int a = 0; a < n; ++a)
+    for (int i = 0; i < 3; ++i) {
+      double v = f[a * 3 + i];
+      for (int J = 0; J < 3; ++J) v += s[i][J] * dNdX[a * 3 + J];
+      f[a * 3 + i] = v;
+    }
+}
+
 // f_a,comp += stress(i, J) g_a,iJ over the kinematics' rows (in 3D each node's three components
 // in one pass: every f entry receives the same terms in the same order as row by row).
 template <class Stress>
@@ -103,12 +136,7 @@ void addPointForce(Kinematics k, const PointView& p, Stress stress, std::vector<
     double s[3][3];
     for (int i = 0; i < 3; ++i)
       for (int J = 0; J < 3; ++J) s[i][J] = stress(i, J);
-    for (int a = 0; a < p.nodes; ++a) {
-      const double* g = p.dNdX + a * 3;
-      double* fa = &f[size_t(a * 3)];
-      for (int i = 0; i < 3; ++i)
-        for (int J = 0; J < 3; ++J) fa[i] += s[i][J] * g[J];
-    }
+    byNodeCount(p.nodes, [&](auto N) { addNodalForces3D<decltype(N)::value>(p.nodes, p.dNdX, s, f.data()); });
     return;
   }
   const int nc = 2;
@@ -138,7 +166,7 @@ void evaluatePoint(const SolidMaterial& m, SolidShape t, const Point3& xi, const
   }
   try {
     if (m.plastic) {
-      std::array<double, kJ2StateSize> virgin{};
+      std::array<double, kJ2StateSize> virgin;
       if (!old) virgin = m.plastic->initialState(), old = virgin.data();
       m.plastic->respond(s.F, old, withTangent, s.plastic, elasticTangent, dt);
       s.P = s.plastic.P;
@@ -229,6 +257,7 @@ FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kin
       hourglass_(formulation.hourglass) {
   checkSolidKinematics(shape_, kin_);
   checkFormulation();
+  rule_ = onePoint_ ? &gaussBoxRule(parametricDimension(shape_), 1) : &stiffnessRule(shape_, kin_);
 }
 
 void FiniteStrainSolid::checkFormulation() const {
@@ -249,9 +278,6 @@ void FiniteStrainSolid::checkFormulation() const {
   if (!finiteKinematics()) throw std::invalid_argument("F-bar needs finite-strain kinematics ('Strain' = 'finite')");
 }
 
-const QuadratureRule& FiniteStrainSolid::rule() const {
-  return onePoint_ ? gaussBoxRule(parametricDimension(shape_), 1) : stiffnessRule(shape_, kin_);
-}
 
 int FiniteStrainSolid::stateSize() const {
   return plastic() ? kJ2StateSize * rule().size() : 0;
@@ -351,18 +377,46 @@ double FiniteStrainSolid::hourglassEnergy(const ElementGeometry& g, const std::v
   return energy;
 }
 
+namespace {
+
+// The hourglass energy and force k gamma_m,a q_m,i of M modes on N nodes of NC components: every
+// mode's amplitudes in one pass over the nodes, then each node's force from the modes in order.
+template <int N, int NC, int M>
+double hourglassForce(const double* __restrict gamma, double k, const double* __restrict u, double* __restrict f) {
+  double q[M][NC] = {};
+  for (int a = 0; a < N; ++a)
+    for (int m = 0; m < M; ++m)
+      for (int i = 0; i < NC; ++i) q[m][i] += gamma[m * N + a] * u[a * NC + i];
+  double energy = 0.0;
+  for (int m = 0; m < M; ++m)
+    for (int i = 0; i < NC; ++i) energy += 0.5 * k * q[m][i] * q[m][i];
+  for (int a = 0; a < N; ++a)
+    for (int i = 0; i < NC; ++i) {
+      double v = f[a * NC + i];
+      for (int m = 0; m < M; ++m) v += k * gamma[m * N + a] * q[m][i];
+      f[a * NC + i] = v;
+    }
+  return energy;
+}
+
+}  // namespace
+
 double FiniteStrainSolid::addHourglass(const ElementGeometry& g, const std::vector<double>& u, std::vector<double>& f,
                                        DenseMatrix* K) const {
   const int n = g.nodes, nc = componentsPerNode(), modes = static_cast<int>(g.hourglass.size()) / n;
   const double k = g.hourglassStiffness;
   double energy = 0.0, q[3];
-  for (int m = 0; m < modes; ++m) {
+  const bool hex8 = n == 8 && nc == 3 && modes == 4;  // HEX8 in 3D (QUAD4 in plane strain, 1 mode, below)
+  if (hex8) energy = hourglassForce<8, 3, 4>(g.hourglass.data(), k, u.data(), f.data());
+  for (int m = 0; m < modes && !hex8; ++m) {
     const double* gm = &g.hourglass[size_t(m) * n];
     hourglassAmplitude(g, m, nc, u, q);
     for (int i = 0; i < nc; ++i) energy += 0.5 * k * q[i] * q[i];
     for (int a = 0; a < n; ++a)
       for (int i = 0; i < nc; ++i) f[size_t(a * nc + i)] += k * gm[a] * q[i];
-    if (!K) continue;
+  }
+  for (int m = 0; m < modes && K; ++m) {
+    const double* gm = &g.hourglass[size_t(m) * n];
     for (int a = 0; a < n; ++a)
       for (int b = 0; b < n; ++b)
         for (int i = 0; i < nc; ++i) (*K)(a * nc + i, b * nc + i) += k * gm[a] * gm[b];
@@ -422,7 +476,9 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
   const int nc = componentsPerNode(), n = g.nodes, nd = n * nc;
   f.assign(size_t(nd), 0.0);
   if (K) K->resize(nd, nd);
-  PointState s;
+  // Reused from element to element: every field a point reads is written by evaluatePoint first
+  // (a fresh one per element zeroed 2 kB of tangents the explicit force never reads).
+  thread_local PointState s;
   thread_local std::vector<double> A;
   double energy = 0.0;
   thread_local std::vector<double> B;

@@ -121,7 +121,7 @@ class FiniteStrainSolid {
   bool fbar() const { return fbar_; }
   bool onePoint() const { return onePoint_; }
   // The integration rule of the element's points (its state has one per point).
-  const QuadratureRule& rule() const;
+  const QuadratureRule& rule() const { return *rule_; }
   int numNodes() const { return nodeCount(shape_); }
   int componentsPerNode() const { return kin_ == Kinematics::ThreeD ? 3 : 2; }
   bool plastic() const { return material_.plastic != nullptr; }
@@ -180,6 +180,7 @@ class FiniteStrainSolid {
   bool fbar_ = false;
   bool onePoint_ = false;
   double hourglass_ = 0.0;
+  const QuadratureRule* rule_ = nullptr;  // the static rule of the formulation (one point or the full rule)
   void checkFormulation() const;
   // One point: the element's mean gradient and hourglass vectors from the full rule's geometry.
   void condenseToOnePoint(const std::vector<Point3>& X, ElementGeometry& g) const;

@@ -98,6 +98,7 @@ class FiniteStrainForce : public InternalForce {
   // from the committed state; with `trial`, the new states go to trial_ and the owners'
   // plastic work to trialWork_. Returns this rank's first failure ("" if none); the callers
   // make it collective.
+  void prefetch(const Element& e, bool trial) const;
   template <class Visit>
   std::string forEachElement(const Vector& uCol, bool withTangent, Visit&& visit, bool trial = false,
                              bool elasticTangent = false) const;
