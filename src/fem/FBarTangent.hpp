@@ -43,6 +43,29 @@ class FBarTangent {
   double JV_;
   double pressureSum_ = 0.0;     // sum_q w p
   std::vector<double> dilation_;  // sum_q w J ((F^-T : DF)(F^-T : dF) - tr(F^-1 DF F^-1 dF)), n x n
+  // One point's per-DOF terms: p, F^-T : dF_k, e_k, P : dF_k, Dp_k, DP_k (9), F^-1 dF_k (9), the row
+  // of F that DOF k moves (-1: several) and c_k,i = (dF_k F^-1)_(row, i).
+  // (One per thread, reused from element to element.)
+  struct Point {
+    double p = 0.0;
+    std::vector<double> d, e, PG, Dp, DP, H, c;
+    std::vector<int> row;
+  };
+  static Point& scratch();
+  Point& point_ = scratch();
+  void addPairs(const std::vector<double>& G, double s, double J, double w, DenseMatrix& K);
+  void addPairsByRows(const std::vector<double>& G, double s, double J, double w, DenseMatrix& K);
+  // Pair (a, b)'s term of K and of the dilatation, given DP_b : dF_a and tr(F^-1 dF_b F^-1 dF_a).
+  void addPair(size_t a, size_t b, double s, double J, double w, double DPg, double trHH, DenseMatrix& K) {
+    const Point& t = point_;
+    K(int(a), int(b)) += pairTerm(w, s, t.p, t.e[b], t.PG[a], DPg, t.Dp[b], t.d[a], trHH, B_[a]);
+    dilation_[a * size_t(n_) + b] += w * J * (t.d[b] * t.d[a] - trHH);
+  }
+  // Pair (a, b)'s term of K (header): w [ s/3 e_b (P : dF_a) + s DP_b : dF_a - Dp_b d_a + p tr + Dp_b B_a ].
+  static double pairTerm(double w, double s, double p, double eb, double PGa, double DPg, double Dpb, double da,
+                         double trHH, double Ba) {
+    return w * (s / 3 * eb * PGa + s * DPg - Dpb * da + p * trHH + Dpb * Ba);
+  }
 };
 
 }  // namespace choc
