@@ -55,8 +55,12 @@ inline SymmetricEigen symmetricEigen(const Mat3& a) {
         c = 1 - t * t * (0.5 - 0.375 * t * t);
       } else {  // t = sgn(theta) / (|theta| + sqrt(theta^2 + 1)), theta = gap / 2 a_pq, times 2 |a_pq| / 2 |a_pq|
         const double h = std::sqrt(gap * gap + 4 * apq * apq), g = std::abs(gap) + h;
-        t = (gap >= 0 ? 2 * apq : -2 * apq) / g;
-        c = std::sqrt(g / (2 * h));  // 1 / sqrt(1 + t^2), with 1 + t^2 = 2 h / g
+        if (h > 0) {
+          t = (gap >= 0 ? 2 * apq : -2 * apq) / g;
+          c = std::sqrt(g / (2 * h));  // 1 / sqrt(1 + t^2), with 1 + t^2 = 2 h / g
+        } else {  // gap = 0 and a_pq^2 underflows: the rotation by 45 degrees (theta = 0)
+          t = 1.0, c = std::sqrt(0.5);
+        }
       }
       const double s = t * c;
       d[p] -= t * apq;

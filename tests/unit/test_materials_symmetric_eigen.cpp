@@ -96,6 +96,13 @@ TEST(SymmetricEigen, NearlyDiagonalInTheSeriesRange) {
   }
 }
 
+// An equal pair of diagonal entries with an off-diagonal entry whose square underflows, beside a
+// large one: the rotation of that pair must not divide 0 by 0.
+TEST(SymmetricEigen, UnderflowingEntryBetweenEqualDiagonals) {
+  expectDecomposition(Mat3{{{1.0, 1e-170, 0.5}, {1e-170, 1.0, 0.0}, {0.5, 0.0, 2.0}}});
+  expectDecomposition(Mat3{{{1.0, -1e-170, 0.5}, {-1e-170, 1.0, 0.25}, {0.5, 0.25, 1.0}}});
+}
+
 TEST(SymmetricEigen, DiagonalAndZero) {
   const SymmetricEigen d = symmetricEigen(Mat3{{{3, 0, 0}, {0, -1, 0}, {0, 0, 2}}});
   EXPECT_EQ(d.values[0], 3.0);
