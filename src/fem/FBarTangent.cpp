@@ -11,8 +11,9 @@ FBarTangent::Point& FBarTangent::scratch() {
   return point;
 }
 
-// The row i of dF/du_k when it has one (3D and plane strain: every DOF moves one row of F), else
-// -1 (an axisymmetric radial DOF moves F_rr, F_rz and the hoop stretch).
+// The row i of dF/du_k when it has one (3D and plane strain: every DOF moves one row of F; a DOF
+// without a gradient at the point: row 0, its terms vanish), else -1 (an axisymmetric radial DOF
+// moves F_rr, F_rz and the hoop stretch).
 static int singleRow(const double* g) {
   int row = -1;
   for (int r = 0; r < 9; ++r) {
@@ -32,7 +33,8 @@ void FBarTangent::addPoint(const std::vector<double>& G, const Mat3& F, const Ma
   t.p = 0.0;
   for (int i = 0; i < 3; ++i)
     for (int J2 = 0; J2 < 3; ++J2) t.p += P[i][J2] * Fbar[i][J2] / 3;
-  bool rows = true;
+  bool rows = true;  // then F^-1 dF_k (H) is not needed
+  for (size_t k = 0; k < n; ++k) rows = (t.row[k] = singleRow(&G[9 * k])) >= 0 && rows;
   for (size_t k = 0; k < n; ++k) {
     const double* g = &G[9 * k];
     double* h = &t.H[9 * k];  // F^-1 dF_k
@@ -42,7 +44,7 @@ void FBarTangent::addPoint(const std::vector<double>& G, const Mat3& F, const Ma
         if (gi == 0.0) continue;
         t.d[k] += Finv[L][i] * gi;
         t.PG[k] += P[i][L] * gi;
-        for (int Jr = 0; Jr < 3; ++Jr) h[3 * Jr + L] += Finv[Jr][i] * gi;
+        for (int Jr = 0; Jr < 3 && !rows; ++Jr) h[3 * Jr + L] += Finv[Jr][i] * gi;
       }
     t.e[k] = B_[k] - t.d[k];
     double Fb[9];  // dFbar / du_k
@@ -55,9 +57,7 @@ void FBarTangent::addPoint(const std::vector<double>& G, const Mat3& F, const Ma
       dp += v * Fbar[r / 3][r % 3] + P[r / 3][r % 3] * Fb[r];
     }
     t.Dp[k] = dp / 3;
-    t.row[k] = singleRow(g);
-    rows = rows && t.row[k] >= 0;
-    for (int i = 0; i < 3 && t.row[k] >= 0; ++i)  // c_k,i = sum_L g_k,(row L) F^-1_Li
+    for (int i = 0; i < 3 && rows; ++i)  // c_k,i = sum_L g_k,(row L) F^-1_Li
       t.c[3 * k + size_t(i)] = g[3 * t.row[k]] * Finv[0][i] + g[3 * t.row[k] + 1] * Finv[1][i] +
                                g[3 * t.row[k] + 2] * Finv[2][i];
   }

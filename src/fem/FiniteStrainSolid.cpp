@@ -381,20 +381,23 @@ namespace {
 
 // The hourglass energy and force k gamma_m,a q_m,i of M modes on N nodes of NC components: every
 // mode's amplitudes in one pass over the nodes, then each node's force from the modes in order.
+// Sizes of 0 are taken at run time (n, nc, modes; at most 4 modes of 3 components).
 template <int N, int NC, int M>
-double hourglassForce(const double* __restrict gamma, double k, const double* __restrict u, double* __restrict f) {
-  double q[M][NC] = {};
-  for (int a = 0; a < N; ++a)
-    for (int m = 0; m < M; ++m)
-      for (int i = 0; i < NC; ++i) q[m][i] += gamma[m * N + a] * u[a * NC + i];
+double hourglassForce(int n, int nc, int modes, const double* __restrict gamma, double k, const double* __restrict u,
+                      double* __restrict f) {
+  n = N ? N : n, nc = NC ? NC : nc, modes = M ? M : modes;
+  double q[4][3] = {};
+  for (int a = 0; a < n; ++a)
+    for (int m = 0; m < modes; ++m)
+      for (int i = 0; i < nc; ++i) q[m][i] += gamma[m * n + a] * u[a * nc + i];
   double energy = 0.0;
-  for (int m = 0; m < M; ++m)
-    for (int i = 0; i < NC; ++i) energy += 0.5 * k * q[m][i] * q[m][i];
-  for (int a = 0; a < N; ++a)
-    for (int i = 0; i < NC; ++i) {
-      double v = f[a * NC + i];
-      for (int m = 0; m < M; ++m) v += k * gamma[m * N + a] * q[m][i];
-      f[a * NC + i] = v;
+  for (int m = 0; m < modes; ++m)
+    for (int i = 0; i < nc; ++i) energy += 0.5 * k * q[m][i] * q[m][i];
+  for (int a = 0; a < n; ++a)
+    for (int i = 0; i < nc; ++i) {
+      double v = f[a * nc + i];
+      for (int m = 0; m < modes; ++m) v += k * gamma[m * n + a] * q[m][i];
+      f[a * nc + i] = v;
     }
   return energy;
 }
@@ -405,16 +408,9 @@ double FiniteStrainSolid::addHourglass(const ElementGeometry& g, const std::vect
                                        DenseMatrix* K) const {
   const int n = g.nodes, nc = componentsPerNode(), modes = static_cast<int>(g.hourglass.size()) / n;
   const double k = g.hourglassStiffness;
-  double energy = 0.0, q[3];
-  const bool hex8 = n == 8 && nc == 3 && modes == 4;  // HEX8 in 3D (QUAD4 in plane strain, 1 mode, below)
-  if (hex8) energy = hourglassForce<8, 3, 4>(g.hourglass.data(), k, u.data(), f.data());
-  for (int m = 0; m < modes && !hex8; ++m) {
-    const double* gm = &g.hourglass[size_t(m) * n];
-    hourglassAmplitude(g, m, nc, u, q);
-    for (int i = 0; i < nc; ++i) energy += 0.5 * k * q[i] * q[i];
-    for (int a = 0; a < n; ++a)
-      for (int i = 0; i < nc; ++i) f[size_t(a * nc + i)] += k * gm[a] * q[i];
-  }
+  const double energy = n == 8 && nc == 3 && modes == 4  // HEX8 in 3D; QUAD4 in plane strain (1 mode) at run time
+                            ? hourglassForce<8, 3, 4>(n, nc, modes, g.hourglass.data(), k, u.data(), f.data())
+                            : hourglassForce<0, 0, 0>(n, nc, modes, g.hourglass.data(), k, u.data(), f.data());
   for (int m = 0; m < modes && K; ++m) {
     const double* gm = &g.hourglass[size_t(m) * n];
     for (int a = 0; a < n; ++a)
