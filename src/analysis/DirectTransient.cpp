@@ -102,7 +102,7 @@ Teuchos::ParameterList DirectTransient::parameters() {
   declareInt(p, "Critical Step Interval", 100,
              "central differences with finite-strain blocks: every this many steps the critical step "
              "is estimated again on the deformed mesh (the elements' tangent against their lumped "
-             "mass: about 30 internal forces' cost per estimate) and 'Stability Check' decides again "
+             "mass: 2 to 12 internal forces' cost per estimate) and 'Stability Check' decides again "
              "(src/analysis/DeformedStability.hpp); lower it for violent compression",
              Range::positive());
   declareDouble(p, "Alpha", -0.1,

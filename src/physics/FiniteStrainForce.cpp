@@ -398,18 +398,16 @@ double FiniteStrainForce::termsNorm(const Vector& u) const {
 }
 
 double FiniteStrainForce::stateEigenvalueBound(const Vector& u) const {
-  double local = 0.0;
-  DenseMatrix M;
+  ElementEigenvalueMaximum maximum;
   std::vector<char> active;
   const std::string failure = forEachElement(onColumns(u), true, [&](const Element& e, const std::vector<double>&,
                                                                      const DenseMatrix& K, double) {
-    const int n = static_cast<int>(e.lumpedMass.size());
-    M.resize(n, n);
-    active.assign(size_t(n), 0);
-    for (int i = 0; i < n; ++i) M(i, i) = e.lumpedMass[size_t(i)], active[size_t(i)] = e.col[size_t(i)] >= 0;
-    local = std::max(local, elementEigenvalue(K, M, active));
+    active.resize(e.col.size());
+    for (size_t i = 0; i < e.col.size(); ++i) active[i] = e.col[i] >= 0;
+    maximum.add(K, e.lumpedMass, active);
   }, false, true);
   throwIfFailed(failure);
+  const double local = maximum.value();
   double global = 0.0;
   Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_MAX, local, Teuchos::outArg(global));
   return global;
