@@ -6,7 +6,9 @@ for n = 4, 8, 16, 32; the time step scaled with the element), the standard QUAD4
 beside them. --law johnson-cook: input/taylor_bar_johnson_cook_axisymmetric.xml (42CrMo4, 287 m/s,
 adiabatic heating) on the F-bar meshes only (n = 5, 4, 8, 16 by default; 5 x 51 is the published
 mesh's density), with the largest plastic strain and temperature. For each run: the final impact-face radius
-and length (rear face minus impact face), the plastic work over E0, the balance, the wall time; the
+and length (rear face minus impact face), the range the length sweeps once the bar has left the
+wall (its free axial vibration: the length at 80 us is one phase of it), the plastic work over
+E0, the balance, the wall time; the
 successive differences' observed order and the Richardson extrapolation of the F-bar series.
 Writes OUT/taylor_bar.csv and OUT/taylor_bar.png, prints a Markdown table.
     taylor_bar_study.py [--build build] [--out results/study/taylor-bar] [--law j2] [--n 4 8 16]"""
@@ -51,13 +53,29 @@ def run(choc, out_dir, n, formulation="F-bar", order=1, deck="taylor_bar_axisymm
                         ["TEMPERATURE"].max())
     except KeyError:
         hottest = float("nan")
+    lengths = [(L0 + rear - centre) * 1e3 for rear, centre in zip(h["REAR:DY"], h["CENTRE:DY"])]
+    free = free_flight(h["wall:force"], lengths)
     return {"mesh": f"{'QUAD8' if order == 2 else 'QUAD4'} {formulation}, {3.2 / n:.2g} mm", "n": n,
             "radius": (R0 + h["EDGE:DX"][-1]) * 1e3,
-            "length": (L0 + h["REAR:DY"][-1] - h["CENTRE:DY"][-1]) * 1e3,
+            "length": lengths[-1],
+            "lift-off [us]": h["time"][free["index"]] * 1e6 if free else float("nan"),
+            "free length min": free["min"] if free else float("nan"),
+            "free length max": free["max"] if free else float("nan"),
             "strain": float(fields["EQ_PLASTIC_STRAIN"].max()), "temperature": hottest,
             "plastic work / E0": h["energy:dissipated"][-1] / e0,
             "balance min / E0": min(h["energy:balance"]) / e0, "balance max / E0": max(h["energy:balance"]) / e0,
             "wall [s]": wall, "history": h}
+
+
+def free_flight(force, lengths):
+    """After the bar's last step on the wall (wall force zero from then to the end), its length
+    rings in its free axial vibration (period about 2 L / c): the range it sweeps, and the index
+    of the first free step. None when the bar still touches the wall at the end."""
+    touching = [i for i, f in enumerate(force) if f > 0]
+    if not touching or touching[-1] == len(force) - 1:
+        return None
+    first = touching[-1] + 1
+    return {"index": first, "min": min(lengths[first:]), "max": max(lengths[first:])}
 
 
 def extrapolate(rows, key):
@@ -81,6 +99,11 @@ def plot(rows, path, law):
     for ax, key in zip(axes, ("radius", "length")):
         fb = sorted((r for r in rows if "F-bar" in r["mesh"] and "QUAD4" in r["mesh"]), key=lambda r: r["n"])
         ax.semilogx([3.2 / r["n"] for r in fb], [r[key] for r in fb], "o-", label="QUAD4 F-bar")
+        ringing = [r for r in fb if key == "length" and not math.isnan(r["lift-off [us]"])]
+        if ringing:
+            ax.vlines([3.2 / r["n"] for r in ringing], [r["free length min"] for r in ringing],
+                      [r["free length max"] for r in ringing], color="C0", alpha=0.5,
+                      label="swept after lift-off (free vibration)")
         for r in rows:
             if r not in fb:
                 ax.plot(3.2 / r["n"], r[key], "s", label=r["mesh"])
@@ -108,10 +131,13 @@ def main():
     fbar = [run(choc, a.out, n, deck=law["deck"]) for n in ns]
     others = [run(choc, a.out, 8, "standard"), run(choc, a.out, 8, "standard", order=2)] if a.law == "j2" else []
     rows = fbar + others
-    print("| mesh | radius [mm] | length [mm] | largest alpha | largest T | plastic work / E0 | balance / E0 | wall [s] |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| mesh | radius [mm] | length [mm] | after lift-off [mm] | largest alpha | largest T | plastic work / E0 | "
+          "balance / E0 | wall [s] |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
-        print(f"| {r['mesh']} | {r['radius']:.4f} | {r['length']:.4f} | {r['strain']:.3f} | {r['temperature']:.1f} | "
+        free = (f"{r['free length min']:.3f}-{r['free length max']:.3f} from {r['lift-off [us]']:.0f} us"
+                if not math.isnan(r["lift-off [us]"]) else "on the wall")
+        print(f"| {r['mesh']} | {r['radius']:.4f} | {r['length']:.4f} | {free} | {r['strain']:.3f} | {r['temperature']:.1f} | "
               f"{r['plastic work / E0']:.4f} | {r['balance min / E0']:.1e} to {r['balance max / E0']:.1e} | "
               f"{r['wall [s]']:.0f} |")
     for key in ("radius", "length"):
