@@ -532,8 +532,10 @@ void DirectTransient::summarize(RunSummary& s, const TransientSummary& sum, cons
   s.set("steps", sum.steps);
   s.set("smallest_step", sum.smallestStep);
   if (s_.explicitScheme) {
-    s.set("substeps_per_step", b_->explicitPlan->substeps);
+    s.set("substeps_per_step", b_->explicitPlan->substeps);  // at the start
     s.set("substep", s_.time.timeStep / b_->explicitPlan->substeps);
+    s.set("substeps_taken", sum.substeps);  // in all: the deformed mesh's estimates may change the count
+    s.set("substeps_largest", sum.maxSubsteps);
     s.set("critical_step", b_->explicitPlan->criticalStep);
     s.set("frequency_bound/omega_max", b_->explicitPlan->bound.omegaMax);
     s.set("frequency_bound/element", b_->explicitPlan->bound.element);
@@ -658,7 +660,11 @@ void DirectTransient::recordFigures(const TransientSummary& sum, const Structura
 void DirectTransient::logFigures(const TransientSummary& sum, const Model& model,
                                    Teuchos::StackedTimer& timer) const {
   const Figures& f = figures_;
-  if (s_.explicitScheme) {
+  if (s_.explicitScheme && sum.maxSubsteps > b_->explicitPlan->substeps)
+    log() << format("  %d steps, %lld sub-steps in all (%d per step at the start, up to %d on the deformed "
+                    "mesh; the smallest %.3e s), no linear solve\n",
+                    sum.steps, sum.substeps, b_->explicitPlan->substeps, sum.maxSubsteps, sum.smallestStep);
+  else if (s_.explicitScheme) {
     const double each = s_.time.timeStep / b_->explicitPlan->substeps;  // the last step may be cut to End Time
     const std::string last = sum.smallestStep < each * (1 - 1e-9)
                                  ? format("; the last step's %.3e s", sum.smallestStep) : std::string();

@@ -84,6 +84,8 @@ Advance CentralDifferenceStepper::advance(const NominalStep& s, StepControl& /*c
     sum.smallestStep = std::min(sum.smallestStep, (s.target - s.t) / substeps_);
   }
   const double h = (s.target - s.t) / substeps_;
+  sum.substeps += substeps_;
+  sum.maxSubsteps = std::max(sum.maxSubsteps, substeps_);
   try {
     takeSubsteps(s.t, s.target, h);
   } catch (const InadmissibleState& e) {

@@ -52,6 +52,8 @@ struct TransientSummary {
   int backtracks = 0;        // Newton corrections halved because they inverted an element
   int maxNewtonPerStep = 0;
   double smallestStep = 0.0;
+  long long substeps = 0;  // explicit: the sub-steps taken in all (the deformed mesh's may vary)
+  int maxSubsteps = 0;     // explicit: the most in one step
 };
 
 // The nominal step a stepper is asked to take: number n of the grid, from the accepted state

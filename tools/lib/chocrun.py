@@ -333,8 +333,8 @@ def exact_error(summary, column, which="max"):
 
 
 def substeps(summary):
-    """The (sub-)steps an analysis took: steps x substeps_per_step for the explicit scheme,
-    substeps_taken for a modal transient, steps otherwise."""
+    """The (sub-)steps an analysis took: substeps_taken (the explicit and the modal transients),
+    else steps x substeps_per_step (an explicit summary written before substeps_taken), else steps."""
     if "substeps_taken" in summary:
         return int(summary["substeps_taken"])
     return int(summary_value(summary, "steps")) * int(summary.get("substeps_per_step", 1))

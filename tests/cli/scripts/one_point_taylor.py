@@ -17,6 +17,7 @@ Checked:
     mean gradient and the hourglass vectors are frame invariant.
 usage: one_point_taylor.py CHOC SOURCE_DIR WORK_DIR"""
 import os
+import re
 import sys
 
 import numpy as np
@@ -29,6 +30,7 @@ R0, L0 = 3.2e-3, 32.4e-3
 POINTS = ("EDGE", "REAR", "CENTRE")
 os.makedirs(work, exist_ok=True)
 failures = []
+runs = {}  # label: (the run, its summary)
 
 
 def shape(h):
@@ -37,9 +39,21 @@ def shape(h):
 
 def finish_run(d, label, ranks=1):
     out = os.path.join(work, label)
-    chocrun.run(choc, chocrun.write_deck(d, os.path.join(work, label + ".xml")), out, ranks=ranks)
-    chocrun.require_completed(chocrun.read_summary(out, "impact"))
+    r = chocrun.run(choc, chocrun.write_deck(d, os.path.join(work, label + ".xml")), out, ranks=ranks)
+    runs[label] = (r, chocrun.require_completed(chocrun.read_summary(out, "impact")))
     return chocrun.read_history(out, "impact")
+
+
+def substeps_in_log(text, steps, initial, dt):
+    """The sub-steps a run took by its log: `initial` per step until each line "t = T s: the
+    deformed mesh's stable step is ...: N sub-step(s) per step", N from the step starting at T."""
+    total, before, per, largest = 0, 0, initial, initial
+    for m in re.finditer(r"t = ([0-9.e+-]+) s: the deformed mesh's stable step is [0-9.e+-]+ s: (\d+) sub-step", text):
+        k = round(float(m.group(1)) / dt)
+        total += per * (k - before)
+        before, per = k, int(m.group(2))
+        largest = max(largest, per)
+    return total + per * (steps - before), largest
 
 
 def quarter(n, ranks=1, full=0, R=None, end=None):
@@ -74,6 +88,13 @@ if not ratio <= 0.10:
 if not h["energy:dissipated"][-1] >= 0.97 * e0:
     failures.append(f"plastic work {h['energy:dissipated'][-1] / e0:.4f} E0, below 0.97")
 r1, l1 = shape(h)
+run4, s4 = runs["one_point_n4_full0_np1"]
+logged, largest = substeps_in_log(run4.stdout + run4.stderr, s4["steps"], s4["substeps_per_step"], s4["time_step"])
+print(f"sub-steps: {s4['substeps_taken']} in the summary (at most {s4['substeps_largest']} per step), {logged} by the "
+      f"log (at most {largest}), {s4['steps']} steps")
+if not (s4["substeps_taken"] == logged and s4["substeps_largest"] == largest and logged > s4["steps"]):
+    failures.append(f"sub-steps: summary {s4['substeps_taken']} (largest {s4['substeps_largest']}), log {logged} "
+                    f"(largest {largest}), steps {s4['steps']}")
 (ra, la), (ra4, la4) = axisymmetric(2), axisymmetric(4)
 for what, v1, va, va4 in (("radius", r1, ra, ra4), ("length", l1, la, la4)):
     est = abs(va - va4)
