@@ -125,12 +125,9 @@ void ElementEigenvalueMaximum::add(const DenseMatrix& K, const std::vector<doubl
     largest_ = std::max(largest_, early);
     return;
   }
+  const double mu = largest_ * (1.0 + kTieMargin);
   double bound = 0.0;
-  if (largest_ > 0.0 && gershgorinBelow(A_.data(), n, largest_ * (1.0 + kTieMargin), bound)) {
-    below_ = std::max(below_, bound);
-    return;
-  }
-  if (largest_ > 0.0 && choleskyBelow(A_.data(), n, largest_ * (1.0 + kTieMargin), R_, bound)) {
+  if (largest_ > 0.0 && (gershgorinBelow(A_.data(), n, mu, bound) || choleskyBelow(A_.data(), n, mu, R_, bound))) {
     below_ = std::max(below_, bound);
     return;
   }
