@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "materials/NearScalarLog.hpp"
 #include "materials/SymmetricEigen.hpp"
 
 namespace choc {
@@ -237,6 +238,7 @@ void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTang
   Mat3 be = multiply(FG, transpose(F));
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j) be[i][j] = be[j][i] = 0.5 * (be[i][j] + be[j][i]);
+  if (!withTangent && respondFiniteBySeries(F, Fi, J, be, old, dt, out)) return;
   const SymmetricEigen eig = symmetricEigen(be);
   double x[3], eps[3], e[3], n[3] = {0, 0, 0};
   for (int A = 0; A < 3; ++A) {
@@ -275,6 +277,37 @@ void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTang
   if (!withTangent) return;
   const double theta = elastic ? 1.0 : r.theta, thetabar = elastic ? 0.0 : r.thetabar;
   finiteTangent(eig, x, n, theta, thetabar, FG, Fi, out);
+}
+
+// The same update with eps = log(b_e) / 2 as a matrix: its trace ln(det b_e) / 2, its deviator
+// e = log(bbar) / 2; tau = kappa tr I + 2 mu theta e (the principal-axis sum above, summed), and
+// at a yielding point b_e = exp(2 (eps - dgamma e / ||e||)) = exp(2 tr / 3) exp(2 (1 - dgamma /
+// ||e||) e), all of them coaxial.
+bool J2Plasticity::respondFiniteBySeries(const Mat3& F, const Mat3& Fi, double J, const Mat3& be, const double* old,
+                                         double dt, J2Response& out) const {
+  Mat3 logBar;
+  double lnDet = 0.0;
+  if (!logNearScalar(be, logBar, lnDet)) return false;
+  const double tr = 0.5 * lnDet, dev = trace(logBar) / 3;
+  Mat3 e;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) e[i][j] = 0.5 * (logBar[i][j] - (i == j ? dev : 0.0));
+  const double normE = std::sqrt(contract(e, e));
+  const Return r = radialReturn(normE, old, dt);
+  Mat3 tauM;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) tauM[i][j] = 2 * mu_ * r.theta * e[i][j] + (i == j ? kappa_ * tr : 0.0);
+  out.P = multiply(tauM, transpose(Fi));
+  out.cauchy = scaled(tauM, 1 / J);
+  if (r.yielded) {
+    const Mat3 beNew = scaled(expSmall(scaled(e, 2 * (1 - r.dgamma / normE))), std::exp(2 * tr / 3));
+    stateFromSymmetric(multiply(multiply(Fi, beNew), transpose(Fi)), out.state.data());
+  } else {
+    stateFromSymmetric(symmetricFromState(old), out.state.data());
+  }
+  std::copy(old + kJ2BackStress, old + kJ2BackStress + 6, out.state.data() + kJ2BackStress);  // zero here
+  finishPoint(F, old, r, tr, normE, out);
+  return true;
 }
 
 // D = d tau / d b_e^tr on the principal axes (header), then dP/dF by the chain

@@ -119,6 +119,10 @@ class J2Plasticity {
   double solveReturn(double trial, double f0, const double* old, double dt, FlowStress::Value& at) const;
   void respondFinite(const Mat3& F, const double* old, bool withTangent, bool elastic, double dt,
                      J2Response& out) const;
+  // respondFinite without the tangent and without b_e's principal axes (NearScalarLog.hpp):
+  // false, nothing done, when b_e is too far from a multiple of I for its series.
+  bool respondFiniteBySeries(const Mat3& F, const Mat3& Fi, double J, const Mat3& be, const double* old, double dt,
+                             J2Response& out) const;
   void respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic, double dt,
                     J2Response& out) const;
   void finishPoint(const Mat3& F, const double* old, const Return& r, double tr, double normE,

@@ -116,7 +116,7 @@ void FiniteStrainForce::layoutArchive(const Mesh& mesh,
 
 void FiniteStrainForce::commit() {
   if (!plastic_ || !trialValid_) return;
-  committed_ = trial_;
+  committed_.swap(trial_);  // the force wrote every element's trial state: no copy needed
   committedTime_ = trialTime_;
   double work = 0.0;
   Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_SUM, trialWork_, Teuchos::outArg(work));
