@@ -99,6 +99,7 @@ class FiniteStrainForce : public InternalForce {
   // plastic work to trialWork_. Returns this rank's first failure ("" if none); the callers
   // make it collective.
   void prefetch(const Element& e, bool trial) const;
+  void packElements();  // the arrays the force reads, in element order (FiniteStrainForce.cpp)
   template <class Visit>
   std::string forEachElement(const Vector& uCol, bool withTangent, Visit&& visit, bool trial = false,
                              bool elasticTangent = false) const;
