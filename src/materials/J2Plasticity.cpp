@@ -259,21 +259,14 @@ void J2Plasticity::respondFinite(const Mat3& F, const double* old, bool withTang
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) tauM[i][j] += tau * v[i][A] * v[j][A];
   }
-  out.P = multiply(tauM, transpose(Fi));
-  out.cauchy = scaled(tauM, 1 / J);
-  if (r.yielded) {  // C_p^-1 = F^-1 b_e F^-T with b_e = exp(2 (eps - dgamma n)) on the trial's axes
-    Mat3 beNew{};
+  Mat3 beNew{};
+  if (r.yielded)  // b_e = exp(2 (eps - dgamma n)) on the trial's axes
     for (int A = 0; A < 3; ++A) {
       const double xe = std::exp(2 * (eps[A] - r.dgamma * n[A]));
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) beNew[i][j] += xe * v[i][A] * v[j][A];
     }
-    stateFromSymmetric(multiply(multiply(Fi, beNew), transpose(Fi)), out.state.data());
-  } else {  // elastic: C_p^-1 unchanged (F^-1 b_e^trial F^-T = G exactly; without the round-off)
-    stateFromSymmetric(symmetricFromState(old), out.state.data());
-  }
-  std::copy(old + kJ2BackStress, old + kJ2BackStress + 6, out.state.data() + kJ2BackStress);  // zero here
-  finishPoint(F, old, r, tr, normE, out);
+  finishFinitePoint(F, Fi, J, tauM, r.yielded ? &beNew : nullptr, old, r, tr, normE, out);
   if (!withTangent) return;
   const double theta = elastic ? 1.0 : r.theta, thetabar = elastic ? 0.0 : r.thetabar;
   finiteTangent(eig, x, n, theta, thetabar, FG, Fi, out);
@@ -288,26 +281,33 @@ bool J2Plasticity::respondFiniteBySeries(const Mat3& F, const Mat3& Fi, double J
   Mat3 logBar;
   double lnDet = 0.0;
   if (!logNearScalar(be, logBar, lnDet)) return false;
-  const double tr = 0.5 * lnDet, dev = trace(logBar) / 3;
-  Mat3 e;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) e[i][j] = 0.5 * (logBar[i][j] - (i == j ? dev : 0.0));
+  const double tr = 0.5 * lnDet;
+  const Mat3 e = scaled(logBar, 0.5);  // logBar is a deviator
   const double normE = std::sqrt(contract(e, e));
   const Return r = radialReturn(normE, old, dt);
   Mat3 tauM;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) tauM[i][j] = 2 * mu_ * r.theta * e[i][j] + (i == j ? kappa_ * tr : 0.0);
-  out.P = multiply(tauM, transpose(Fi));
-  out.cauchy = scaled(tauM, 1 / J);
-  if (r.yielded) {
-    const Mat3 beNew = scaled(expSmall(scaled(e, 2 * (1 - r.dgamma / normE))), std::exp(2 * tr / 3));
-    stateFromSymmetric(multiply(multiply(Fi, beNew), transpose(Fi)), out.state.data());
-  } else {
+  Mat3 beNew{};
+  if (r.yielded) beNew = scaled(expSmall(scaled(e, 2 * (1 - r.dgamma / normE))), std::exp(2 * tr / 3));
+  finishFinitePoint(F, Fi, J, tauM, r.yielded ? &beNew : nullptr, old, r, tr, normE, out);
+  return true;
+}
+
+// Both finite-strain updates' end: P = tau F^-T, sigma = tau / J, C_p^-1 = F^-1 b_e F^-T at a
+// yielding point (beNew), else unchanged (F^-1 b_e^trial F^-T = G exactly; without the
+// round-off), then the point's scalars.
+void J2Plasticity::finishFinitePoint(const Mat3& F, const Mat3& Fi, double J, const Mat3& tau, const Mat3* beNew,
+                                     const double* old, const Return& r, double tr, double normE,
+                                     J2Response& out) const {
+  out.P = multiply(tau, transpose(Fi));
+  out.cauchy = scaled(tau, 1 / J);
+  if (beNew)
+    stateFromSymmetric(multiply(multiply(Fi, *beNew), transpose(Fi)), out.state.data());
+  else
     stateFromSymmetric(symmetricFromState(old), out.state.data());
-  }
   std::copy(old + kJ2BackStress, old + kJ2BackStress + 6, out.state.data() + kJ2BackStress);  // zero here
   finishPoint(F, old, r, tr, normE, out);
-  return true;
 }
 
 // D = d tau / d b_e^tr on the principal axes (header), then dP/dF by the chain

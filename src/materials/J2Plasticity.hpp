@@ -123,6 +123,8 @@ class J2Plasticity {
   // false, nothing done, when b_e is too far from a multiple of I for its series.
   bool respondFiniteBySeries(const Mat3& F, const Mat3& Fi, double J, const Mat3& be, const double* old, double dt,
                              J2Response& out) const;
+  void finishFinitePoint(const Mat3& F, const Mat3& Fi, double J, const Mat3& tau, const Mat3* beNew,
+                         const double* old, const Return& r, double tr, double normE, J2Response& out) const;
   void respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic, double dt,
                     J2Response& out) const;
   void finishPoint(const Mat3& F, const double* old, const Return& r, double tr, double normE,
