@@ -28,13 +28,22 @@ void FBarTangent::addPoint(const std::vector<double>& G, const Mat3& F, const Ma
                            double s, const Mat3& P, const double (*A)[9], double w, DenseMatrix& K) {
   const size_t n = size_t(n_);
   Point& t = point_;
-  t.d.assign(n, 0.0), t.e.resize(n), t.PG.assign(n, 0.0), t.Dp.resize(n), t.DP.resize(9 * n), t.H.assign(9 * n, 0.0);
+  t.d.assign(n, 0.0), t.e.resize(n), t.PG.assign(n, 0.0), t.Dp.resize(n), t.DP.resize(9 * n);
   t.row.resize(n), t.c.resize(3 * n);
   t.p = 0.0;
   for (int i = 0; i < 3; ++i)
     for (int J2 = 0; J2 < 3; ++J2) t.p += P[i][J2] * Fbar[i][J2] / 3;
   bool rows = true;  // then F^-1 dF_k (H) is not needed
   for (size_t k = 0; k < n; ++k) rows = (t.row[k] = singleRow(&G[9 * k])) >= 0 && rows;
+  if (!rows) t.H.assign(9 * n, 0.0);
+  // A : F and P : F, once: DFbar_k = s (dF_k + e_k / 3 F) makes DP_k = s (A : dF_k + e_k / 3 A : F)
+  // and P : DFbar_k = s (P : dF_k + e_k / 3 P : F), with A : dF_k over dF_k's nonzero entries.
+  double AF[9], PF = 0.0;
+  for (int r = 0; r < 9; ++r) {
+    AF[r] = 0.0;
+    for (int c = 0; c < 9; ++c) AF[r] += A[r][c] * F[c / 3][c % 3];
+    PF += P[r / 3][r % 3] * F[r / 3][r % 3];
+  }
   for (size_t k = 0; k < n; ++k) {
     const double* g = &G[9 * k];
     double* h = &t.H[9 * k];  // F^-1 dF_k
@@ -47,15 +56,21 @@ void FBarTangent::addPoint(const std::vector<double>& G, const Mat3& F, const Ma
         for (int Jr = 0; Jr < 3 && !rows; ++Jr) h[3 * Jr + L] += Finv[Jr][i] * gi;
       }
     t.e[k] = B_[k] - t.d[k];
-    double Fb[9];  // dFbar / du_k
-    for (int r = 0; r < 9; ++r) Fb[r] = s * (g[r] + t.e[k] / 3 * F[r / 3][r % 3]);
-    double dp = 0.0;
-    for (int r = 0; r < 9; ++r) {
-      double v = 0.0;
-      for (int c = 0; c < 9; ++c) v += A[r][c] * Fb[c];
-      t.DP[9 * k + size_t(r)] = v;
-      dp += v * Fbar[r / 3][r % 3] + P[r / 3][r % 3] * Fb[r];
+    const double third = t.e[k] / 3;
+    double dp = s * (t.PG[k] + third * PF);  // P : DFbar_k
+    double* DP = &t.DP[9 * k];
+    if (t.row[k] >= 0) {  // dF_k's entries on its one row
+      const int c0 = 3 * t.row[k];
+      for (int r = 0; r < 9; ++r)
+        DP[r] = s * (A[r][c0] * g[c0] + A[r][c0 + 1] * g[c0 + 1] + A[r][c0 + 2] * g[c0 + 2] + third * AF[r]);
+    } else {
+      for (int r = 0; r < 9; ++r) {
+        double Ag = 0.0;
+        for (int c = 0; c < 9; ++c) Ag += A[r][c] * g[c];
+        DP[r] = s * (Ag + third * AF[r]);
+      }
     }
+    for (int r = 0; r < 9; ++r) dp += DP[r] * Fbar[r / 3][r % 3];
     t.Dp[k] = dp / 3;
     for (int i = 0; i < 3 && rows; ++i)  // c_k,i = sum_L g_k,(row L) F^-1_Li
       t.c[3 * k + size_t(i)] = g[3 * t.row[k]] * Finv[0][i] + g[3 * t.row[k] + 1] * Finv[1][i] +
@@ -87,31 +102,55 @@ void FBarTangent::addPairs(const std::vector<double>& G, double s, double J, dou
   }
 }
 
+namespace {
+
+// One row a of addPairsByRows over the columns b (unit strides, independent: vectorised).
+struct RowTerms {
+  double g0, g1, g2, alpha, beta, wp, da, wJ;
+};
+void addRow(int n, const RowTerms& t, const double* __restrict D0, const double* __restrict D1,
+            const double* __restrict D2, const double* __restrict e, const double* __restrict Dp,
+            const double* __restrict d, const double* __restrict cb, const double* __restrict crow,
+            double* __restrict Ka, double* __restrict Da) {
+  const double g0 = t.g0, g1 = t.g1, g2 = t.g2, alpha = t.alpha, beta = t.beta, wp = t.wp, da = t.da, wJ = t.wJ;
+  for (int b = 0; b < n; ++b) {
+    const double trHH = cb[b] * crow[b];
+    Ka[b] += D0[b] * g0 + D1[b] * g1 + D2[b] * g2 + alpha * e[b] + beta * Dp[b] + wp * trHH;
+    Da[b] += da * d[b] - wJ * trHH;
+  }
+}
+
+}  // namespace
+
 // The same when every DOF moves one row of F (row_k): DP : dF_a reads row_a's three entries, and
 // F^-1 dF_k = F^-1 e_row ⊗ g is of rank one, so tr(F^-1 dF_b F^-1 dF_a) = c_b,row_a c_a,row_b.
+// Row a of K is then alpha_a e + beta_a Dp + w s (DP : dF_a) + w p trHH over the columns b, with
+// DP's and c's entries copied column-contiguous first (the loop over b reads only unit strides).
 void FBarTangent::addPairsByRows(const std::vector<double>& G, double s, double J, double w, DenseMatrix& K) {
   const size_t n = size_t(n_);
-  const Point& t = point_;
+  Point& t = point_;
+  t.DPt.resize(9 * n), t.ct.resize(3 * n), t.crow.resize(n);
+  for (size_t b = 0; b < n; ++b) {
+    for (size_t r = 0; r < 9; ++r) t.DPt[r * n + b] = t.DP[9 * b + r];
+    for (size_t r = 0; r < 3; ++r) t.ct[r * n + b] = t.c[3 * b + r];
+  }
   const double* __restrict e = t.e.data();
   const double* __restrict Dp = t.Dp.data();
-  const double* __restrict DP = t.DP.data();
-  const double* __restrict c = t.c.data();
   const double* __restrict d = t.d.data();
-  const int* __restrict row = t.row.data();
+  double* __restrict crow = t.crow.data();
+  const double ws = w * s, wp = w * t.p, wJ = w * J;
   for (size_t a = 0; a < n; ++a) {
-    const size_t ra = size_t(row[a]);
+    const size_t ra = size_t(t.row[a]);
     const double* ga = &G[9 * a + 3 * ra];
-    const double g0 = ga[0], g1 = ga[1], g2 = ga[2], PGa = t.PG[a], da = d[a], Ba = B_[a];
-    const double* __restrict ca = &c[3 * a];
-    double* __restrict Ka = &K(int(a), 0);
-    double* __restrict Da = &dilation_[a * n];
-    for (size_t b = 0; b < n; ++b) {
-      const double* DPb = &DP[9 * b + 3 * ra];
-      const double DPg = DPb[0] * g0 + DPb[1] * g1 + DPb[2] * g2;
-      const double trHH = c[3 * b + ra] * ca[row[b]];
-      Ka[b] += pairTerm(w, s, t.p, e[b], PGa, DPg, Dp[b], da, trHH, Ba);
-      Da[b] += w * J * (d[b] * da - trHH);
-    }
+    const double g0 = ws * ga[0], g1 = ws * ga[1], g2 = ws * ga[2];
+    const double alpha = ws / 3 * t.PG[a], beta = w * (B_[a] - t.d[a]), da = wJ * d[a];
+    const double* __restrict D0 = &t.DPt[(3 * ra) * n];
+    const double* __restrict D1 = D0 + n;
+    const double* __restrict D2 = D1 + n;
+    const double* __restrict cb = &t.ct[ra * n];
+    for (size_t b = 0; b < n; ++b) crow[b] = t.c[3 * a + size_t(t.row[b])];  // c_a,row_b
+    const RowTerms terms{g0, g1, g2, alpha, beta, wp, da, wJ};
+    addRow(int(n), terms, D0, D1, D2, e, Dp, d, cb, crow, &K(int(a), 0), &dilation_[a * n]);
   }
 }
 

@@ -49,6 +49,7 @@ class FBarTangent {
   struct Point {
     double p = 0.0;
     std::vector<double> d, e, PG, Dp, DP, H, c;
+    std::vector<double> DPt, ct, crow;  // addPairsByRows' column-contiguous copies of DP and c
     std::vector<int> row;
   };
   static Point& scratch();

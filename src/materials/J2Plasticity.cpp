@@ -49,6 +49,39 @@ void recordIncrement(const Mat3& F, const double* old, J2Response& out) {
   out.plasticWork = work;
 }
 
+// D_ikmq = sum_AB dtdx_AB v_iA v_kA v_mB v_qB + sum_(A != B) c_AB / 2 (v_iA v_mA v_qB v_kB +
+// v_iA v_qA v_mB v_kB), summed as sum_A Nd_A,ik Q_A,mq (Nd_A = v_A (x) v_A, Q_A = sum_B dtdx_AB
+// Nd_B) plus, for A != B, M_ik (c_AB / 2) (M_mq + M_qm) with M = v_A (x) v_B: the dyads formed
+// once, a sixth of the four-index sum's products.
+void principalAxesTangent(const Mat3& v, const double (*dtdx)[3], const double (*c)[3], double (*D)[3][3][3]) {
+  double Nd[3][3][3], Q[3][3][3];
+  for (int A = 0; A < 3; ++A)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) Nd[A][i][k] = v[i][A] * v[k][A];
+  for (int A = 0; A < 3; ++A)
+    for (int m = 0; m < 3; ++m)
+      for (int q = 0; q < 3; ++q)
+        Q[A][m][q] = dtdx[A][0] * Nd[0][m][q] + dtdx[A][1] * Nd[1][m][q] + dtdx[A][2] * Nd[2][m][q];
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k)
+      for (int m = 0; m < 3; ++m)
+        for (int q = 0; q < 3; ++q)
+          D[i][k][m][q] = Nd[0][i][k] * Q[0][m][q] + Nd[1][i][k] * Q[1][m][q] + Nd[2][i][k] * Q[2][m][q];
+  for (int A = 0; A < 3; ++A)
+    for (int B = 0; B < 3; ++B) {
+      if (A == B || c[A][B] == 0.0) continue;
+      double M[3][3], S[3][3];
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) M[i][k] = v[i][A] * v[k][B];
+      for (int m = 0; m < 3; ++m)
+        for (int q = 0; q < 3; ++q) S[m][q] = 0.5 * c[A][B] * (M[m][q] + M[q][m]);
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k)
+          for (int m = 0; m < 3; ++m)
+            for (int q = 0; q < 3; ++q) D[i][k][m][q] += M[i][k] * S[m][q];
+    }
+}
+
 Mat3 scaled(Mat3 a, double s) {
   for (auto& row : a)
     for (double& v : row) v *= s;
@@ -323,19 +356,7 @@ void J2Plasticity::finiteTangent(const SymmetricEigen& eig, const double* x, con
       c[A][B] = A == B ? 0.0 : 2 * mu_ * theta * logSlope(x[A], x[B]);
     }
   static thread_local double D[3][3][3][3], T[3][3][3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k)
-      for (int m = 0; m < 3; ++m)
-        for (int q = 0; q < 3; ++q) {
-          double d = 0.0;
-          for (int A = 0; A < 3; ++A)
-            for (int B = 0; B < 3; ++B) {
-              d += dtdx[A][B] * v[i][A] * v[k][A] * v[m][B] * v[q][B];
-              if (A != B)
-                d += 0.5 * c[A][B] * (v[i][A] * v[m][A] * v[q][B] * v[k][B] + v[i][A] * v[q][A] * v[m][B] * v[k][B]);
-            }
-          D[i][k][m][q] = d;
-        }
+  principalAxesTangent(v, dtdx, c, D);
   for (int i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k)
       for (int m = 0; m < 3; ++m)
