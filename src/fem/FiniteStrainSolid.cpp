@@ -232,7 +232,7 @@ void addTangent(Kinematics k, const PointView& p, const std::vector<double>& A, 
       const double ga = w * g[size_t(r) * n + a];
       if (ga == 0.0) continue;
       const int row = a * nc + rows[size_t(r)].comp;
-      for (int j = 0; j < nd; ++j) K(row, j) += ga * AG[size_t(j)];
+      for (int j = row; j < nd; ++j) K(row, j) += ga * AG[size_t(j)];  // the upper triangle (mirrored once)
     }
   }
 }
@@ -510,7 +510,12 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
     firstElasticity(kin_, s, plastic(), A);
     addTangent(kin_, p, A, w, *K);
   }
-  if (fbarTangent) fbarTangent->finish(*K);
+  if (fbarTangent)
+    fbarTangent->finish(*K);
+  else if (K)  // every material's dP/dF has the major symmetry, so K = sum w G^T A G is symmetric (a
+               // material without it would fail its element's central-difference tangent tests)
+    for (int i = 0; i < nd; ++i)
+      for (int j = 0; j < i; ++j) (*K)(i, j) = (*K)(j, i);
   if (onePoint_) {
     const double hg = addHourglass(g, u, f, K);
     energy += hg;
