@@ -37,7 +37,7 @@ void FBarTangent::addPoint(const std::vector<double>& G, const Mat3& F, const Ma
   for (size_t k = 0; k < n; ++k) rows = (t.row[k] = singleRow(&G[9 * k])) >= 0 && rows;
   if (!rows) t.H.assign(9 * n, 0.0);
   // A : F and P : F, once: DFbar_k = s (dF_k + e_k / 3 F) makes DP_k = s (A : dF_k + e_k / 3 A : F)
-  // and P : DFbar_k = s (P : dF_k + e_k / 3 P : F), with A : dF_k over dF_k's nonzero entries.
+  // and P : DFbar_k = s (P : dF_k + e_k / 3 P : F), with A : dF_k over dF_k's one row when it has one.
   double AF[9], PF = 0.0;
   for (int r = 0; r < 9; ++r) {
     AF[r] = 0.0;
@@ -46,7 +46,7 @@ void FBarTangent::addPoint(const std::vector<double>& G, const Mat3& F, const Ma
   }
   for (size_t k = 0; k < n; ++k) {
     const double* g = &G[9 * k];
-    double* h = &t.H[9 * k];  // F^-1 dF_k
+    double* h = rows ? nullptr : &t.H[9 * k];  // F^-1 dF_k (H is empty when every DOF moves one row)
     for (int i = 0; i < 3; ++i)
       for (int L = 0; L < 3; ++L) {
         const double gi = g[3 * i + L];
