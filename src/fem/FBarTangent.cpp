@@ -90,6 +90,7 @@ void FBarTangent::addPairs(const std::vector<double>& G, double s, double J, dou
   for (size_t a = 0; a < n; ++a) {  // a: the test direction (row), b: the increment (column)
     const double* ga = &G[9 * a];
     const double* ha = &t.H[9 * a];
+    const FBarPairTerms terms = rowTerms(a, s, J, w);
     for (size_t b = 0; b < n; ++b) {
       const double* hb = &t.H[9 * b];
       const double* DPb = &t.DP[9 * b];
@@ -97,26 +98,25 @@ void FBarTangent::addPairs(const std::vector<double>& G, double s, double J, dou
       for (int r = 0; r < 9; ++r) DPg += DPb[r] * ga[r];
       for (int Jr = 0; Jr < 3; ++Jr)
         for (int L = 0; L < 3; ++L) trHH += hb[3 * Jr + L] * ha[3 * L + Jr];
-      addPair(a, b, s, J, w, DPg, trHH, K);
+      K(int(a), int(b)) += terms.entry(terms.ws * DPg, t.e[b], t.Dp[b], trHH);
+      dilation_[a * n + b] += terms.dilation(t.d[b], trHH);
     }
   }
 }
 
 namespace {
 
-// One row a of addPairsByRows over the columns b (unit strides, independent: vectorised).
-struct RowTerms {
-  double g0, g1, g2, alpha, beta, wp, da, wJ;
-};
-void addRow(int n, const RowTerms& t, const double* __restrict D0, const double* __restrict D1,
-            const double* __restrict D2, const double* __restrict e, const double* __restrict Dp,
-            const double* __restrict d, const double* __restrict cb, const double* __restrict crow,
-            double* __restrict Ka, double* __restrict Da) {
-  const double g0 = t.g0, g1 = t.g1, g2 = t.g2, alpha = t.alpha, beta = t.beta, wp = t.wp, da = t.da, wJ = t.wJ;
+// One row a of addPairsByRows over the columns b (unit strides, independent: vectorised); g0..g2
+// are dF_a's row times w s.
+void addRow(int n, const FBarPairTerms& t, double g0, double g1, double g2, const double* __restrict D0,
+            const double* __restrict D1, const double* __restrict D2, const double* __restrict e,
+            const double* __restrict Dp, const double* __restrict d, const double* __restrict cb,
+            const double* __restrict crow, double* __restrict Ka, double* __restrict Da) {
+  const FBarPairTerms terms = t;  // a local copy: no store below can change it
   for (int b = 0; b < n; ++b) {
     const double trHH = cb[b] * crow[b];
-    Ka[b] += D0[b] * g0 + D1[b] * g1 + D2[b] * g2 + alpha * e[b] + beta * Dp[b] + wp * trHH;
-    Da[b] += da * d[b] - wJ * trHH;
+    Ka[b] += terms.entry(D0[b] * g0 + D1[b] * g1 + D2[b] * g2, e[b], Dp[b], trHH);
+    Da[b] += terms.dilation(d[b], trHH);
   }
 }
 
@@ -138,19 +138,17 @@ void FBarTangent::addPairsByRows(const std::vector<double>& G, double s, double 
   const double* __restrict Dp = t.Dp.data();
   const double* __restrict d = t.d.data();
   double* __restrict crow = t.crow.data();
-  const double ws = w * s, wp = w * t.p, wJ = w * J;
   for (size_t a = 0; a < n; ++a) {
     const size_t ra = size_t(t.row[a]);
     const double* ga = &G[9 * a + 3 * ra];
-    const double g0 = ws * ga[0], g1 = ws * ga[1], g2 = ws * ga[2];
-    const double alpha = ws / 3 * t.PG[a], beta = w * (B_[a] - t.d[a]), da = wJ * d[a];
+    const FBarPairTerms terms = rowTerms(a, s, J, w);
     const double* __restrict D0 = &t.DPt[(3 * ra) * n];
     const double* __restrict D1 = D0 + n;
     const double* __restrict D2 = D1 + n;
     const double* __restrict cb = &t.ct[ra * n];
     for (size_t b = 0; b < n; ++b) crow[b] = t.c[3 * a + size_t(t.row[b])];  // c_a,row_b
-    const RowTerms terms{g0, g1, g2, alpha, beta, wp, da, wJ};
-    addRow(int(n), terms, D0, D1, D2, e, Dp, d, cb, crow, &K(int(a), 0), &dilation_[a * n]);
+    addRow(int(n), terms, terms.ws * ga[0], terms.ws * ga[1], terms.ws * ga[2], D0, D1, D2, e, Dp, d, cb, crow,
+           &K(int(a), 0), &dilation_[a * n]);
   }
 }
 

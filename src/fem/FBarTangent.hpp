@@ -24,6 +24,16 @@
 
 namespace choc {
 
+// One row a of F-bar's pair terms (FBarTangent::rowTerms): with wsDPg = w s DP_b : dF_a and trHH =
+// tr(F^-1 dF_b F^-1 dF_a), K_ab += entry(...) and the dilatation's (a, b) += dilation(...).
+struct FBarPairTerms {
+  double ws, alpha, beta, wp, wJda, wJ;
+  double entry(double wsDPg, double eb, double Dpb, double trHH) const {
+    return wsDPg + alpha * eb + beta * Dpb + wp * trHH;
+  }
+  double dilation(double db, double trHH) const { return wJda * db - wJ * trHH; }
+};
+
 class FBarTangent {
  public:
   // dofs: the element's DOFs; B: d ln Jbar / du (dofs numbers); JV: sum_q w J.
@@ -56,16 +66,12 @@ class FBarTangent {
   Point& point_ = scratch();
   void addPairs(const std::vector<double>& G, double s, double J, double w, DenseMatrix& K);
   void addPairsByRows(const std::vector<double>& G, double s, double J, double w, DenseMatrix& K);
-  // Pair (a, b)'s term of K and of the dilatation, given DP_b : dF_a and tr(F^-1 dF_b F^-1 dF_a).
-  void addPair(size_t a, size_t b, double s, double J, double w, double DPg, double trHH, DenseMatrix& K) {
+  // Row a's coefficients of its pairs' terms (header): w [ s/3 e_b (P : dF_a) + s DP_b : dF_a +
+  // Dp_b (B_a - d_a) + p tr ], and of the dilatation, w J (d_b d_a - tr); both paths use them
+  // through FBarPairTerms' two entries.
+  FBarPairTerms rowTerms(size_t a, double s, double J, double w) const {
     const Point& t = point_;
-    K(int(a), int(b)) += pairTerm(w, s, t.p, t.e[b], t.PG[a], DPg, t.Dp[b], t.d[a], trHH, B_[a]);
-    dilation_[a * size_t(n_) + b] += w * J * (t.d[b] * t.d[a] - trHH);
-  }
-  // Pair (a, b)'s term of K (header): w [ s/3 e_b (P : dF_a) + s DP_b : dF_a - Dp_b d_a + p tr + Dp_b B_a ].
-  static double pairTerm(double w, double s, double p, double eb, double PGa, double DPg, double Dpb, double da,
-                         double trHH, double Ba) {
-    return w * (s / 3 * eb * PGa + s * DPg - Dpb * da + p * trHH + Dpb * Ba);
+    return {w * s, w * s / 3 * t.PG[a], w * (B_[a] - t.d[a]), w * t.p, w * J * t.d[a], w * J};
   }
 };
 
