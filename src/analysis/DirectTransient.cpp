@@ -455,6 +455,7 @@ std::unique_ptr<StructuralStepper> DirectTransient::stepper(StructuralOperator& 
     }
     return cd;
   }
+  op.tangentMatrix();
   return std::make_unique<NewmarkStepper>(op, s_.scheme, s_.time);
 }
 

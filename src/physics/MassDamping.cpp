@@ -1,5 +1,6 @@
 #include "physics/MassDamping.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -40,6 +41,14 @@ void MassDamping::addDampingForces(const Vector& v, Vector& out, bool keep) {
 
 double MassDamping::kineticEnergy(const Vector& v) const {
   if (vProducts_.holds(v, kMv)) return 0.5 * v.dot(vProducts_.product(kMv));
+  if (!diagonal_.is_null()) {  // sum m_i v_i^2 in one pass, without M v's vector
+    const auto m = diagonal_->getData();
+    const auto x = v.getData();
+    double local = 0.0, global = 0.0;
+    for (size_t i = 0; i < size_t(x.size()); ++i) local += x[i] * (m[i] * x[i]);
+    Teuchos::reduceAll(*v.getMap()->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+    return 0.5 * global;
+  }
   applyMass(v, *energyTmp_);
   return 0.5 * v.dot(*energyTmp_);
 }

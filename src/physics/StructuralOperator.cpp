@@ -14,22 +14,22 @@
 
 namespace choc {
 
-namespace {
-
-RCP<const CrsMatrix> initialTangent(InternalForce& internal) {
-  const Vector zero(internal.map());
-  return internal.tangent(zero);
-}
-
-}  // namespace
-
 StructuralOperator::StructuralOperator(std::shared_ptr<InternalForce> internal, RCP<const CrsMatrix> M,
                                        double rayleighK, double rayleighM, std::shared_ptr<const Loads> loads,
                                        ContactManager* contact, DirectLinks* links,
                                        std::unique_ptr<LinearSolver> solver, Teuchos::StackedTimer* timer)
-    : internal_(std::move(internal)), K_(initialTangent(*internal_)), mass_(std::move(M), rayleighK, rayleighM, internal_),
+    : internal_(std::move(internal)), mass_(std::move(M), rayleighK, rayleighM, internal_),
       loads_(std::move(loads)), contact_(contact), links_(links), solver_(std::move(solver)), timer_(timer),
-      ku_(K_->getRowMap(), 1) {}
+      ku_(internal_->map(), 1) {}
+
+// The tangent at u = 0: its matrix object, which each correction refills (evaluateTangent).
+const RCP<const CrsMatrix>& StructuralOperator::tangentMatrix() {
+  if (K_.is_null()) {
+    const Vector zero(internal_->map());
+    K_ = internal_->tangent(zero);
+  }
+  return K_;
+}
 
 // The effective system is built at the first correction (an explicit run never builds it).
 ContactSystem& StructuralOperator::system() {
@@ -39,7 +39,7 @@ ContactSystem& StructuralOperator::system() {
   }
   if (!system_) {
     systemTopology_ = contact_ ? contact_->topologyVersion() : 0;
-    system_ = std::make_unique<ContactSystem>(K_, mass_.matrix(), contact_,
+    system_ = std::make_unique<ContactSystem>(tangentMatrix(), mass_.matrix(), contact_,
                                               links_ ? links_->couplings() : std::vector<std::vector<GO>>(), condense_);
     rhs_ = rcp(new MultiVector(system_->map(), 1));
     x_ = rcp(new MultiVector(system_->map(), 1));
@@ -51,7 +51,7 @@ ContactSystem& StructuralOperator::system() {
 
 int StructuralOperator::unknowns() const {
   if (system_) return int(system_->map()->getGlobalNumElements());
-  return int(K_->getRowMap()->getGlobalNumElements());
+  return int(internal_->map()->getGlobalNumElements());
 }
 
 double StructuralOperator::strainEnergy(const Vector& u) const {
@@ -165,7 +165,7 @@ CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, c
                                                               Vector& a) {
   if (mass_.masslessDofs() == 0) return SecondOrderOperator::solveInitialAcceleration(u, r, a);
   factored_.forget();  // the next correction refactors the effective matrix
-  return solveMasslessInitialAcceleration(*K_, *mass_.matrix(), mass_.masslessMask(), *solver_, timer_, r, a);
+  return solveMasslessInitialAcceleration(*tangentMatrix(), *mass_.matrix(), mass_.masslessMask(), *solver_, timer_, r, a);
 }
 
 void StructuralOperator::beginStep(const Vector& u, double t, double dt) {
@@ -222,14 +222,14 @@ void StructuralOperator::archive(StateArchive& a) const {
     k.last = system_->lastEntries();
     k.keyStatus = factored_.key().status;
     k.solverState = solver_->keptState();
-    k.archive(a, *K_->getComm());
+    k.archive(a, *internal_->map()->getComm());
   }
 }
 void StructuralOperator::unarchive(const StateArchive& a) {
   internal_->unarchive(a);
   if (contact_) contact_->unarchive(a);
   if (links_) links_->unarchive(a);
-  restoreKept_ = kept_.unarchive(a, *K_->getComm());
+  restoreKept_ = kept_.unarchive(a, *internal_->map()->getComm());
 }
 
 // The checkpoint's factored matrix, factored again, then its last filled matrix on the

@@ -39,7 +39,11 @@ class StructuralOperator : public ExplicitOperator {
                      DirectLinks* links, std::unique_ptr<LinearSolver> solver,
                      Teuchos::StackedTimer* timer);
 
-  RCP<const Map> map() const override { return K_->getRowMap(); }
+  RCP<const Map> map() const override { return internal_->map(); }
+  // Newton's schemes take the tangent's matrix object (evaluated at u = 0) before their first
+  // step, as the run's start; an explicit run never builds it (its force is element by element,
+  // or K u with the linear model's own K).
+  const RCP<const CrsMatrix>& tangentMatrix();
   void applyMass(const Vector& a, Vector& out) override;
   void applyForces(const Vector& u, const Vector& v, double t, Vector& out) override;
   double addConstraintForces(const Vector& u, const Vector& v, Vector& out) override;
@@ -121,7 +125,8 @@ class StructuralOperator : public ExplicitOperator {
  private:
   ContactSystem& system();
   std::shared_ptr<InternalForce> internal_;
-  // The tangent's matrix object (one graph for the run; its values the model's current ones).
+  // The tangent's matrix object (one graph for the run; its values the model's current ones),
+  // null until tangentMatrix().
   RCP<const CrsMatrix> K_;
   MassDamping mass_;  // M and C (physics/MassDamping.hpp)
   std::shared_ptr<const Loads> loads_;
