@@ -758,12 +758,12 @@ def taylor_bar_3d_deck(work, n=2, full=0, R=None, end=None, points=("EDGE", "REA
     return d
 
 
-def taylor_bar_outcome(label, h, strain, temperature, failures, R0=3.2e-3, L0=32.4e-3):
+def taylor_bar_outcome(label, h, strain, temperature, failures, R0=3.2e-3, L0=32.4e-3, created=1e-6):
     """A Taylor bar run's figures from its history h (EDGE:DX, REAR:DY, CENTRE:DY) and the element
     fields at its end: the impact-face diameter and the length [mm] (the rear face's centre minus
     the impact face's), the largest equivalent plastic strain and temperature, printed with the
     plastic work and the energy balance; appends to `failures` when energy is created (the balance
-    above 1e-6 E0) or the plastic work ends below 97 % of E0. Returns the figures (a dict)."""
+    above `created` E0) or the plastic work ends below 97 % of E0. Returns the figures (a dict)."""
     import numpy as np
     e0 = h["energy:total"][1]
     v = {"diameter": 2 * (R0 + h["EDGE:DX"][-1]) * 1e3, "length": (L0 + h["REAR:DY"][-1] - h["CENTRE:DY"][-1]) * 1e3,
@@ -772,7 +772,7 @@ def taylor_bar_outcome(label, h, strain, temperature, failures, R0=3.2e-3, L0=32
     print(f"{label}: " + ", ".join(f"{k} {x:.4f}" for k, x in v.items()) +
           f"; plastic work {h['energy:dissipated'][-1] / e0:.4f} E0, balance in [{bal.min() / e0:.2e}, "
           f"{bal.max() / e0:.2e}] E0")
-    if not bal.max() <= 1e-6 * e0:
+    if not bal.max() <= created * e0:
         failures.append(f"{label}: energy created, balance up to {bal.max() / e0:.2e} E0")
     if not h["energy:dissipated"][-1] >= 0.97 * e0:
         failures.append(f"{label}: plastic work {h['energy:dissipated'][-1]:.4g} J below 97 % of E0")

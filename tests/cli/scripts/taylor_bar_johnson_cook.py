@@ -23,6 +23,13 @@ Checked:
     strained one, and its rise lies between chi/(rho c) times A alpha (the least flow stress) and
     chi/(rho c) times the largest flow stress the law gives at that strain and a rate of 1e6 / s,
     times alpha;
+  - with the impact face held on the wall (DY = 0 on IMPACT in place of the contact: the face
+    cannot lift off, nor the bar leave the wall at 42 us), as the published runs evidently model
+    it, the four figures on 5 x 51 lie within the published spread widened by the mesh's own
+    error estimate |v(8) - v(5)| alone (measured within it but the diameter, 0.3 % below);
+    the contact's length on 5 x 51 (0.2 % short, mesh estimate 0.04 %) fails this; held, no node
+    impact hides the scheme's own energy error, so 1e-4 E0 is allowed for it (copper: 1.1e-5 at
+    the deck's step, 4e-7 at half of it);
   - 2 ranks give the 1-rank histories to 1e-8 of the peaks (5 x 51).
 usage: taylor_bar_johnson_cook.py CHOC SOURCE_DIR WORK_DIR"""
 import math
@@ -55,11 +62,14 @@ def ring_volumes(exo):
     return 2 * math.pi * centroid * np.abs(area)
 
 
-def run(n, label, ranks=1):
+def run(n, label, ranks=1, held=False):
     msh = os.path.join(work, f"bar_{n}.msh")
     chocrun.gmsh("taylor_bar_axisymmetric.geo", msh, 2, "-setnumber", "n", n)
     d = chocrun.load_deck(os.path.join(src, "input", "taylor_bar_johnson_cook_axisymmetric.xml"))
     chocrun.set_param(d, "Mesh/File", msh)
+    if held:  # the face held on the wall: DY = 0 on IMPACT in place of the contact pair
+        chocrun.hold_on_wall(d, "Analyses/impact", "IMPACT", "DY", "central differences",
+                             chocrun.get_param(d, "Analyses/impact/Time Step"), 8e-5)
     chocrun.set_param(d, "Analyses/impact/Exodus Interval", 1000000)  # the first and the last step
     out = os.path.join(work, label)
     chocrun.run(choc, chocrun.write_deck(d, os.path.join(work, label + ".xml")), out, ranks=ranks)
@@ -67,7 +77,7 @@ def run(n, label, ranks=1):
     h = chocrun.read_history(out, "impact")
     fields = chocrun.read_element_fields(os.path.join(out, "impact.exo"), ("EQ_PLASTIC_STRAIN", "TEMPERATURE"))
     strain, temp = fields["EQ_PLASTIC_STRAIN"], fields["TEMPERATURE"]
-    v = chocrun.taylor_bar_outcome(label, h, strain, temp, failures)
+    v = chocrun.taylor_bar_outcome(label, h, strain, temp, failures, created=1e-4 if held else 1e-6)
     plastic = np.asarray(h["energy:plastic"])
     heat = RHO * HEAT * float(np.sum((temp - T0) * ring_volumes(os.path.join(out, "impact.exo"))))
     print(f"{label}: heat {heat:.6g} J against chi x energy:plastic {CHI * plastic[-1]:.6g} J "
@@ -95,6 +105,15 @@ for key in ("length", "diameter", "strain", "temperature"):
     print(f"{key}: {v5[key]:.4f} (5 x 51), {v8[key]:.4f} (8 x 81), allowance {est:.4f}, published {lo}-{hi}")
     if not lo - est <= v5[key] <= hi + est:
         failures.append(f"{key} {v5[key]:.4f} outside the published {lo}-{hi} widened by {est:.4f}")
+
+w5, _ = run(5, "jc_5_held", held=True)
+w8, _ = run(8, "jc_8_held", held=True)
+for key in ("length", "diameter", "strain", "temperature"):
+    lo, hi = PUBLISHED[key]
+    est = abs(w8[key] - w5[key])
+    print(f"face held, {key}: {w5[key]:.4f} (5 x 51), {w8[key]:.4f} (8 x 81), allowance {est:.4f}, published {lo}-{hi}")
+    if not lo - est <= w5[key] <= hi + est:
+        failures.append(f"face held: {key} {w5[key]:.4f} outside the published {lo}-{hi} widened by {est:.4f}")
 
 _, h5b = run(5, "jc_5_np2", ranks=2)
 failures += chocrun.ranks_agree(h5, h5b, ("EDGE:DX", "REAR:DY", "energy:dissipated"))
