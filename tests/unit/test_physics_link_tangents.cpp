@@ -58,9 +58,9 @@ Model& model() {
   auto comm = Tpetra::getDefaultComm();
   // ctest runs each test in a process of its own, several at a time: the first test to build the
   // model names its directory (a shared scene.exo was read half-written by another test).
-  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::string dir =
-      std::string(CHOC_BINARY_DIR) + "/test-scratch/link-tangents/" + (test ? test->name() : "suite");
+      std::string(CHOC_BINARY_DIR) + "/test-scratch/link-tangents/" + (info ? info->name() : "suite");
   std::filesystem::create_directories(dir);
   BarImpactOptions o;
   o.dimension = 3;

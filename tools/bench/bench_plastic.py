@@ -10,10 +10,11 @@ the radius:
   - TET10 standard (the same grid cut into tetrahedra, tets = 1, -order 2),
 on 1 and 2 ranks; and the anchor's scene: HEX8 one-point on the finer quarter (--anchor-n, 8 by
 default: 10,368 elements) at the default interval of the critical step's estimate (100 steps), the
-run the issue's anchor (0.33 us per element-cycle for an explicit code's one-point hexahedron, 1.5
-times that the target) is compared with in docs/performance/plasticity.md. Per run: the element-cycles (elements x sub-steps), the internal force's time per
-element-cycle (the assembly timer of the slowest rank times the ranks: the CPU per element and
-sub-step) and the whole analysis' per element-cycle likewise. Medians of --repeat runs.
+run docs/performance/plasticity.md compares with the issue's anchor (0.33 us per element-cycle for
+an explicit code's one-point hexahedron; the target 1.5 times that). Per run: the element-cycles
+(elements x sub-steps), the internal force's time per element-cycle (the assembly timer of the
+slowest rank times the ranks: the CPU per element and sub-step) and the whole analysis' per
+element-cycle likewise. Medians of --repeat runs.
 Writes results/bench/bench_plastic.json.
 
     bench_plastic.py [--build build] [--repeat 3] [--n 4] [--anchor-n 8] [--end-time 1e-5] [--ranks 1 2]"""
