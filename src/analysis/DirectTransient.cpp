@@ -506,9 +506,16 @@ void DirectTransient::run(RunContext& ctx) {
   const StateArchive none;
   const StepLoop::Resume from{resume ? *resume : none, vectors};
   TransientSummary sum;
-  outputs.run(view, [&] {
-    sum = loop.run(resume ? &from : nullptr);
-  });
+  try {
+    outputs.run(view, [&] {
+      sum = loop.run(resume ? &from : nullptr);
+    });
+  } catch (...) {  // the summary of a run that stopped holds what it did up to its last accepted state
+    recordFigures(loop.progress(), op, *timer, wallStart);
+    summarizeCounts(ctx.summary, loop.progress(), op, loop.time());
+    history.summarize(ctx.summary);
+    throw;
+  }
   timer->stopBaseTimer();
   reportRun(ctx, sum, op, *timer, wallStart, history);
 }
@@ -523,15 +530,34 @@ void DirectTransient::reportRun(RunContext& ctx, const TransientSummary& sum, co
   history.summarize(ctx.summary);
   evaluateChecks(b_->checks, history.history(), ctx.checks);
   if (history.balance().failed()) ctx.checks.push_back(history.balance().checkResult(name_));
+  if (history.hourglass().failed()) ctx.checks.push_back(history.hourglass().checkResult(name_));
 }
 
 void DirectTransient::summarize(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
                                   const Comm& comm) const {
+  summarizeCounts(s, sum, op, s_.time.endTime);
+  const std::pair<const char*, double> timers[] = {{"assembly", figures_.assembly},
+                                                   {"linear_solve", figures_.linearSolve},
+                                                   {"contact", figures_.contact},
+                                                   {"output", figures_.output},
+                                                   {"analysis", figures_.wall}};
+  for (const auto& [name, seconds] : timers) {  // min and max over the ranks (collective)
+    double lo = 0, hi = 0;
+    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MIN, seconds, Teuchos::outArg(lo));
+    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MAX, seconds, Teuchos::outArg(hi));
+    s.set(std::string("timers/") + name + "/min", lo);
+    s.set(std::string("timers/") + name + "/max", hi);
+  }
+}
+
+void DirectTransient::summarizeCounts(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
+                                      double timeReached) const {
   s.set("scheme", s_.explicitScheme ? std::string("central differences") : s_.scheme.name());
   s.set("time_step", s_.time.timeStep);
   s.set("end_time", s_.time.endTime);
   s.set("steps", sum.steps);
   s.set("smallest_step", sum.smallestStep);
+  s.set("time_reached", timeReached);
   if (s_.explicitScheme) {
     s.set("substeps_per_step", b_->explicitPlan->substeps);  // at the start
     s.set("substep", s_.time.timeStep / b_->explicitPlan->substeps);
@@ -556,18 +582,6 @@ void DirectTransient::summarize(RunSummary& s, const TransientSummary& sum, cons
   if (b_->contact) {
     s.set("contact/method", s_.contact.methodName());
     s.set("contact/constraints", b_->contact->numConstraints());
-  }
-  const std::pair<const char*, double> timers[] = {{"assembly", figures_.assembly},
-                                                   {"linear_solve", figures_.linearSolve},
-                                                   {"contact", figures_.contact},
-                                                   {"output", figures_.output},
-                                                   {"analysis", figures_.wall}};
-  for (const auto& [name, seconds] : timers) {  // min and max over the ranks (collective)
-    double lo = 0, hi = 0;
-    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MIN, seconds, Teuchos::outArg(lo));
-    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MAX, seconds, Teuchos::outArg(hi));
-    s.set(std::string("timers/") + name + "/min", lo);
-    s.set(std::string("timers/") + name + "/max", hi);
   }
 }
 

@@ -94,6 +94,9 @@ class DirectTransient : public Analysis {
               const HistoryObserver& history);
   void summarize(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
                  const Comm& comm) const;
+  // summarize's figures that need no collective call: a run that stopped writes them too.
+  void summarizeCounts(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
+                       double timeReached) const;
 
   Settings s_;
   std::unique_ptr<Built> b_;

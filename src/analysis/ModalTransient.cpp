@@ -11,6 +11,7 @@
 #include "core/Log.hpp"
 #include "fem/FieldGather.hpp"
 #include "input/ParameterSpec.hpp"
+#include "input/XmlInput.hpp"
 #include "physics/ModalProjection.hpp"
 #include "physics/StaticCorrection.hpp"
 #include "restart/StateVectors.hpp"
@@ -59,9 +60,8 @@ std::vector<double> parseDampingList(const std::string& text, const std::string&
   std::istringstream in(text);
   std::string tok;
   while (in >> tok) {
-    char* end = nullptr;
-    const double x = std::strtod(tok.c_str(), &end);
-    if (*end || !(x >= 0 && x < 1)) throwInput(file, param, tok, "not a damping ratio in [0, 1)");
+    double x = 0;
+    if (!parseDecimal(tok, x) || !(x >= 0 && x < 1)) throwInput(file, param, tok, "not a damping ratio in [0, 1)");
     v.push_back(x);
   }
   return v;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -116,7 +117,13 @@ void writeStopped(RunContext& ctx, const OutputDirectory& out, const std::string
   ctx.summary.set("status", c.kind == "interrupted" ? "interrupted" : "failed");
   ctx.summary.set("exit_code", c.exitCode);
   ctx.summary.set("reason", c.kind + ": " + c.message);
-  ctx.summary.set("memory/peak_bytes_rank_0", peakResidentBytes());
+  // The per-rank figures of a completed run, rank 0's alone known (null for the others: a run
+  // that stopped makes no collective call, the other ranks may have stopped elsewhere).
+  const int ranks = ctx.model.comm()->getSize();
+  std::vector<double> peak(size_t(ranks), NAN), cpu(size_t(ranks), NAN);
+  peak[0] = peakResidentBytes(), cpu[0] = cpuSeconds();
+  ctx.summary.set("memory/peak_bytes_per_rank", peak);
+  ctx.summary.set("cpu_seconds_per_rank", cpu);
   try {
     write(ctx.summary, out, name);
   } catch (const std::exception&) {

@@ -63,8 +63,10 @@ bool sameFile(const std::string& a, const std::string& b) {
          sa.st_ino == sb.st_ino;
 }
 
-int writeFully(int fd, const char* data, std::size_t size) {
-  std::size_t done = 0;
+int writeFully(int fd, const char* data, std::size_t size, std::size_t* written) {
+  std::size_t local = 0;
+  std::size_t& done = written ? *written : local;
+  done = 0;
   while (done < size) {
     const ssize_t n = ::write(fd, data + done, size - done);
     if (n < 0 && errno == EINTR) continue;
@@ -76,16 +78,22 @@ int writeFully(int fd, const char* data, std::size_t size) {
 }
 
 void writeWholeFile(const std::string& path, const std::string& text, bool complete,
-                    const std::string& incomplete) {
+                    const std::string& incomplete, bool keepWholeLines) {
   const std::string part = path + ".part";
   const int fd = ::open(part.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw OutputError("cannot create " + part + ": " + systemError(errno));
-  int err = writeFully(fd, text.data(), text.size());
+  std::size_t written = 0;
+  int err = writeFully(fd, text.data(), text.size(), &written);
+  const std::size_t lines = keepWholeLines ? text.rfind('\n', written == 0 ? 0 : written - 1) : std::string::npos;
+  const bool keep = err != 0 && written > 0 && lines != std::string::npos && ::ftruncate(fd, off_t(lines + 1)) == 0;
   if (::close(fd) != 0 && err == 0) err = errno;
   if (err != 0) {
-    ::unlink(part.c_str());  // nothing of it is worth keeping: it is written at once
-    throw OutputError("writing " + part + " failed: " + systemError(err) +
-                      " (disk full or file-size limit?)");
+    if (keep)
+      ::rename(part.c_str(), incomplete.c_str());  // the whole rows that reached the disk
+    else
+      ::unlink(part.c_str());  // nothing of it is worth keeping: it is written at once
+    throw OutputError("writing " + part + " failed: " + systemError(err) + " (disk full or file-size limit?)" +
+                      (keep ? "; its whole rows are in " + incomplete : ""));
   }
   renameFile(part, complete ? path : incomplete);
 }

@@ -18,9 +18,11 @@ void renameFile(const std::string& from, const std::string& to);
 bool fileExists(const std::string& path);      // anything at the path (never throws)
 bool isDirectory(const std::string& path);     // a directory at the path (never throws)
 bool isRegularFile(const std::string& path);   // a plain file at the path (never throws)
-// Writes `text` to "<path>.part" and renames it to `path` (complete) or `incomplete`.
+// Writes `text` to "<path>.part" and renames it to `path` (complete) or `incomplete`. When the
+// write fails (OutputError), nothing is left; with `keepWholeLines` (a table of rows), the whole
+// lines that reached the disk are kept as `incomplete` (a row never half-written).
 void writeWholeFile(const std::string& path, const std::string& text, bool complete,
-                    const std::string& incomplete);
+                    const std::string& incomplete, bool keepWholeLines = false);
 // The names in a directory (not "." and ".."), with their modification times; empty when it
 // cannot be read.
 struct DirectoryEntry {
@@ -32,6 +34,6 @@ std::vector<DirectoryEntry> listDirectory(const std::string& path);
 bool sameFile(const std::string& a, const std::string& b);
 // Writes all of `data` to the descriptor (restarting after EINTR). Returns 0, or the errno of
 // the failed write (ENOSPC when the disk accepted only part of it).
-int writeFully(int fd, const char* data, std::size_t size);
+int writeFully(int fd, const char* data, std::size_t size, std::size_t* written = nullptr);
 
 }  // namespace choc

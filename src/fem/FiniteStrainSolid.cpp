@@ -590,6 +590,13 @@ void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vecto
       *v /= volume;
 }
 
+int FiniteStrainSolid::pointsAtMelting(const double* state) const {
+  if (!thermal()) return 0;
+  int n = 0;
+  for (int q = 0; q < rule().size(); ++q) n += material_.plastic->flowStress().melted(state[kJ2StateSize * q + kJ2Temperature]);
+  return n;
+}
+
 double FiniteStrainSolid::largestDamage(const double* state) const {
   double d = 0.0;
   for (int q = 0; q < rule().size(); ++q) d = std::max(d, state[kJ2StateSize * q + kJ2Damage]);

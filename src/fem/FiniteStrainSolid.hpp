@@ -123,6 +123,8 @@ class FiniteStrainSolid {
   // The integration rule of the element's points (its state has one per point).
   const QuadratureRule& rule() const { return *rule_; }
   int numNodes() const { return nodeCount(shape_); }
+  SolidShape shape() const { return shape_; }
+  Kinematics kinematics() const { return kin_; }
   int componentsPerNode() const { return kin_ == Kinematics::ThreeD ? 3 : 2; }
   bool plastic() const { return material_.plastic != nullptr; }
   // A plastic material whose flow stress carries a temperature (Johnson-Cook).
@@ -130,6 +132,8 @@ class FiniteStrainSolid {
   // A plastic material that accumulates Johnson-Cook's damage, and its largest point value in a state.
   bool damaged() const { return plastic() && material_.plastic->hasDamage(); }
   double largestDamage(const double* state) const;
+  // The points of a state at the melting temperature (FlowStress::melted; 0 without temperature).
+  int pointsAtMelting(const double* state) const;
   // Finite-strain kinematics (every hyperelastic kernel; a plastic one with a finite-strain material).
   bool finiteKinematics() const { return !plastic() || material_.plastic->finiteStrain(); }
   // The numbers of state an element keeps (0 for a hyperelastic material), and their virgin values.

@@ -34,16 +34,10 @@ std::string upper(std::string s) {
   return s;
 }
 
-// Whole-string number checks: Teuchos reads "7800kg" as 7800 and "abc" as 0 without a word;
-// strtod would read "0x10" as 16 (a hexadecimal float), which no input means.
+// Whole-string number checks: Teuchos reads "7800kg" as 7800 and "abc" as 0 without a word.
 bool isDouble(const std::string& v) {
-  if (v.find_first_of("xX") != std::string::npos) return false;
-  const char* b = v.c_str();
-  char* end = nullptr;
-  std::strtod(b, &end);
-  if (end == b) return false;
-  while (*end == ' ' || *end == '\t') ++end;
-  return *end == '\0';
+  double x = 0;
+  return parseDecimal(v, x);
 }
 
 bool isInt(const std::string& v) {
@@ -141,6 +135,16 @@ void checkInputShape(const std::string& text, const std::string& path) {
 }
 
 }  // namespace
+
+bool parseDecimal(const std::string& token, double& value) {
+  if (token.find_first_of("xX") != std::string::npos) return false;  // no hexadecimal input
+  const char* b = token.c_str();
+  char* end = nullptr;
+  value = std::strtod(b, &end);
+  if (end == b) return false;
+  while (*end == ' ' || *end == '\t') ++end;
+  return *end == '\0';
+}
 
 Teuchos::RCP<Teuchos::ParameterList> readXmlParameters(const std::string& path) {
   namespace fs = std::filesystem;

@@ -2,6 +2,7 @@
 #include "materials/FlowStress.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -82,6 +83,14 @@ double johnsonCookLogRate(const JohnsonCookParameters& p, double dalpha, double 
   return dt > 0 && dalpha > 0 && dalpha > p.referenceRate * dt ? std::log(dalpha / (p.referenceRate * dt)) : 0.0;
 }
 
+double FlowStress::meltingTemperature() const {
+  return kind_ == Kind::JohnsonCook ? jc_.meltingTemperature : std::numeric_limits<double>::infinity();
+}
+
+bool FlowStress::melted(double temperature) const {
+  return kind_ == Kind::JohnsonCook && 1 - std::pow(johnsonCookHomologous(jc_, temperature), jc_.m) <= kMelted;
+}
+
 double johnsonCookHomologous(const JohnsonCookParameters& p, double temperature) {
   return std::clamp((temperature - p.referenceTemperature) / (p.meltingTemperature - p.referenceTemperature), 0.0, 1.0);
 }
@@ -127,8 +136,8 @@ std::string FlowStress::describe() const {
     s << "flow curve of " << curve_.strain.size() << " points, " << curve_.stress.front() << " to "
       << curve_.stress.back() << " Pa";
   else
-    s << "Johnson-Cook, A = " << jc_.A << " Pa, B = " << jc_.B << " Pa, n = " << jc_.n << ", C = " << jc_.C
-      << ", m = " << jc_.m;
+    s << "Johnson-Cook flow stress (A = " << jc_.A << " Pa, B = " << jc_.B << " Pa, n = " << jc_.n << ", C = " << jc_.C
+      << ", Reference Strain Rate = " << jc_.referenceRate << " 1/s, m = " << jc_.m << ")";
   return s.str();
 }
 

@@ -8,10 +8,10 @@
 //
 // alpha the equivalent plastic strain, rate = d alpha / dt over the increment (below rate_0,
 // and when the increment has no duration, the rate factor is 1: the quasi-static law), T the
-// temperature. Johnson-Cook's adiabatic heating: the increment's plastic work dD (J2Response::
-// plasticWork, the work the energy balance counts; about sigma_y d alpha) raises the point's
-// temperature by chi dD / (rho c) (chi the Taylor-Quinney coefficient, the share of the work that
-// becomes heat), used from the next increment on (the temperature is explicit in
+// temperature. Johnson-Cook's adiabatic heating: the increment's plastic work sigma_y d alpha
+// (sigma_y the increment's flow stress) raises the point's temperature by chi sigma_y d alpha /
+// (rho c) (chi the Taylor-Quinney coefficient, the share of the work that becomes heat): never
+// negative, nothing at a point that does not yield. Used from the next increment on (the temperature is explicit in
 // the return map: the usual staggering in impact codes, whose steps are far shorter than the
 // heating's time scale).
 //
@@ -66,6 +66,12 @@ class FlowStress {
   double heatPerWork() const { return heatPerWork_; }
   double initialTemperature() const { return kind_ == Kind::JohnsonCook ? jc_.initialTemperature : 0.0; }
   bool hasTemperature() const { return kind_ == Kind::JohnsonCook; }
+  // Where the flow stress vanishes (Johnson-Cook's T_m; +infinity for the other laws).
+  double meltingTemperature() const;
+  // Johnson-Cook at T: the thermal factor 1 - T*^m at most kMelted (the point has lost 99 % of its
+  // strength; the heating, chi sigma_y d alpha / (rho c), only approaches T_m itself).
+  static constexpr double kMelted = 0.01;
+  bool melted(double temperature) const;
   std::string describe() const;
 
  private:

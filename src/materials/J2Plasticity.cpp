@@ -164,8 +164,11 @@ double J2Plasticity::solveReturn(double trial, double f0, const double* old, dou
     x = step > lo && step < hi ? step : 0.5 * (lo + hi);
   }
   std::ostringstream msg;
-  msg << "J2 plasticity material: the return map did not converge in 200 iterations (trial stress " << trial
-      << " Pa, equivalent plastic strain " << alpha << ")";
+  msg << "the return map of the " << flow_.describe() << " did not converge in 200 iterations (trial stress "
+      << trial << " Pa, equivalent plastic strain " << alpha << ", increment " << dt << " s): "
+      << (flow_.hasTemperature() ? "its rate term 1 + C ln(rate / rate_0) and hardening B alpha^n drive it: check "
+                                   "'Johnson-Cook C', 'Reference Strain Rate', 'Johnson-Cook B' and 'Johnson-Cook n'"
+                                 : "check the flow stress's parameters");
   throw std::domain_error(msg.str());
 }
 
@@ -205,10 +208,9 @@ void J2Plasticity::finishPoint(const Mat3& F, const double* old, const Return& r
   out.yielded = r.yielded;
   out.energy = storedEnergy ? *storedEnergy : 0.5 * kappa_ * tr * tr + mu_ * r.theta * r.theta * normE * normE;
   recordIncrement(F, old, out);
-  // The heat: chi / (rho c) times the increment's dissipated work, the one the energy balance
-  // counts, so that the heat is chi times energy:plastic (at an elastic increment that work is the
-  // trapezoid's O(|dF|^3) error: microkelvins).
-  out.state[kJ2Temperature] = old[kJ2Temperature] + flow_.heatPerWork() * out.plasticWork;
+  // The heat: chi sigma_y d alpha / (rho c), sigma_y the increment's flow stress (Kirchhoff's in
+  // finite strain, per reference volume): never negative, nothing where the point does not yield.
+  out.state[kJ2Temperature] = old[kJ2Temperature] + flow_.heatPerWork() * r.flowStress * dalpha;
 }
 
 void J2Plasticity::respondSmall(const Mat3& F, const double* old, bool withTangent, bool elastic, double dt,

@@ -2,7 +2,10 @@
 
 #include <mpi.h>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Vector.hpp>
+
+#include <cmath>
 
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
@@ -60,7 +63,23 @@ void ExodusObserver::open(TransientView& view) {
 
 void ExodusObserver::step(TransientView& view) {
   const StepPoint pt = view.point();
-  if (pt.step % interval_ != 0 && !pt.last) return;
+  pending_ = pt.step % interval_ != 0 && !pt.last;
+  if (!pending_) write(view);
+}
+
+void ExodusObserver::failed(TransientView& view) {
+  if (!pending_) return;
+  pending_ = false;
+  view.fields(*u_, *v_, *a_);
+  double finite = 1.0, all = 1.0;  // a state with a non-finite value is not written
+  for (const Vector* x : {u_.get(), v_.get(), a_.get()})
+    for (double value : x->getData()) finite = std::isfinite(value) ? finite : 0.0;
+  Teuchos::reduceAll<int, double>(*model_.comm(), Teuchos::REDUCE_MIN, finite, Teuchos::outArg(all));
+  if (all > 0) write(view);
+}
+
+void ExodusObserver::write(TransientView& view) {
+  const StepPoint pt = view.point();
   view.fields(*u_, *v_, *a_);
   const DofMap& dofs = model_.dofs();
   const auto U = gatherAll(*u_, 0, dofs), V = gatherAll(*v_, 0, dofs), A = gatherAll(*a_, 0, dofs);

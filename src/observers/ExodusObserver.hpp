@@ -19,10 +19,13 @@ class ExodusObserver : public TransientObserver {
   void begin(TransientView& view) override;
   void step(TransientView& view) override;
   void end(bool ok) override;
+  void failed(TransientView& view) override;  // writes the last accepted state if it was not
   void archive(StateArchive& a) const override;
 
  private:
   void open(TransientView& view);  // rank 0
+  void write(TransientView& view);  // the view's state as the file's next step (collective)
+  bool pending_ = false;            // the last state the observer saw is not in the file
   std::string path_;
   const Model& model_;
   const HistoryObserver& history_;

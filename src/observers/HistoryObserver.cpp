@@ -32,7 +32,7 @@ std::vector<std::string> historyColumns(const std::vector<std::string>& probeCol
 
 HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> columns,
                                  const std::string& csvPath, const EnergyBalanceSettings& energy)
-    : what_(std::move(what)), columns_(std::move(columns)), balance_(energy, what_),
+    : what_(std::move(what)), columns_(std::move(columns)), balance_(energy, what_), hourglassMonitor_(what_),
       plastic_(std::find(columns_.begin(), columns_.end(), "energy:plastic") != columns_.end()),
       hourglass_(std::find(columns_.begin(), columns_.end(), "energy:hourglass") != columns_.end()) {
   if (!csvPath.empty() && isRootRank()) csv_ = std::make_unique<HistoryCsv>(csvPath, columns_);
@@ -41,7 +41,7 @@ HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> colu
 HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> columns,
                                  const std::string& csvPath, const EnergyBalanceSettings& energy,
                                  const StateArchive& resume, const Comm& comm)
-    : what_(std::move(what)), columns_(std::move(columns)), balance_(energy, what_),
+    : what_(std::move(what)), columns_(std::move(columns)), balance_(energy, what_), hourglassMonitor_(what_),
       plastic_(std::find(columns_.begin(), columns_.end(), "energy:plastic") != columns_.end()),
       hourglass_(std::find(columns_.begin(), columns_.end(), "energy:hourglass") != columns_.end()) {
   balance_.setState(resume.getPod<EnergyBalanceMonitor::State>("history/balance"));
@@ -71,6 +71,14 @@ HistoryObserver::HistoryObserver(std::string what, std::vector<std::string> colu
     for (std::size_t k = 0; k < columns_.size(); ++k)
       history_.columns[columns_[k]].push_back(flat[i * width + 1 + k]);
   }
+  if (!hourglass_) return;
+  const auto column = [&](const char* name, std::size_t i) {
+    const auto c = history_.columns.find(name);
+    return c == history_.columns.end() ? 0.0 : c->second[i];
+  };
+  for (std::size_t i = 0; i < rows; ++i)
+    hourglassMonitor_.update(history_.times[i], column("energy:hourglass", i),
+                             column("energy:strain", i) + column("energy:plastic", i), balance_.endReference(), true);
 }
 
 void HistoryObserver::setRanks(int ranks) { single_ = ranks == 1; }
@@ -92,6 +100,7 @@ void HistoryObserver::step(TransientView& view) {
   if (hourglass_) row.push_back(e.hourglass);
   row.push_back(e.total());
   row.push_back(balance_.update(pt.time, e.total() - e.shadow, e.dissipated, e.external));
+  if (hourglass_) hourglassMonitor_.update(pt.time, e.hourglass, e.strain + e.plastic, balance_.endReference());
   if (const InteractionOutput* io = view.interactions()) {
     const std::vector<double> v = io->historyValues();
     row.insert(row.end(), v.begin(), v.end());

@@ -10,6 +10,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "observers/EnergyBalance.hpp"
+#include "observers/HourglassMonitor.hpp"
 #include "observers/TransientObserver.hpp"
 #include "output/HistoryCsv.hpp"
 #include "output/RunSummary.hpp"
@@ -49,6 +50,7 @@ class HistoryObserver : public TransientObserver {
   const std::string& pendingFailure() const { return pending_; }
   const EnergyTerms& lastEnergies() const { return energies_; }
   const EnergyBalanceMonitor& balance() const { return balance_; }
+  const HourglassMonitor& hourglass() const { return hourglassMonitor_; }
   // The energy balance and the impact statistics, for <analysis>.summary.json.
   void summarize(RunSummary& s) const;
 
@@ -57,6 +59,7 @@ class HistoryObserver : public TransientObserver {
   std::vector<std::string> columns_;
   std::unique_ptr<HistoryCsv> csv_;
   EnergyBalanceMonitor balance_;
+  HourglassMonitor hourglassMonitor_;
   RecordedHistory history_;
   EnergyTerms energies_;
   std::string pending_;

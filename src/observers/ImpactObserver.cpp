@@ -272,7 +272,7 @@ void ImpactObserver::write(bool complete) const {
         text += "," + csvNumber(v);
       text += x.open ? ",1\n" : ",0\n";
     }
-  writeWholeFile(csvPath_, text, complete, incompletePath(csvPath_));
+  writeWholeFile(csvPath_, text, complete, incompletePath(csvPath_), true);
   // A complete file replaces what an interrupted earlier part of the run left.
   if (complete) removeFile(incompletePath(csvPath_));
 }

@@ -3,10 +3,12 @@
 // (ok) or abandoned as *.incomplete.* (a failure or an interruption). ObserverSet::run wraps
 // a time loop so that end(false) is called on every way out by an exception.
 #pragma once
+#include <exception>
 #include <functional>
 #include <memory>
 #include <vector>
 
+#include "core/Errors.hpp"
 #include "observers/TransientView.hpp"
 #include "restart/StateArchive.hpp"
 
@@ -21,6 +23,11 @@ class TransientObserver {
   // only what integrates over every computed state needs it (impact statistics).
   virtual void substep(TransientView& /*view*/, double /*time*/) {}
   virtual void end(bool /*ok*/) {}
+  // The run stops on a numerical failure every rank agreed on (NumericalError: an inverted
+  // element, Newton out of cuts, an unstable step), before end(false): the view still shows the
+  // last accepted state, which an output may record (collective) so that the partial results
+  // end where the run did.
+  virtual void failed(TransientView& /*view*/) {}
   // What the observer carries between states (energy integrals, file positions), for a
   // checkpoint; called on every rank at the same state (it may be collective).
   virtual void archive(StateArchive& /*a*/) const {}
@@ -48,11 +55,29 @@ class ObserverSet {
     try {
       begin(view);
       loop();
+    } catch (const NumericalError&) {
+      try {
+        for (auto& o : observers_) o->failed(view);
+      } catch (const std::exception&) {
+        // the run's own failure is the one to report
+      }
+      for (auto& o : observers_) o->end(false);
+      throw;
     } catch (...) {
       for (auto& o : observers_) o->end(false);
       throw;
     }
-    for (auto& o : observers_) o->end(true);
+    // Every observer finishes its files, even after one failed to (a full disk at the impact
+    // statistics): a complete file keeps its name; the first failure is then reported.
+    std::exception_ptr first;
+    for (auto& o : observers_) {
+      try {
+        o->end(true);
+      } catch (...) {
+        if (!first) first = std::current_exception();
+      }
+    }
+    if (first) std::rethrow_exception(first);
   }
 
  private:

@@ -45,8 +45,10 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
     const int* conn = &blk.connectivity[size_t(e) * blk.nodesPerElement];
     const int nc = el.kernel->componentsPerNode();
     el.owner = model.dofs().ownerOfNode(conn[0]) == rows.getComm()->getRank();
+    referenceAt_.push_back(reference_.size());
     for (int k = 0; k < blk.nodesPerElement; ++k) {
       X.push_back(mesh.coords[size_t(conn[k])]);
+      reference_.insert(reference_.end(), X.back().begin(), X.back().end());
       for (int c = 0; c < nc; ++c) {
         const long long d = model.dof(conn[k], c);
         el.col.push_back(d < 0 ? LO(-1) : cols.getLocalElement(GO(d)));
@@ -149,6 +151,40 @@ void FiniteStrainForce::commit() {
   plasticWork_ += work;
   trialValid_ = false;
   if (damage_ && !failurePredicted_) reportPredictedFailure();
+  if (thermal_ && !meltingReported_) reportMelting();
+}
+
+std::pair<long, int> FiniteStrainForce::committedMelting() const {
+  long mine = 0, count = 0;
+  int firstMine = std::numeric_limits<int>::max(), first = firstMine;
+  for (const Element& e : elements_) {
+    if (!e.owner) continue;
+    const int n = e.kernel->pointsAtMelting(committed_.data() + e.state);
+    mine += n;
+    if (n > 0) firstMine = std::min(firstMine, e.number);
+  }
+  const Comm& comm = *K0_->getComm();
+  Teuchos::reduceAll<int, long>(comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(count));
+  Teuchos::reduceAll<int, int>(comm, Teuchos::REDUCE_MIN, firstMine, Teuchos::outArg(first));
+  return {count, count > 0 ? first : -1};
+}
+
+// The first committed state in which Johnson-Cook points reach their melting temperature (the flow
+// stress is zero there: the metal flows as a liquid would without a viscosity): one line on the
+// log with the count of such points, the first element and the time.
+void FiniteStrainForce::reportMelting() {
+  const auto [count, first] = committedMelting();
+  if (count == 0) return;
+  meltingReported_ = true;
+  std::string line;
+  for (const Element& e : elements_)
+    if (e.owner && e.number == first)
+      line = format("warning: %ld Johnson-Cook point(s) reached the melting temperature at t = %.6g s, the first in ",
+                    count, committedTime_) +
+             describe(e, "their flow stress is below 1 % of the cold one (1 - T*^m <= 0.01): the solid model holds "
+                         "below melting");
+  line = collectiveFailure(*K0_->getComm(), line);
+  if (isRootRank()) log() << line << "\n";
 }
 
 // The first committed state in which a point's damage reaches 1: one line on the log naming the
@@ -208,6 +244,7 @@ void FiniteStrainForce::unarchive(const StateArchive& a) {
   committedTime_ = a.getDouble("internal/plasticTime");
   // A failure the run before the checkpoint logged is not logged again.
   failurePredicted_ = damage_ && largestCommittedDamage() >= 1.0;
+  meltingReported_ = thermal_ && committedMelting().first > 0;
   timeKnown_ = true;
   trialValid_ = false;
 }

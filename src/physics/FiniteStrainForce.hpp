@@ -25,6 +25,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Tpetra_Import.hpp>
@@ -63,6 +64,7 @@ class FiniteStrainForce : public InternalForce {
   double stateEigenvalueBound(const Vector& u) const override;
   double dissipatedWork() const override { return plasticWork_; }
   double hourglassEnergy(const Vector& u) const override;
+  ElementValidity validity(const Vector& u) const override;  // FiniteStrainValidity.cpp
   bool hasReturnMap() const override { return plastic_; }
   void commit() override;
   void revert() override { trialValid_ = false; }
@@ -147,12 +149,28 @@ class FiniteStrainForce : public InternalForce {
   bool failurePredicted_ = false;  // a point's damage reached 1 (logged once)
   void reportPredictedFailure();
   double largestCommittedDamage() const;
+  bool meltingReported_ = false;  // a Johnson-Cook point reached its melting temperature (logged once)
+  void reportMelting();
+  // The committed points at or above their melting temperature, over every rank (collective), and
+  // the lowest-numbered element holding one (-1: none).
+  std::pair<long, int> committedMelting() const;
   bool hourglass_ = false;  // a block has one-point elements
   bool linearPart_ = true;  // K_lin has a nonzero value (else its products are skipped)
   static bool anyNonzero(const CrsMatrix& K);
   // Per element DOF: the round-off of its force (termsNorm; see the .cpp).
   static std::vector<double> forceRoundoff(const FiniteStrainSolid& kernel, const ElementGeometry& g);
   void layoutArchive(const Mesh& mesh, const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels);
+  // Each element's reference node coordinates (3 per node, elements_' order) for validity().
+  std::vector<double> reference_;
+  std::vector<size_t> referenceAt_;
+  struct Measure {
+    double value = 0.0;
+    int element = -1;  // global number, -1: none
+  };
+  void measureElement(const Element& e, const std::vector<double>& ue, Measure& detF, Measure& strain,
+                      Measure& rotation) const;
+  Measure worstOverRanks(Measure local, bool smallest) const;
+  std::string describeMeasure(const Measure& m, const std::string& text) const;
   std::vector<size_t> globalState_;  // per global element: its state's offset in the archive (-1: none)
   size_t globalStateSize_ = 0;
   mutable RCP<Vector> uCol_, tmp_;

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "core/TpetraTypes.hpp"
+#include "fem/ElementValidity.hpp"
 #include "restart/StateArchive.hpp"
 
 namespace choc {
@@ -68,6 +69,8 @@ class InternalForce {
   // The one-point elements' hourglass energy at u (a part of the strain energy) [J], all ranks.
   // Collective.
   virtual double hourglassEnergy(const Vector& /*u*/) const { return 0.0; }
+  // Whether the elements at u are still in the model's domain (ElementValidity.hpp): collective.
+  virtual ElementValidity validity(const Vector& /*u*/) const { return {}; }
   // The work dissipated inside the material since the start (plastic work) [J], all ranks.
   virtual double dissipatedWork() const { return 0.0; }
   // Whether the force carries a history whose update has kinks in u (a plastic return map:

@@ -18,6 +18,8 @@
 #include "core/Errors.hpp"
 #include "core/Memory.hpp"
 #include "mesh/CoincidentNodes.hpp"
+#include "physics/DegenerateElements.hpp"
+#include "physics/MaterialKeys.hpp"
 #include "input/Validation.hpp"
 #include "input/Vector3.hpp"
 #include "input/XmlInput.hpp"
@@ -94,6 +96,7 @@ std::string Model::readMesh(const Teuchos::ParameterList& meshList) {
   logPhase(*comm_, "mesh read (" + std::to_string(mesh_.numNodes()) + " nodes, " +
                        std::to_string(mesh_.numElements()) + " elements)",
            secondsSince(readStart));
+  checkDegenerateElements(mesh_, inputFile_, given);
   handleCoincidentNodes(meshList);
   return meshFile;
 }
@@ -104,7 +107,10 @@ std::vector<BlockPhysics> Model::blockPhysics(const Teuchos::ParameterList& mode
   const std::string& file = inputFile_;
   const Teuchos::ParameterList& mats = model.sublist("Materials");
   std::vector<std::string> matNames;
-  for (auto it = mats.begin(); it != mats.end(); ++it) matNames.push_back(mats.name(it));
+  for (auto it = mats.begin(); it != mats.end(); ++it) {
+    matNames.push_back(mats.name(it));
+    checkMaterialKeys(file, mats.name(it), mats.sublist(mats.name(it)));
+  }
   const Teuchos::ParameterList& blocks = model.sublist("Blocks");
   const auto meshBlocks = mesh_.blockNames();
   for (auto it = blocks.begin(); it != blocks.end(); ++it)

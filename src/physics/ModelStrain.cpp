@@ -9,7 +9,9 @@
 
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
+#include "core/Log.hpp"
 #include "core/Resources.hpp"
+#include "input/XmlInput.hpp"
 #include "physics/Model.hpp"
 
 namespace choc {
@@ -52,6 +54,11 @@ std::shared_ptr<const FiniteStrainSolid> Model::strainKernel(const ElementBlock&
                "material's 'Model' is '" + law + "'",
                "set 'Model' = 'Johnson-Cook', or 'Damage' = 'none'");
   if (!finite && !plastic) return nullptr;
+  if (plastic && onePoint)  // one point per element: the constant-pressure constraint locks plastic flow
+    log() << "choc: warning: " << inputFile_ << ": block '" << blk.name << "' is plastic ('" << law << "') on "
+          << blk.topology << " elements, which lock in plastic flow (the Taylor bar's face spreads to 4.4-4.7 mm "
+          << "for 7.2 mm): mesh it with " << (blk.topology == "TET4" ? "TET10" : "TRI6")
+          << " elements (gmsh -order 2) or HEX8 / QUAD4 with 'Formulation' = 'F-bar'\n";
   if (plastic && finite && mp.get<double>("Kinematic Hardening Modulus") > 0)
     throwInput(inputFile_, "Model/Materials/" + materialName + "/Kinematic Hardening Modulus",
                format("%g", mp.get<double>("Kinematic Hardening Modulus")),
@@ -140,9 +147,8 @@ J2Parameters Model::plasticParameters(const std::string& materialName, const Teu
   std::string token;
   std::vector<double> numbers;
   while (in >> token) {
-    char* end = nullptr;
-    const double v = std::strtod(token.c_str(), &end);
-    if (*end != '\0' || !std::isfinite(v))
+    double v = 0;
+    if (!parseDecimal(token, v) || !std::isfinite(v))
       throwInput(inputFile_, path + "Flow Curve", curve, "'" + token + "' is not a number",
                  "give pairs 'plastic_strain stress [Pa]'");
     numbers.push_back(v);

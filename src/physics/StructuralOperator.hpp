@@ -65,6 +65,7 @@ class StructuralOperator : public ExplicitOperator {
   }
   void beginStep(const Vector& u, double t, double dt) override;
   void acceptStep(const Vector& u) override;
+  ElementValidity validity(const Vector& u) const override { return internal_->validity(u); }
   double elasticTermsNorm(const Vector& u) const override;
   bool forcesVaryInTime() const override { return loads_ && loads_->ramped(); }
   void keepProducts(bool on) override { keepProducts_ = on; }

@@ -161,8 +161,12 @@ Advance NewmarkStepper::advance(const NominalStep& s, StepControl& c, TransientS
   for (;;) {
     const bool finalSub = h >= s.target - s.t - 1e-9 * s.dt;
     if (finalSub) h = std::abs(s.target - s.t - s.dt) <= 1e-9 * s.dt ? s.dt : s.target - s.t;
-    const NewtonOutcome out = attempt(s.t, h);
+    NewtonOutcome out = attempt(s.t, h);
     countIterations(out, sum);
+    if (out.converged) {  // converged inside the model's domain? (an element inverted at a corner)
+      const std::string invalid = checkValidity(*u1_, s.t + h);
+      if (!invalid.empty()) out.converged = false, out.message = invalid;
+    }
     if (!out.converged) {
       rejectAttempt(s.t, h, c.cuts, out, sum);
       ++c.cuts;

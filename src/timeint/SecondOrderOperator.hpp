@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/TpetraTypes.hpp"
+#include "fem/ElementValidity.hpp"
 #include "restart/StateArchive.hpp"
 
 namespace choc {
@@ -79,6 +80,9 @@ class SecondOrderOperator {
   // Whether applyForces depends on t (time-dependent loads). When not, a step's forces at its
   // converged u are the next step's F_n without recomputing them.
   virtual bool forcesVaryInTime() const { return true; }
+  // Whether a converged state u is in the model's domain (no element inverted at a corner or a
+  // point, small strain within its bound: ElementValidity.hpp); collective.
+  virtual ElementValidity validity(const Vector& /*u*/) const { return {}; }
   // A step was accepted at u (before saveState): state that accumulates over accepted steps.
   virtual void acceptStep(const Vector& /*u*/) {}
   // Is R(u) affine in u while the constraint status is frozen (linear elasticity, contact

@@ -113,6 +113,9 @@ class StepLoop {
   // and the stepper's records.
   void archive(StateArchive& a, const StateVectors& vectors) const;
   const TimeGrid& grid() const { return grid_; }
+  // The counters and the time of the last accepted state so far (what a run that stops reports).
+  const TransientSummary& progress() const { return sum_; }
+  double time() const { return t_; }
 
  private:
   void startState(StepInfo& info);

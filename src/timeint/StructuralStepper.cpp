@@ -2,6 +2,10 @@
 
 #include <Tpetra_Vector.hpp>
 
+#include <cstdio>
+
+#include "core/Log.hpp"
+
 namespace choc {
 
 StructuralStepper::StructuralStepper(SecondOrderOperator& op, TransientSettings settings)
@@ -21,6 +25,17 @@ void StructuralStepper::notify(const StepInfo& info) {
 
 void StructuralStepper::notifySubstep(double t) {
   for (StepObserver* o : observers_) o->substepTaken(t, *u_, *v_);
+}
+
+std::string StructuralStepper::checkValidity(const Vector& u, double t) {
+  const ElementValidity v = op_.validity(u);
+  if (!v.warning.empty() && !validityWarned_) {
+    validityWarned_ = true;
+    char at[64];
+    std::snprintf(at, sizeof at, ": at t = %.6e s: ", t);
+    log() << "choc: warning: " << s_.label << at << v.warning << "\n";
+  }
+  return v.failure;
 }
 
 void StructuralStepper::archiveState(StateArchive& a, const StateVectors& vectors) const {

@@ -2,6 +2,7 @@
 // the accepted state (u, v, a) on the operator's map, the observers that see it, and its
 // checkpoint records ("driver/u", "driver/v", "driver/a" and the operator's own state).
 #pragma once
+#include <string>
 #include <vector>
 
 #include "timeint/SecondOrderOperator.hpp"
@@ -39,11 +40,15 @@ class StructuralStepper : public Stepper {
  protected:
   StructuralStepper(SecondOrderOperator& op, TransientSettings settings);
   void notifySubstep(double t);
+  // The operator's validity of u at time t: its warning logged once in the run, its failure
+  // returned ("" when u is in the model's domain). Collective.
+  std::string checkValidity(const Vector& u, double t);
 
   SecondOrderOperator& op_;
   TransientSettings s_;
   RCP<Vector> u_, v_, a_;  // the accepted state
   std::vector<StepObserver*> observers_;
+  bool validityWarned_ = false;
 };
 
 }  // namespace choc
