@@ -334,7 +334,7 @@ choc_cli_input_error(follower_cg check bad_follower_cg.xml
 choc_cli_input_error(follower_small_block check bad_follower_small_block.xml
   "parameter 'Analyses/push/Pressures/face/Side Set' = 'CNT_POU2': has faces of block 'POU2', whose Strain is small: a follower pressure loads finite-strain blocks. set Strain = finite on that block, or Follower = false")
 choc_cli_input_error(plastic_no_yield check bad_plastic_no_yield.xml
-  "parameter 'Model/Materials/steel/Yield Stress' = '0': 'J2 plasticity' needs the initial yield stress. give 'Yield Stress' > 0 .Pa.")
+  "parameter 'Model/Materials/steel/Yield Stress': is missing: 'J2 plasticity' needs the initial yield stress. give 'Yield Stress' > 0 .Pa.")
 choc_cli_input_error(plastic_hardening check bad_plastic_hardening.xml
   "parameter 'Model/Materials/steel/Hardening Modulus' = '-1e.09': out of range. valid: a number in .0, inf.")
 choc_cli_input_error(flow_curve_softening check bad_flow_curve_softening.xml
