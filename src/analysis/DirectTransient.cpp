@@ -490,26 +490,18 @@ void DirectTransient::run(RunContext& ctx) {
   StepLoop loop(*scheme, TimeGrid(s_.time.startTime, s_.time.endTime, s_.time.timeStep));
   const StateVectors vectors(ctx.model.dofs());
   OutputPlan plan{"transient '" + name_ + "'", ctx.outputDir + "/" + name_, b_->columns,
-                  s_.time.startTime, s_.time.endTime, 1};
-  plan.resume = resume;
-  plan.checkpoint = checkpointPlan(ctx);
+                  s_.time.startTime, s_.time.endTime, 1, checkpointPlan(ctx), resume};
   plan.checkpoint.archiveRun = [&](StateArchive& a) {
     loop.archive(a, vectors);
     view.archive(a, vectors);
   };
   const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model);
-  if (resume) {
-    view.unarchive(*resume, vectors, ctx.model.map());
-    log() << format("  continuing from the checkpoint at t = %.6e s (step %lld)\n",
-                    resume->getDouble("point/time"), resume->getInt("point/nominal"));
-  }
+  if (resume) continueView(view, *resume, vectors, ctx.model);
   const StateArchive none;
   const StepLoop::Resume from{resume ? *resume : none, vectors};
   TransientSummary sum;
   try {
-    outputs.run(view, [&] {
-      sum = loop.run(resume ? &from : nullptr);
-    });
+    outputs.run(view, [&] { sum = loop.run(resume ? &from : nullptr); });
   } catch (...) {  // the summary of a run that stopped holds what it did up to its last accepted state
     recordFigures(loop.progress(), op, *timer, wallStart);
     summarizeCounts(ctx.summary, loop.progress(), op, loop.time());
@@ -518,6 +510,14 @@ void DirectTransient::run(RunContext& ctx) {
   }
   timer->stopBaseTimer();
   reportRun(ctx, sum, op, *timer, wallStart, history);
+}
+
+// The view's records of a checkpoint's state, before the loop continues from it.
+void DirectTransient::continueView(DirectStepView& view, const StateArchive& resume, const StateVectors& vectors,
+                                   const Model& model) {
+  view.unarchive(resume, vectors, model.map());
+  log() << format("  continuing from the checkpoint at t = %.6e s (step %lld)\n", resume.getDouble("point/time"),
+                  resume.getInt("point/nominal"));
 }
 
 // The figures of the run: recorded, logged, summarised (<name>.summary.json); then the checks.

@@ -23,10 +23,13 @@
 #include "physics/StructuralOperator.hpp"
 #include "solvers/LinearSolver.hpp"
 #include "timeint/StabilityPolicy.hpp"
+#include "restart/StateVectors.hpp"
 #include "timeint/NewmarkFamily.hpp"
 #include "timeint/StructuralStepper.hpp"
 
 namespace choc {
+
+class DirectStepView;
 
 class DirectTransient : public Analysis {
  public:
@@ -94,6 +97,8 @@ class DirectTransient : public Analysis {
               const HistoryObserver& history);
   void summarize(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
                  const Comm& comm) const;
+  static void continueView(DirectStepView& view, const StateArchive& resume, const StateVectors& vectors,
+                           const Model& model);
   // summarize's figures that need no collective call: a run that stopped writes them too.
   void summarizeCounts(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
                        double timeReached) const;

@@ -87,6 +87,7 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
       constraints_.push_back(makeContactConstraint(mesh.coords[sp.slaveNode], dofs, sp, allComponents));
   }
   dofs_ = &dofs;
+  if (hasObstacles_) measureSlaveSizes(mesh);
   for (const PairDefinition& pair : pairs_)
     if (pair.friction > 0 && !friction_) enableFriction();
   indexTerms();

@@ -21,6 +21,7 @@
 #include "contact/FollowedSurfaces.hpp"
 #include "fem/DofMap.hpp"
 #include "core/TpetraTypes.hpp"
+#include "fem/ElementValidity.hpp"
 #include "mesh/Mesh.hpp"
 #include "restart/StateArchive.hpp"
 
@@ -118,6 +119,12 @@ class ContactManager {
   // tangential motion relative to its master point since beginStep. Collective.
   void commitStep(const Vector& u);
   long long searchProjections() const { return followed_ ? followed_->projections() : 0; }
+  // Slave nodes through a rigid obstacle by more than a fraction of their faces' size (the
+  // shortest edge of the slave faces around the node): past kPenetrationWarning a warning, past
+  // kPenetrationLimit a failure (ElementValidity's lines; contact/ObstaclePenetration.cpp).
+  // Collective; the same on every rank.
+  static constexpr double kPenetrationWarning = 0.1, kPenetrationLimit = 0.5;
+  void checkPenetration(const Vector& u, ElementValidity& v) const;
 
   // Coulomb friction (pairs with 'Friction Coefficient' mu > 0; contact/ContactFriction.cpp).
   // Per active slave node, an elastic-plastic tangential law on the step's relative tangential
@@ -230,6 +237,8 @@ class ContactManager {
   std::vector<double> inverseMassAtContact_;  // forwardIncrement: 1/m at contactDofs_
   int inverseMassTopology_ = -1;               // the topologyVersion_ it was gathered for
   bool hasObstacles_ = false, hasCurvedObstacles_ = false;
+  std::vector<double> slaveSize_;  // per constraint against an obstacle: its slave faces' shortest edge
+  void measureSlaveSizes(const Mesh& mesh);
 };
 
 }  // namespace choc

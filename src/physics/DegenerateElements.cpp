@@ -26,17 +26,20 @@ int repeatedNode(const int* nodes, int n) {
   return -1;
 }
 
-// The solid's smallest corner Jacobian relative to its largest, and the corner (1-based).
+// The solid's smallest corner Jacobian relative to its largest, and the corner (1-based). An
+// element whose corners are all negative is inverted as a whole (its node order), which the
+// element's own check reports: +infinity then.
 std::pair<double, int> smallestCornerJacobian(SolidShape t, const std::vector<Point3>& x) {
   const std::vector<Point3>& xi = nodeNaturalCoordinates(t);
-  double smallest = INFINITY, scale = 0.0;
+  double smallest = INFINITY, largest = -INFINITY;
   int corner = 0;
   for (int a = 0; a < cornerCount(t); ++a) {
     const double det = jacobianDeterminant(t, x, xi[size_t(a)]);
-    scale = std::max(scale, std::fabs(det));
+    largest = std::max(largest, det);
     if (det < smallest) smallest = det, corner = a + 1;
   }
-  return {scale > 0 ? smallest / scale : 0.0, corner};
+  if (largest < 0) return {INFINITY, corner};
+  return {largest > 0 ? smallest / largest : 0.0, corner};
 }
 
 // Two corners at one place (relative to the element's largest corner distance): the corners.

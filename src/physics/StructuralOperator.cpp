@@ -204,6 +204,13 @@ ConstraintUpdate StructuralOperator::updateConstraints(const Vector& u) {
 void StructuralOperator::initializeConstraints(const Vector& u) {
   if (contact_) contact_->initialize(u);
 }
+ElementValidity StructuralOperator::validity(const Vector& u) const {
+  TimerScope ts(timer_, "Transient: validity");
+  ElementValidity v = internal_->validity(u);
+  if (contact_) contact_->checkPenetration(u, v);
+  return v;
+}
+
 void StructuralOperator::saveState() {
   internal_->commit();
   if (links_) links_->commit();

@@ -65,7 +65,8 @@ class StructuralOperator : public ExplicitOperator {
   }
   void beginStep(const Vector& u, double t, double dt) override;
   void acceptStep(const Vector& u) override;
-  ElementValidity validity(const Vector& u) const override { return internal_->validity(u); }
+  // The elements' validity, then the slave nodes' penetration of rigid obstacles.
+  ElementValidity validity(const Vector& u) const override;
   double elasticTermsNorm(const Vector& u) const override;
   bool forcesVaryInTime() const override { return loads_ && loads_->ramped(); }
   void keepProducts(bool on) override { keepProducts_ = on; }
