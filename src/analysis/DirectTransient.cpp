@@ -103,7 +103,10 @@ Teuchos::ParameterList DirectTransient::parameters() {
              "central differences with finite-strain blocks: every this many steps the critical step "
              "is estimated again on the deformed mesh (the elements' tangent against their lumped "
              "mass: 2 to 12 internal forces' cost per estimate) and 'Stability Check' decides again "
-             "(src/analysis/DeformedStability.hpp); lower it for violent compression",
+             "(src/analysis/DeformedStability.hpp); lower it for violent compression. The elements' "
+             "validity is checked with each estimate (an element inverted at a corner or a point, small "
+             "strain out of its domain, a penetrated obstacle: docs/user-guide/errors.md; about 1.5 "
+             "internal forces' cost)",
              Range::positive());
   declareDouble(p, "Alpha", -0.1,
                 "alpha of 'modified average acceleration' and 'HHT', in [-1/3, 0]: "

@@ -200,7 +200,7 @@ void ModalTransient::run(RunContext& ctx) {
   StepLoop loop(stepper, TimeGrid(s_.startTime, s_.endTime, s_.dt));
   plan.checkpoint.archiveRun = [&](StateArchive& a) { loop.archive(a, vectors); };
   const HistoryObserver& history = addTransientObservers(outputs, s_.output, plan, ctx.model);
-  integrate(loop, outputs, view, resume, vectors, integrator);
+  integrate(loop, outputs, view, resume, vectors, integrator, ctx.summary, history);
   summarize(ctx.summary, basis, g, links, substeps, integrator.subStepsTaken());
   history.summarize(ctx.summary);
   evaluateChecks(b_->checks, history.history(), ctx.checks);
@@ -214,6 +214,7 @@ void ModalTransient::summarize(RunSummary& s, const ModalBasis& basis, const Gen
   s.set("time_step", s_.dt);
   s.set("end_time", s_.endTime);
   s.set("steps", static_cast<long long>(s_.steps));
+  s.set("time_reached", s_.endTime);
   s.set("substeps_per_step", substeps);
   s.set("substep", s_.dt / substeps);
   s.set("substeps_taken", taken);
@@ -334,7 +335,8 @@ int ModalTransient::stepsPerStep(const Generalized& g, const ModalLinks& links) 
 
 void ModalTransient::integrate(StepLoop& loop, ObserverSet& outputs, TransientView& view,
                                const StateArchive* resume, const StateVectors& vectors,
-                               const ModalIntegrator& integrator) const {
+                               const ModalIntegrator& integrator, RunSummary& stopped,
+                               const HistoryObserver& history) const {
   if (resume)
     log() << format("  continuing from the checkpoint at t = %.6e s (step %lld)\n",
                     resume->getDouble("driver/time"), resume->getInt("driver/nominal"));
@@ -342,10 +344,18 @@ void ModalTransient::integrate(StepLoop& loop, ObserverSet& outputs, TransientVi
   const StateArchive none;
   const StepLoop::Resume from{resume ? *resume : none, vectors};
   long long first = 1;
-  outputs.run(view, [&] {
-    first = resume ? resume->getInt("driver/nominal") + 1 : 1;
-    loop.run(resume ? &from : nullptr);
-  });
+  try {
+    outputs.run(view, [&] {
+      first = resume ? resume->getInt("driver/nominal") + 1 : 1;
+      loop.run(resume ? &from : nullptr);
+    });
+  } catch (...) {
+    stopped.set("steps", static_cast<long long>(loop.progress().steps));
+    stopped.set("time_reached", loop.time());
+    stopped.set("substeps_taken", integrator.subStepsTaken());
+    history.summarize(stopped);
+    throw;
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const long long taken = s_.steps - first + 1;
   log() << format("  %lld steps, %lld sub-steps in %.4f s (%.2f us per step, output included)\n",

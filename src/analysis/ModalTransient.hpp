@@ -67,8 +67,11 @@ class ModalTransient : public Analysis {
   };
   void archiveState(const ModalCheckpoint& c, StateArchive& a, const StateVectors& vectors) const;
   void resumeState(const ModalCheckpoint& c, const StateArchive& a, const StateVectors& vectors) const;
+  // The loop with its outputs; a run that stops writes its figures up to the last accepted state
+  // into `stopped` (steps, time_reached, sub-steps, the history's energies) before rethrowing.
   void integrate(StepLoop& loop, ObserverSet& outputs, TransientView& view, const StateArchive* resume,
-                 const StateVectors& vectors, const ModalIntegrator& integrator) const;
+                 const StateVectors& vectors, const ModalIntegrator& integrator, RunSummary& stopped,
+                 const HistoryObserver& history) const;
 
   const ModalBasis& basisFor(RunContext& ctx);
 

@@ -2,10 +2,11 @@
 // end (implicit: every accepted step; central differences: with each estimate of the critical
 // step, 'Critical Step Interval'):
 //
-//  - inverted: det F <= 0 at a corner or a quadrature point of an element (det F = det J(x) /
-//    det J(X) of the deformed and reference maps). A one-point element's force sees only its
-//    mean gradient, an F-bar element's only its points' modified F: an element tangled at its
-//    corners can keep both positive. A failure (exit 2).
+//  - inverted: det F <= 0 at a quadrature point of an element, or at a corner of a one-point
+//    element (det F = det J(x) / det J(X) of the deformed and reference maps). A one-point
+//    element's force sees only its mean gradient, an F-bar element's only its points' modified
+//    F: an element tangled at its corners (one-point) or at a point (F-bar) can keep both
+//    positive. A failure (exit 2).
 //  - a small-strain block whose displacement gradient H (at each element's centre) has left the
 //    small-strain domain: the strain ||sym H|| (Frobenius) or the rotation |skew H| (the
 //    rotation vector's length, rad). Past kSmallStrainWarning (5 % / 0.05 rad, where the

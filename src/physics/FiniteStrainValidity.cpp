@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <tuple>
 #include <utility>
 
 #include "core/CollectiveFailure.hpp"
@@ -17,8 +18,12 @@ namespace choc {
 
 namespace {
 
-// The natural derivatives dN_a/dxi at the points an element is checked at (its corners, then its
-// quadrature points), and N, dN at its centre: one table per shape and rule, made once.
+// The natural derivatives dN_a/dxi at the points an element is checked at (a one-point element's
+// corners, then the quadrature points), and N, dN at its centre: one table per shape, rule and
+// formulation, made once. A one-point element's force sees only its mean gradient, so its corners
+// are checked too; the other elements' points are those their force integrates (a quadratic
+// element's corner may turn slightly negative in a large deformation while its points, where it
+// is integrated, stay positive).
 struct PointTable {
   int dim = 3, nodes = 0, corners = 0;
   std::vector<Point3> xi;                // the checked points
@@ -28,13 +33,13 @@ struct PointTable {
 };
 
 const PointTable& pointTable(const FiniteStrainSolid& k) {
-  static std::map<std::pair<int, const QuadratureRule*>, PointTable> tables;
+  static std::map<std::tuple<int, const QuadratureRule*, bool>, PointTable> tables;
   const SolidShape t = k.shape();
-  PointTable& table = tables[{int(t), &k.rule()}];
+  PointTable& table = tables[{int(t), &k.rule(), k.onePoint()}];
   if (table.nodes > 0) return table;
   table.dim = parametricDimension(t), table.nodes = k.numNodes(), table.corners = cornerCount(t);
   const std::vector<Point3>& nodes = nodeNaturalCoordinates(t);
-  table.xi.assign(nodes.begin(), nodes.begin() + table.corners);
+  if (k.onePoint()) table.xi.assign(nodes.begin(), nodes.begin() + table.corners);
   table.xi.insert(table.xi.end(), k.rule().points.begin(), k.rule().points.end());
   std::vector<double> N;
   for (const Point3& xi : table.xi) {
@@ -180,7 +185,7 @@ ElementValidity FiniteStrainForce::validity(const Vector& u) const {
   rotation = worstOverRanks(rotation, false);
   ElementValidity v;
   if (detF.element >= 0 && !(detF.value > 0))
-    v.failure = describeMeasure(detF, format("inverted: det F = %.4g at a corner or quadrature point (the element "
+    v.failure = describeMeasure(detF, format("inverted: det F = %.4g at a quadrature point or a one-point element's corner (the element "
                                              "has turned inside out; a finer mesh, a smaller step or 'Formulation' = "
                                              "'F-bar' may hold it)", detF.value));
   if (!v.failure.empty()) return v;
