@@ -74,6 +74,21 @@ def case_one_point_taylor_bar_inverted(choc, box):
     failed_run_reports_fully(box, "impact", err)
 
 
+def case_one_point_plane_strain_inverted(choc, box):
+    """The same in plane strain: the Taylor bar's section as one-point QUAD4 at 10 x its velocity."""
+    def edit(r):
+        set_value(r, "Model/Kinematics", "plane strain")
+        set_value(r, "Model/Blocks/BAR/Formulation", "one-point")
+        flight = [c for c in find(r, "Analyses/impact/Initial Conditions") if c.tag == "ParameterList"][0]
+        [c for c in flight if c.get("name") == "Value"][0].set("value", "-2270")  # its name holds a '/'
+        set_value(r, "Analyses/impact/End Time", "2e-5", "double")
+    deck(os.path.join(ROOT, "input", "taylor_bar_axisymmetric.xml"), box.path("input.xml"), edit)
+    rc, out, err = run_choc(choc, box)
+    expect_error(rc, err, 2, r"element [0-9]+ of block 'BAR': inverted: det F = -?[0-9.e+-]+ at a quadrature point or a "
+                             r"one-point element's corner")
+    failed_run_reports_fully(box, "impact", err)
+
+
 def case_small_strain_sphere_out_of_domain(choc, box):
     """The small-strain plastic sphere at 216 m/s (100 x its yield velocity): strains of order 1 in
     a small-strain block: exit 2 past 50 % (or an inverted element), at the first check (the critical
