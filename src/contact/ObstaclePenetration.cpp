@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
+#include <vector>
 
 #include "contact/ContactFaces.hpp"
 #include "contact/ContactManager.hpp"
@@ -14,8 +16,15 @@ namespace choc {
 void ContactManager::measureSlaveSizes(const Mesh& mesh) {
   std::map<std::pair<int, int>, double> shortest;  // (pair, slave node) -> shortest edge of its faces
   for (size_t p = 0; p < pairs_.size(); ++p) {
-    if (!pairs_[p].hasObstacle) continue;
-    for (const Face& f : facesOf(mesh, pairs_[p].slaveSideSet)) {
+    // A slave node set (no faces: a shock link's node against an obstacle) has no size to judge by.
+    if (!pairs_[p].hasObstacle || pairs_[p].slaveSideSet.empty()) continue;
+    std::vector<Face> faces;
+    try {
+      faces = facesOf(mesh, pairs_[p].slaveSideSet);
+    } catch (const std::invalid_argument&) {
+      continue;  // the pairing has accepted the set: only its faces' sizes are not known
+    }
+    for (const Face& f : faces) {
       const int corners = f.edgeNodes > 0 ? 2 : isTriangle(f) ? 3 : 4;
       double edge = std::numeric_limits<double>::infinity();
       for (int a = 0; a < corners; ++a) {
