@@ -103,10 +103,10 @@ Teuchos::ParameterList DirectTransient::parameters() {
              "central differences with finite-strain blocks: every this many steps the critical step "
              "is estimated again on the deformed mesh (the elements' tangent against their lumped "
              "mass: 2 to 12 internal forces' cost per estimate) and 'Stability Check' decides again "
-             "(src/analysis/DeformedStability.hpp); lower it for violent compression. The elements' "
-             "validity is checked with each estimate (an element inverted at a corner or a point, small "
-             "strain out of its domain, a penetrated obstacle: docs/user-guide/errors.md; about 1.5 "
-             "internal forces' cost)",
+             "(src/analysis/DeformedStability.hpp); lower it for violent compression. Every central-"
+             "differences run checks the elements' validity at the same interval (an inverted element, "
+             "small strain out of its domain, a penetrated obstacle: docs/user-guide/errors.md; about "
+             "1.5 internal forces' cost)",
              Range::positive());
   declareDouble(p, "Alpha", -0.1,
                 "alpha of 'modified average acceleration' and 'HHT', in [-1/3, 0]: "
@@ -450,6 +450,7 @@ std::unique_ptr<StructuralStepper> DirectTransient::stepper(StructuralOperator& 
     op.useDiagonalMass(b_->explicitPlan->massDiagonal);
     auto cd = std::make_unique<CentralDifferenceStepper>(op, b_->explicitPlan->inverseMass, s_.time,
                                                          b_->explicitPlan->substeps);
+    cd->checkValidityEvery(s_.criticalStepInterval);
     if (b_->finiteStrain) {
       auto monitor = std::make_shared<DeformedStability>(op, *b_->explicitPlan, s_.rayleighK, s_.rayleighM,
                                                          s_.time.timeStep, s_.stability, s_.time.label);
@@ -478,8 +479,7 @@ void DirectTransient::run(RunContext& ctx) {
   auto timer = rcp(new Teuchos::StackedTimer(("Transient '" + name_ + "'").c_str()));
   StructuralOperator op(internalForce(ctx.model), b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->contact.get(),
                         b_->links.get(), std::move(b_->solver), timer.get());
-  op.setForwardIncrementContact(s_.explicitScheme && s_.contact.forwardIncrementsWhenExplicit());
-  op.setCondensedContact(!s_.explicitScheme && b_->condenseContact);
+  configure(op, ctx.model);
   describe(ctx.model, op);
   const StateArchive* resume = resumeFor(ctx);
   ObserverSet outputs;
@@ -513,6 +513,15 @@ void DirectTransient::run(RunContext& ctx) {
   }
   timer->stopBaseTimer();
   reportRun(ctx, sum, op, *timer, wallStart, history);
+}
+
+// How the operator treats contact (forward increments, condensed), and the domain of its assembled
+// small-strain blocks (checked with the elements' validity).
+void DirectTransient::configure(StructuralOperator& op, Model& model) const {
+  op.setForwardIncrementContact(s_.explicitScheme && s_.contact.forwardIncrementsWhenExplicit());
+  op.setCondensedContact(!s_.explicitScheme && b_->condenseContact);
+  auto domain = std::make_shared<SmallStrainDomain>(model);
+  if (!domain->empty()) op.setSmallStrainDomain(domain);
 }
 
 // The view's records of a checkpoint's state, before the loop continues from it.

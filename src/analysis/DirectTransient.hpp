@@ -97,6 +97,7 @@ class DirectTransient : public Analysis {
               const HistoryObserver& history);
   void summarize(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
                  const Comm& comm) const;
+  void configure(StructuralOperator& op, Model& model) const;
   static void continueView(DirectStepView& view, const StateArchive& resume, const StateVectors& vectors,
                            const Model& model);
   // summarize's figures that need no collective call: a run that stopped writes them too.

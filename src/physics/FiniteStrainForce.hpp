@@ -30,6 +30,7 @@
 
 #include <Tpetra_Import.hpp>
 
+#include "fem/ElementChecks.hpp"
 #include "fem/FiniteStrainSolid.hpp"
 #include "physics/FollowerPressure.hpp"
 #include "physics/InternalForce.hpp"
@@ -163,13 +164,9 @@ class FiniteStrainForce : public InternalForce {
   // Each element's reference node coordinates (3 per node, elements_' order) for validity().
   std::vector<double> reference_;
   std::vector<size_t> referenceAt_;
-  struct Measure {
-    double value = 0.0;
-    int element = -1;  // global number, -1: none
-  };
+  using Measure = ElementMeasure;
   void measureElement(const Element& e, const std::vector<double>& ue, Measure& detF, Measure& strain,
                       Measure& rotation) const;
-  Measure worstOverRanks(Measure local, bool smallest) const;
   std::string describeMeasure(const Measure& m, const std::string& text) const;
   std::vector<size_t> globalState_;  // per global element: its state's offset in the archive (-1: none)
   size_t globalStateSize_ = 0;

@@ -207,6 +207,7 @@ void StructuralOperator::initializeConstraints(const Vector& u) {
 ElementValidity StructuralOperator::validity(const Vector& u) const {
   TimerScope ts(timer_, "Transient: validity");
   ElementValidity v = internal_->validity(u);
+  if (domain_) domain_->check(u, v);
   if (contact_) contact_->checkPenetration(u, v);
   return v;
 }

@@ -16,6 +16,7 @@
 #include <Teuchos_StackedTimer.hpp>
 
 #include "core/TimerScope.hpp"
+#include "physics/SmallStrainDomain.hpp"
 #include "contact/ContactManager.hpp"
 #include "contact/ContactSystem.hpp"
 #include "physics/KeptFactorization.hpp"
@@ -65,8 +66,10 @@ class StructuralOperator : public ExplicitOperator {
   }
   void beginStep(const Vector& u, double t, double dt) override;
   void acceptStep(const Vector& u) override;
-  // The elements' validity, then the slave nodes' penetration of rigid obstacles.
+  // The elements' validity, the assembled small-strain blocks' domain, then the slave nodes'
+  // penetration of rigid obstacles.
   ElementValidity validity(const Vector& u) const override;
+  void setSmallStrainDomain(std::shared_ptr<const SmallStrainDomain> d) { domain_ = std::move(d); }
   double elasticTermsNorm(const Vector& u) const override;
   bool forcesVaryInTime() const override { return loads_ && loads_->ramped(); }
   void keepProducts(bool on) override { keepProducts_ = on; }
@@ -136,6 +139,7 @@ class StructuralOperator : public ExplicitOperator {
   DirectLinks* links_;
   std::unique_ptr<LinearSolver> solver_;
   Teuchos::StackedTimer* timer_;
+  std::shared_ptr<const SmallStrainDomain> domain_;  // null: no assembled small-strain solid block
   std::unique_ptr<ContactSystem> system_;
   int systemTopology_ = 0;
   long long filledTangent_ = 0;  // the tangent version the system's K rows were last written from  // the contact manager's topologyVersion() the graph was built for

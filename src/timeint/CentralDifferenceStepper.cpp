@@ -96,13 +96,15 @@ void CentralDifferenceStepper::unarchiveState(const StateArchive& a, const State
 }
 
 Advance CentralDifferenceStepper::advance(const NominalStep& s, StepControl& /*c*/, TransientSummary& sum) {
-  if (decide_ && interval_ > 0 && (s.n - 1) % interval_ == 0) {
+  if (validityEvery_ > 0 && (s.n - 1) % validityEvery_ == 0) {
     const std::string invalid = checkValidity(*u_, s.t);
     if (!invalid.empty()) {
       char buf[96];
       std::snprintf(buf, sizeof buf, "at t = %.6e s (step %lld): ", s.t, s.n - 1);
       throw InadmissibleState(s_.label + ": " + buf + invalid);
     }
+  }
+  if (decide_ && interval_ > 0 && (s.n - 1) % interval_ == 0) {
     substeps_ = decide_(*u_, s.t, s.n);
     sum.smallestStep = std::min(sum.smallestStep, (s.target - s.t) / substeps_);
   }

@@ -32,6 +32,10 @@ class CentralDifferenceStepper : public StructuralStepper {
     interval_ = interval;
     decide_ = std::move(decide);
   }
+  // Every `interval` steps (and at the first), the operator's validity of the accepted state
+  // (SecondOrderOperator::validity): a failure stops the run (InadmissibleState), a warning is
+  // logged once.
+  void checkValidityEvery(int interval) { validityEvery_ = interval; }
   void archiveState(StateArchive& a, const StateVectors& vectors) const override;
   void unarchiveState(const StateArchive& a, const StateVectors& vectors) override;
 
@@ -54,6 +58,7 @@ class CentralDifferenceStepper : public StructuralStepper {
   RCP<const Vector> inverseMass_;
   int substeps_ = 1;
   int interval_ = 0;
+  int validityEvery_ = 0;  // steps between validity checks (0: none)
   SubstepDecision decide_;
   RCP<Vector> vHalf_, r_, uStar_;
 };
