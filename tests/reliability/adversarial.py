@@ -606,17 +606,18 @@ def last_value(path, name):
 CASES = {name[len("case_"):]: fn for name, fn in globals().items() if name.startswith("case_")}
 
 
-def main():
+def run_cases(cases, script):
+    """The command line of a case script: --list, or CHOC WORKDIR CASE (exit 0 when it passes)."""
     if sys.argv[1:] == ["--list"]:
-        print(";".join(sorted(CASES)))
+        print(";".join(sorted(cases)))
         return 0
-    if len(sys.argv) != 4 or sys.argv[3] not in CASES:
-        print("usage: adversarial.py CHOC WORKDIR CASE; cases: " + " ".join(sorted(CASES)))
+    if len(sys.argv) != 4 or sys.argv[3] not in cases:
+        print("usage: %s CHOC WORKDIR CASE; cases: %s" % (script, " ".join(sorted(cases))))
         return 2
     choc, workdir, case = os.path.abspath(sys.argv[1]), sys.argv[2], sys.argv[3]
     box = Sandbox(workdir, case)
     try:
-        CASES[case](choc, box)
+        cases[case](choc, box)
     except Failure as e:
         print("FAIL: %s: %s" % (case, e))
         return 1
@@ -625,4 +626,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_cases(CASES, "adversarial.py"))
