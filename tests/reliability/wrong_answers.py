@@ -72,6 +72,13 @@ def case_one_point_taylor_bar_inverted(choc, box):
     expect_error(rc, err, 2, r"element [0-9]+ of block 'BAR': inverted: det F = -?[0-9.e+-]+ at a quadrature point or a "
                              r"one-point element's corner")
     failed_run_reports_fully(box, "impact", err)
+    # 2 ranks name the same element at the same time (the lowest-numbered of the worst, whatever
+    # rank holds it): the whole line alike
+    cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "--bind-to", "none", "--mca", "mpi_yield_when_idle", "1",
+           "-np", "2", choc, "run", box.path("input.xml"), "-o", box.path("np2")]
+    rc2, _, err2 = run(cmd, box.dir)
+    line = [l for l in err2.splitlines() if l.startswith("choc: numerical failure")]
+    check(rc2 != 0 and line and line[0] == err.strip(), "2 ranks: exit %s, %r against %r" % (rc2, line, err.strip()))
 
 
 def case_one_point_plane_strain_inverted(choc, box):
