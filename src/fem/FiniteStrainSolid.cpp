@@ -9,6 +9,8 @@
 #include "fem/FBarTangent.hpp"
 #include "fem/IsoparametricPoint.hpp"
 #include "fem/SolidGeometry.hpp"
+#include "materials/HyperelasticPoint.hpp"
+#include "materials/J2Point.hpp"
 
 namespace choc {
 
@@ -20,16 +22,13 @@ struct PointView {
   double R;
 };
 
-// The state at one quadrature point: F, the material's response (hyperelastic: to C = F^T F,
-// plastic: to F and the point's committed state) and P.
+// The state at one quadrature point: F and the material's response to it (and to the point's
+// committed state).
 struct PointState {
-  Mat3 F;                   // the material's F: F-bar's (J0 / J)^(1/3) F, else F
-  Mat3 Fstd;                // the point's own F = I + du/dX
-  double ratio = 1.0;       // (J0 / J)^(1/3) with F-bar, else 1
-  StressResponse response;  // hyperelastic
-  J2Response plastic;       // J2 plasticity
-  Mat3 P;
-  double energy;
+  Mat3 F;                  // the material's F: F-bar's (J0 / J)^(1/3) F, else F
+  Mat3 Fstd;               // the point's own F = I + du/dX
+  double ratio = 1.0;      // (J0 / J)^(1/3) with F-bar, else 1
+  PointResponse response;  // P, dP/dF, W
 };
 
 namespace {
@@ -46,20 +45,6 @@ const std::vector<GradientRow>& gradientRows(Kinematics k) {
   static const std::vector<GradientRow> plane = {{0, 0, 0}, {0, 1, 0}, {1, 0, 1}, {1, 1, 1}};
   static const std::vector<GradientRow> axi = {{0, 0, 0}, {0, 1, 0}, {1, 0, 1}, {1, 1, 1}, {2, 2, 0}};
   return k == Kinematics::ThreeD ? threeD : (k == Kinematics::PlaneStrain ? plane : axi);
-}
-
-// The Cauchy stress a plastic point's state records: P F^T / det F from the last accepted P and
-// F (the material's F: F-bar's Fbar), P itself in small strain.
-Mat3 plasticCauchy(const double* st, bool finite) {
-  Mat3 P, F;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) P[i][j] = st[kJ2Stress + 3 * i + j], F[i][j] = st[kJ2Deformation + 3 * i + j];
-  if (!finite) return P;
-  Mat3 c = multiply(P, transpose(F));
-  const double J = determinant(F);
-  for (auto& row : c)
-    for (double& v : row) v /= J;
-  return c;
 }
 
 PointView pointOf(const ElementGeometry& g, int q) {
@@ -146,13 +131,13 @@ void addPointForce(Kinematics k, const PointView& p, Stress stress, std::vector<
   }
 }
 
-// J0 > 0: F-bar, the material gets (J0 / J)^(1/3) F (J0 the element's mean dilatation).
-void evaluatePoint(const SolidMaterial& m, SolidShape t, const Point3& xi, const Mat3& F, const double* old,
-                   bool withTangent, PointState& s, double J0 = 0.0, bool elasticTangent = false, double dt = 0.0) {
+// J0 > 0: F-bar, the material gets (J0 / J)^(1/3) F (J0 the element's mean dilatation). The
+// material's new state into `next` when not null.
+void evaluatePoint(const MaterialPoint& m, SolidShape t, const Point3& xi, const Mat3& F, const double* old,
+                   double* next, const PointRequest& request, PointState& s, double J0 = 0.0) {
   s.Fstd = s.F = F;
-  const bool finite = !m.plastic || m.plastic->finiteStrain();
   const double J = determinant(s.F);
-  if (finite && !(J > 0)) {
+  if (m.finiteStrain() && !(J > 0)) {
     std::ostringstream msg;
     msg << "inverted " << topologyName(t) << " element: det F = " << J << " <= 0 at natural point "
         << naturalPointText(t, xi);
@@ -165,50 +150,21 @@ void evaluatePoint(const SolidMaterial& m, SolidShape t, const Point3& xi, const
       for (double& v : row) v *= s.ratio;
   }
   try {
-    if (m.plastic) {
-      std::array<double, kJ2StateSize> virgin;
-      if (!old) virgin = m.plastic->initialState(), old = virgin.data();
-      m.plastic->respond(s.F, old, withTangent, s.plastic, elasticTangent, dt);
-      s.P = s.plastic.P;
-      s.energy = s.plastic.energy;
-      return;
-    }
-    m.elastic->respond(transposeTimes(s.F), withTangent, s.response);
+    m.respond(s.F, old, next, request, s.response);
   } catch (const std::domain_error& e) {
     throw InvertedElement(std::string(topologyName(t)) + " element at natural point " + naturalPointText(t, xi) +
                           ": " + e.what());
   }
-  s.P = multiply(s.F, s.response.S);
-  s.energy = s.response.energy;
 }
 
-// A_rs = dP_r / dF_s for the kinematics' rows: delta_ik S_JL + F_iI F_kK CC_IJKL, the
-// contraction in two passes (T_iJKL = F_iI CC_IJKL, then F_kK T_iJKL): 486 products instead of
-// 6,561.
-void firstElasticity(Kinematics k, const PointState& s, bool plastic, std::vector<double>& A) {
+// A_rs = dP_r / dF_s for the kinematics' rows, from the material's full dP/dF.
+void firstElasticity(Kinematics k, const PointState& s, std::vector<double>& A) {
   const auto& rows = gradientRows(k);
   const size_t nr = rows.size();
-  if (plastic) {  // the material gives dP/dF itself
-    A.assign(nr * nr, 0.0);
-    for (size_t r = 0; r < nr; ++r)
-      for (size_t q = 0; q < nr; ++q)
-        A[r * nr + q] = s.plastic.A[3 * rows[r].i + rows[r].J][3 * rows[q].i + rows[q].J];
-    return;
-  }
-  const auto& C = s.response.tangent;
-  double T[3][3][3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int J = 0; J < 3; ++J)
-      for (int K = 0; K < 3; ++K)
-        for (int L = 0; L < 3; ++L)
-          T[i][J][K][L] = s.F[i][0] * C[0][J][K][L] + s.F[i][1] * C[1][J][K][L] + s.F[i][2] * C[2][J][K][L];
   A.assign(nr * nr, 0.0);
   for (size_t r = 0; r < nr; ++r)
-    for (size_t q = 0; q < nr; ++q) {
-      const int i = rows[r].i, J = rows[r].J, kk = rows[q].i, L = rows[q].J;
-      A[r * nr + q] = (i == kk ? s.response.S[J][L] : 0.0) + s.F[kk][0] * T[i][J][0][L] +
-                      s.F[kk][1] * T[i][J][1][L] + s.F[kk][2] * T[i][J][2][L];
-    }
+    for (size_t q = 0; q < nr; ++q)
+      A[r * nr + q] = s.response.A[3 * rows[r].i + rows[r].J][3 * rows[q].i + rows[q].J];
 }
 
 // K += w G^T A G with G the gradient rows' values at p.
@@ -241,13 +197,14 @@ void addTangent(Kinematics k, const PointView& p, const std::vector<double>& A, 
 
 FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
                                      std::shared_ptr<const HyperelasticMaterial> material, bool fbar)
-    : FiniteStrainSolid(topology, kinematics, SolidMaterial{std::move(material), nullptr}, ElementFormulation{fbar}) {}
+    : FiniteStrainSolid(topology, kinematics, hyperelasticPoint(std::move(material)), ElementFormulation{fbar}) {}
 
 FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
                                      std::shared_ptr<const J2Plasticity> material, bool fbar)
-    : FiniteStrainSolid(topology, kinematics, SolidMaterial{nullptr, std::move(material)}, ElementFormulation{fbar}) {}
+    : FiniteStrainSolid(topology, kinematics, j2Point(std::move(material)), ElementFormulation{fbar}) {}
 
-FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kinematics, SolidMaterial material,
+FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
+                                     std::shared_ptr<const MaterialPoint> material,
                                      const ElementFormulation& formulation)
     : shape_(solidTopology(topology)),
       kin_(kinematics),
@@ -280,20 +237,16 @@ void FiniteStrainSolid::checkFormulation() const {
 
 
 int FiniteStrainSolid::stateSize() const {
-  return plastic() ? kJ2StateSize * rule().size() : 0;
+  return material_->stateSize() * rule().size();
 }
 
 void FiniteStrainSolid::initialState(double* state) const {
-  if (!plastic()) return;
-  const auto s0 = material_.plastic->initialState();
-  for (int q = 0; q < rule().size(); ++q) std::copy(s0.begin(), s0.end(), state + kJ2StateSize * q);
+  const int n = material_->stateSize();
+  for (int q = 0; q < rule().size() && n > 0; ++q) material_->initialState(state + n * q);
 }
 
 double FiniteStrainSolid::modulus() const {
-  if (plastic()) return material_.plastic->bulkModulus() + 4.0 / 3.0 * material_.plastic->shearModulus();
-  StressResponse r;
-  material_.elastic->respond(identity3(), true, r);
-  return r.tangent[0][0][0][0];
+  return material_->modulus();
 }
 
 ElementGeometry FiniteStrainSolid::geometry(const std::vector<Point3>& X) const {
@@ -460,8 +413,8 @@ double FiniteStrainSolid::meanDilatation(const ElementGeometry& g, const std::ve
 // the derivative of int W(Fbar) dV (d ln J = F^-T : dF; B = d ln Jbar / du).
 void FiniteStrainSolid::addFBarForce(const PointView& p, const PointState& s, const Mat3& Finv,
                                      const std::vector<double>& B, double w, std::vector<double>& f) const {
-  const double third = contract(s.P, s.F) / 3;
-  addPointForce(kin_, p, [&](int i, int J) { return w * (s.ratio * s.P[i][J] - third * Finv[J][i]); }, f);
+  const double third = contract(s.response.P, s.F) / 3;
+  addPointForce(kin_, p, [&](int i, int J) { return w * (s.ratio * s.response.P[i][J] - third * Finv[J][i]); }, f);
   for (size_t k = 0; k < f.size(); ++k) f[k] += w * third * B[k];
 }
 
@@ -488,26 +441,25 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
     for (double w : g.weight) V += w;
     fbarTangent.emplace(nd, B, J0 * V);
   }
+  const int ns = material_->stateSize();
+  const PointRequest request{K != nullptr, elasticTangent, dt};
   for (int q = 0; q < g.points; ++q) {
     const double w = g.weight[size_t(q)];
     const PointView p = pointOf(g, q);
-    evaluatePoint(material_, shape_, rule.points[size_t(q)], F[size_t(q)], old ? old + kJ2StateSize * q : nullptr,
-                  K != nullptr, s, J0, elasticTangent, dt);
-    energy += w * s.energy;
-    if (plastic()) {
-      if (next) std::copy(s.plastic.state.begin(), s.plastic.state.end(), next + kJ2StateSize * q);
-      if (plasticWork) *plasticWork += w * s.plastic.plasticWork;
-    }
+    evaluatePoint(*material_, shape_, rule.points[size_t(q)], F[size_t(q)], old ? old + ns * q : nullptr,
+                  next ? next + ns * q : nullptr, request, s, J0);
+    energy += w * s.response.energy;
+    if (plastic() && plasticWork) *plasticWork += w * s.response.dissipated;
     if (fbar_)
       addFBarForce(p, s, Finv[size_t(q)], B, w, f);
     else
-      addPointForce(kin_, p, [&](int i, int J) { return w * s.P[i][J]; }, f);
+      addPointForce(kin_, p, [&](int i, int J) { return w * s.response.P[i][J]; }, f);
     if (!K) continue;
     if (fbarTangent) {
       addFBarTangent(p, s, F[size_t(q)], Finv[size_t(q)], w, *fbarTangent, *K);
       continue;
     }
-    firstElasticity(kin_, s, plastic(), A);
+    firstElasticity(kin_, s, A);
     addTangent(kin_, p, A, w, *K);
   }
   if (fbarTangent)
@@ -529,77 +481,65 @@ double FiniteStrainSolid::evaluate(const ElementGeometry& g, const std::vector<d
 void FiniteStrainSolid::addFBarTangent(const PointView& p, const PointState& s, const Mat3& F, const Mat3& Finv,
                                        double w, FBarTangent& tangent, DenseMatrix& K) const {
   const int nc = componentsPerNode();
-  thread_local std::vector<double> G, A;
+  thread_local std::vector<double> G;
   G.assign(size_t(p.nodes * nc) * 9, 0.0);
   for (const GradientRow& r : gradientRows(kin_))
     for (int a = 0; a < p.nodes; ++a) G[size_t(a * nc + r.comp) * 9 + size_t(3 * r.i + r.J)] += rowValue(kin_, r, p, a);
-  double full[9][9];
-  if (plastic()) {
-    std::copy(&s.plastic.A[0][0], &s.plastic.A[0][0] + 81, &full[0][0]);
-  } else {
-    firstElasticity(Kinematics::ThreeD, s, false, A);  // the nine rows in the order 3 i + J
-    std::copy(A.begin(), A.end(), &full[0][0]);
-  }
-  tangent.addPoint(G, F, Finv, determinant(F), s.F, s.ratio, s.P, full, w, K);
+  tangent.addPoint(G, F, Finv, determinant(F), s.F, s.ratio, s.response.P, s.response.A, w, K);
 }
 
 void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vector<double>& u,
                                       std::array<double, 6>& sigma, double& energyDensity, const double* old,
-                                      PlasticAverages* plastic) const {
+                                      std::vector<double>* fields) const {
   const QuadratureRule& rule = this->rule();
+  const MaterialPoint& m = *material_;
+  const bool recorded = m.reportsState();  // the state's stress and energy, not u's
   PointState s;
   std::vector<double> B;
-  std::vector<Mat3> F, Finv;  // plastic blocks read their state, not u
-  if (!this->plastic())
+  std::vector<Mat3> F, Finv;
+  if (!recorded)
     for (int q = 0; q < g.points; ++q) F.push_back(deformationGradient(kin_, pointOf(g, q), u));
-  const double J0 = this->plastic() ? 0.0 : meanDilatation(g, F, B, Finv);
+  const double J0 = recorded ? 0.0 : meanDilatation(g, F, B, Finv);
   std::vector<double> virgin;
-  if (this->plastic() && !old) virgin.resize(size_t(stateSize())), initialState(virgin.data()), old = virgin.data();
-  if (plastic) *plastic = PlasticAverages{};
+  if (m.stateSize() > 0 && !old) virgin.resize(size_t(stateSize())), initialState(virgin.data()), old = virgin.data();
+  if (fields) fields->assign(m.fieldNames().size(), 0.0);
   sigma.fill(0.0);
   energyDensity = 0.0;
   double volume = 0.0;
   for (int q = 0; q < g.points; ++q) {
     const double w = g.weight[size_t(q)];
+    const double* st = old ? old + m.stateSize() * q : nullptr;
     Mat3 c;
-    if (this->plastic()) {  // the stress the last accepted increment ended at, from the point's state
-      const double* st = old + kJ2StateSize * q;
-      c = plasticCauchy(st, material_.plastic->finiteStrain());
-      energyDensity += w * st[kJ2Energy];
-      if (plastic) {
-        plastic->vonMises += w * vonMises(c);
-        plastic->equivalentPlasticStrain += w * st[kJ2Alpha];
-        plastic->temperature += w * st[kJ2Temperature];
-        plastic->damage += w * st[kJ2Damage];
-        plastic->pressure -= w * trace(c) / 3;
-      }
+    if (recorded) {  // the stress the last accepted increment ended at, from the point's state
+      c = m.recordedCauchy(st);
+      energyDensity += w * m.recordedEnergy(st);
     } else {
-      evaluatePoint(material_, shape_, rule.points[size_t(q)], F[size_t(q)], nullptr, false, s, J0);
-      c = cauchyStress(s.F, s.response.S);
-      energyDensity += w * s.energy;
+      evaluatePoint(m, shape_, rule.points[size_t(q)], F[size_t(q)], st, nullptr, PointRequest{}, s, J0);
+      c = cauchyFromFirstPiola(s.response.P, s.F, m.finiteStrain());
+      energyDensity += w * s.response.energy;
     }
+    if (fields) m.addFields(st, c, w, fields->data());
     const double v[6] = {c[0][0], c[1][1], c[2][2], c[0][1], c[1][2], c[2][0]};
     for (int i = 0; i < 6; ++i) sigma[size_t(i)] += w * v[i];
     volume += w;
   }
   for (double& v : sigma) v /= volume;
   energyDensity /= volume;
-  if (plastic)
-    for (double* v : {&plastic->vonMises, &plastic->equivalentPlasticStrain, &plastic->temperature, &plastic->pressure,
-                      &plastic->damage})
-      *v /= volume;
+  if (fields)
+    for (double& v : *fields) v /= volume;
 }
 
 int FiniteStrainSolid::pointsAtMelting(const double* state) const {
   if (!thermal()) return 0;
   int n = 0;
-  for (int q = 0; q < rule().size(); ++q) n += material_.plastic->flowStress().melted(state[kJ2StateSize * q + kJ2Temperature]);
+  for (int q = 0; q < rule().size(); ++q) n += material_->melted(state + material_->stateSize() * q);
   return n;
 }
 
 double FiniteStrainSolid::largestDamage(const double* state) const {
   double d = 0.0;
-  for (int q = 0; q < rule().size(); ++q) d = std::max(d, state[kJ2StateSize * q + kJ2Damage]);
+  if (!damaged()) return d;
+  for (int q = 0; q < rule().size(); ++q) d = std::max(d, material_->damage(state + material_->stateSize() * q));
   return d;
 }
 

@@ -12,11 +12,11 @@
 // (x = R, y = Z): F_thetatheta = 1 + u_r / R, whose variation N_a / R adds to the radial
 // rows, integrals over the full ring. Element DOFs node-major like every kernel.
 //
-// With a J2 plasticity material (materials/J2Plasticity.hpp) the material gives P and dP/dF
-// from F and each quadrature point's committed state (kJ2StateSize numbers per point, in the
-// caller's arrays: old in, new out); in small strain (the material's finiteStrain() false) the
-// same integrals with P = sigma(sym(F - I)) and A = dsigma/deps are the small-strain plastic
-// element (no geometric stiffness, no det F check).
+// The material is a material point (materials/MaterialPoint.hpp): it gives P and dP/dF from F
+// and, for a law with state (J2 plasticity), each quadrature point's committed state
+// (stateSize() numbers per point, in the caller's arrays: old in, new out); a small-strain law
+// (finiteStrain() false) gives P = sigma(sym(F - I)) and A = dsigma/deps, the same integrals
+// being the small-strain element (no geometric stiffness, no det F check).
 //
 // F-bar (de Souza Neto, Peric, Dutko and Owen 1996) in its mean-dilatation form, for every
 // element with more than one point (not TET4, TRI3) in finite strain: each point's material sees
@@ -55,6 +55,7 @@
 #include "fem/ShapeFunctions.hpp"
 #include "materials/Hyperelastic.hpp"
 #include "materials/J2Plasticity.hpp"
+#include "materials/MaterialPoint.hpp"
 
 namespace choc {
 
@@ -91,21 +92,6 @@ struct PointView;
 struct PointState;
 class FBarTangent;
 
-// A block's material: hyperelastic or plastic (one of the two).
-struct SolidMaterial {
-  std::shared_ptr<const HyperelasticMaterial> elastic;
-  std::shared_ptr<const J2Plasticity> plastic;
-};
-
-// Element averages of a plastic material's fields.
-struct PlasticAverages {
-  double vonMises = 0.0;                // of the Cauchy stress [Pa]
-  double equivalentPlasticStrain = 0.0;  // alpha [-]
-  double temperature = 0.0;              // Johnson-Cook's (0 for the laws without temperature)
-  double pressure = 0.0;                 // -tr(sigma) / 3 [Pa]
-  double damage = 0.0;                   // Johnson-Cook's D (0 without it)
-};
-
 class FiniteStrainSolid {
  public:
   // Throws std::invalid_argument for an unknown topology or one that does not fit the
@@ -116,8 +102,8 @@ class FiniteStrainSolid {
                     bool fbar = false);
   // Any formulation; throws std::invalid_argument where it does not apply (F-bar on one-point
   // elements or in small strain, one point on other than HEX8 in 3D and QUAD4 in plane strain).
-  FiniteStrainSolid(const std::string& topology, Kinematics kinematics, SolidMaterial material,
-                    const ElementFormulation& formulation);
+  FiniteStrainSolid(const std::string& topology, Kinematics kinematics,
+                    std::shared_ptr<const MaterialPoint> material, const ElementFormulation& formulation);
   bool fbar() const { return fbar_; }
   bool onePoint() const { return onePoint_; }
   // The integration rule of the element's points (its state has one per point).
@@ -126,17 +112,19 @@ class FiniteStrainSolid {
   SolidShape shape() const { return shape_; }
   Kinematics kinematics() const { return kin_; }
   int componentsPerNode() const { return kin_ == Kinematics::ThreeD ? 3 : 2; }
-  bool plastic() const { return material_.plastic != nullptr; }
-  // A plastic material whose flow stress carries a temperature (Johnson-Cook).
-  bool thermal() const { return plastic() && material_.plastic->flowStress().hasTemperature(); }
-  // A plastic material that accumulates Johnson-Cook's damage, and its largest point value in a state.
-  bool damaged() const { return plastic() && material_.plastic->hasDamage(); }
+  const MaterialPoint& material() const { return *material_; }
+  // A dissipative material (a return map: J2 plasticity).
+  bool plastic() const { return material_->dissipative(); }
+  // A material whose points carry a temperature (Johnson-Cook).
+  bool thermal() const { return material_->hasTemperature(); }
+  // A material that accumulates damage, and its largest point value in a state.
+  bool damaged() const { return material_->hasDamage(); }
   double largestDamage(const double* state) const;
-  // The points of a state at the melting temperature (FlowStress::melted; 0 without temperature).
+  // The points of a state at the melting temperature (0 without temperature).
   int pointsAtMelting(const double* state) const;
-  // Finite-strain kinematics (every hyperelastic kernel; a plastic one with a finite-strain material).
-  bool finiteKinematics() const { return !plastic() || material_.plastic->finiteStrain(); }
-  // The numbers of state an element keeps (0 for a hyperelastic material), and their virgin values.
+  // Finite-strain kinematics (the material's: every hyperelastic kernel, a plastic one in finite strain).
+  bool finiteKinematics() const { return material_->finiteStrain(); }
+  // The numbers of state an element keeps (0 for a stateless material), and their virgin values.
   int stateSize() const;
   void initialState(double* state) const;
   // The material's modulus at C = I, dS_11/dE_11 = lambda + 2 mu: the size of the stress's terms
@@ -167,11 +155,11 @@ class FiniteStrainSolid {
 
   // The Cauchy stress (xx, yy, zz, xy, yz, zx; for axisymmetric rr, zz, thetatheta, rz, 0, 0)
   // and the strain-energy density W, both averaged over the element's reference volume.
-  // A plastic material: the stress and energy its state `old` records (those of the last accepted
-  // increment: the state ends at u), with its von Mises stress, alpha, temperature and pressure
-  // in *plastic.
+  // A material that reports its state: the stress and energy its state `old` records (those of
+  // the last accepted increment: the state ends at u). With `fields`, the averages of the
+  // material's named fields (MaterialPoint::fieldNames, in that order).
   void averageStress(const ElementGeometry& g, const std::vector<double>& u, std::array<double, 6>& sigma,
-                     double& energyDensity, const double* old = nullptr, PlasticAverages* plastic = nullptr) const;
+                     double& energyDensity, const double* old = nullptr, std::vector<double>* fields = nullptr) const;
   void averageStress(const std::vector<Point3>& X, const std::vector<double>& u, std::array<double, 6>& sigma,
                      double& energyDensity) const {
     averageStress(geometry(X), u, sigma, energyDensity);
@@ -180,7 +168,7 @@ class FiniteStrainSolid {
  private:
   SolidShape shape_;
   Kinematics kin_;
-  SolidMaterial material_;
+  std::shared_ptr<const MaterialPoint> material_;
   bool fbar_ = false;
   bool onePoint_ = false;
   double hourglass_ = 0.0;

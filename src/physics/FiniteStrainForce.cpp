@@ -69,6 +69,7 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
   }
   trial_ = committed_;
   layoutArchive(mesh, kernels);
+  layoutFields(kernels);
   packElements();
 }
 
@@ -480,41 +481,48 @@ std::vector<std::string> FiniteStrainForce::elementFieldNames() const {
   std::vector<std::string> names = {"SIGMA_XX", "SIGMA_YY", "SIGMA_ZZ", "SIGMA_XY"};
   if (threeD_) names.insert(names.end(), {"SIGMA_YZ", "SIGMA_ZX"});
   names.push_back("STRAIN_ENERGY_DENSITY");
-  if (plastic_) names.insert(names.end(), {"VON_MISES", "EQ_PLASTIC_STRAIN", "PRESSURE"});
-  if (thermal_) names.push_back("TEMPERATURE");
-  if (damage_) names.push_back("DAMAGE");
+  names.insert(names.end(), materialFields_.begin(), materialFields_.end());
   return names;
 }
 
 void FiniteStrainForce::elementFields(const Vector& u, std::vector<std::vector<double>>& values) const {
-  const int stresses = threeD_ ? 6 : 4;
+  const size_t stresses = threeD_ ? 6 : 4;
   values.assign(elementFieldNames().size(), std::vector<double>(size_t(numElements_), 0.0));
   const Vector& uc = onColumns(u);
   auto data = uc.getData();
   std::string failure;
-  std::vector<double> ue;
+  std::vector<double> ue, fields;
   std::array<double, 6> sigma{};
   double w = 0.0;
-  PlasticAverages pa;
   for (const Element& e : elements_) {
     if (!e.owner) continue;
     gather(e, data, ue);
     try {
-      e.kernel->averageStress(e.geometry, ue, sigma, w, committed_.data() + e.state, &pa);
+      e.kernel->averageStress(e.geometry, ue, sigma, w, committed_.data() + e.state, &fields);
     } catch (const InvertedElement& err) {
       failure = describe(e, err.what());
       break;
     }
-    for (int c = 0; c < stresses; ++c) values[size_t(c)][size_t(e.number)] = sigma[size_t(c)];
-    values[size_t(stresses)][size_t(e.number)] = w;
-    if (!plastic_) continue;
-    values[size_t(stresses + 1)][size_t(e.number)] = pa.vonMises;
-    values[size_t(stresses + 2)][size_t(e.number)] = pa.equivalentPlasticStrain;
-    values[size_t(stresses + 3)][size_t(e.number)] = pa.pressure;
-    if (thermal_) values[size_t(stresses + 4)][size_t(e.number)] = pa.temperature;
-    if (damage_) values[size_t(stresses + (thermal_ ? 5 : 4))][size_t(e.number)] = pa.damage;
+    for (size_t c = 0; c < stresses; ++c) values[c][size_t(e.number)] = sigma[c];
+    values[stresses][size_t(e.number)] = w;
+    const std::vector<size_t>& at = blockFields_[size_t(e.block)];
+    for (size_t k = 0; k < fields.size(); ++k) values[stresses + 1 + at[k]][size_t(e.number)] = fields[k];
   }
   throwIfFailed(failure);
+}
+
+// The union of the blocks' material fields in the order they first appear, and each block's
+// fields' places in it.
+void FiniteStrainForce::layoutFields(const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels) {
+  blockFields_.assign(kernels.size(), {});
+  for (size_t b = 0; b < kernels.size(); ++b) {
+    if (!kernels[b]) continue;
+    for (const std::string& name : kernels[b]->material().fieldNames()) {
+      auto it = std::find(materialFields_.begin(), materialFields_.end(), name);
+      if (it == materialFields_.end()) it = materialFields_.insert(materialFields_.end(), name);
+      blockFields_[b].push_back(size_t(it - materialFields_.begin()));
+    }
+  }
 }
 
 }  // namespace choc

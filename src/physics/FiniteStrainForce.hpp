@@ -75,11 +75,11 @@ class FiniteStrainForce : public InternalForce {
   // The Cauchy stress averaged over each finite-strain element (FiniteStrainSolid::
   // averageStress) and its strain-energy density: SIGMA_XX, SIGMA_YY, SIGMA_ZZ, SIGMA_XY
   // (and SIGMA_YZ, SIGMA_ZX in 3D; axisymmetric: XX radial, YY axial, ZZ hoop, XY the rz
-  // shear), STRAIN_ENERGY_DENSITY (the stored elastic energy), and with plastic blocks
-  // VON_MISES, EQ_PLASTIC_STRAIN and PRESSURE (-tr sigma / 3), with Johnson-Cook blocks
-  // TEMPERATURE, with Johnson-Cook damage DAMAGE (the element's average of its points' D; 0 on
-  // the other blocks); plastic blocks' values are those their state records at
-  // the last accepted step. On the nonlinear blocks, each element by the rank owning its first node.
+  // shear), STRAIN_ENERGY_DENSITY (the stored elastic energy), then the blocks' materials' own
+  // fields (MaterialPoint::fieldNames, in the order the blocks first name them; 0 on the blocks
+  // without them: J2Point.hpp's VON_MISES, EQ_PLASTIC_STRAIN, PRESSURE, TEMPERATURE, DAMAGE); a
+  // material with state reports what it recorded at the last accepted step. On the nonlinear
+  // blocks, each element by the rank owning its first node.
   std::vector<std::string> elementFieldNames() const override;
   std::vector<char> elementFieldBlocks() const override { return finiteBlocks_; }
   void elementFields(const Vector& u, std::vector<std::vector<double>>& values) const override;
@@ -161,6 +161,9 @@ class FiniteStrainForce : public InternalForce {
   // Per element DOF: the round-off of its force (termsNorm; see the .cpp).
   static std::vector<double> forceRoundoff(const FiniteStrainSolid& kernel, const ElementGeometry& g);
   void layoutArchive(const Mesh& mesh, const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels);
+  void layoutFields(const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels);
+  std::vector<std::string> materialFields_;       // the blocks' material fields (elementFieldNames)
+  std::vector<std::vector<size_t>> blockFields_;  // per block: its material's fields' places in them
   // Each element's reference node coordinates (3 per node, elements_' order) for validity().
   std::vector<double> reference_;
   std::vector<size_t> referenceAt_;

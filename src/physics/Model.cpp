@@ -19,7 +19,7 @@
 #include "core/Memory.hpp"
 #include "mesh/CoincidentNodes.hpp"
 #include "physics/DegenerateElements.hpp"
-#include "physics/MaterialKeys.hpp"
+#include "materials/MaterialLaw.hpp"
 #include "input/Validation.hpp"
 #include "input/Vector3.hpp"
 #include "input/XmlInput.hpp"
@@ -131,9 +131,10 @@ std::vector<BlockPhysics> Model::blockPhysics(const Teuchos::ParameterList& mode
       throwInput(file, path + "/Material", matName, "no material of that name",
                  didYouMean(matName, matNames) + "materials: " + joinNames(matNames));
     const Teuchos::ParameterList& mp = mats.sublist(matName);
+    const ElasticConstants elastic = materialLaw(mp.get<std::string>("Model")).elasticConstants(mp);
     Material m;
-    m.youngsModulus = mp.get<double>("Young's Modulus");
-    m.poissonsRatio = mp.get<double>("Poisson's Ratio");
+    m.youngsModulus = elastic.youngsModulus;
+    m.poissonsRatio = elastic.poissonsRatio;
     m.density = mp.get<double>("Density");
     blockMaterial_[b] = m;
     physics[b].mass = bp.get<std::string>("Mass") == "lumped" ? MassKind::Lumped : MassKind::Consistent;

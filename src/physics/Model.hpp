@@ -19,6 +19,8 @@
 
 namespace choc {
 
+class MaterialLaw;
+
 class Model {
  public:
   // `input` is the validated top-level list; `inputFile` is used for messages and to
@@ -84,8 +86,9 @@ class Model {
   std::shared_ptr<const FiniteStrainSolid> strainKernel(const ElementBlock& blk, const Teuchos::ParameterList& bp,
                                                         const std::string& materialName,
                                                         const Teuchos::ParameterList& mp) const;
-  // A plastic material's parameters ('J2 plasticity' or 'Johnson-Cook'); the flow curve parsed.
-  J2Parameters plasticParameters(const std::string& materialName, const Teuchos::ParameterList& mp) const;
+  // The block's 'Strain' against the kinematics its material's law runs on.
+  void checkLawKinematics(const ElementBlock& blk, const MaterialLaw& law, bool finite,
+                          const std::string& materialName) const;
   void checkOnePoint(const ElementBlock& blk, bool elementByElement) const;
   void checkElementGeometry(const std::vector<BlockPhysics>& physics, const std::string& meshParameter) const;
   void readSprings(const Teuchos::ParameterList& springs);

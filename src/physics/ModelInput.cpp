@@ -1,6 +1,7 @@
 #include "physics/ModelInput.hpp"
 
 #include "input/ParameterSpec.hpp"
+#include "materials/MaterialLaw.hpp"
 
 namespace choc {
 
@@ -18,89 +19,9 @@ void declareMeshParameters(ParameterList& top) {
               "(right for contact surfaces that touch at the start)");
 }
 
-// sigma_y = (A + B alpha^n)(1 + C ln(max(rate / rate_0, 1)))(1 - T*^m) (FlowStress.hpp).
-void declareJohnsonCookParameters(ParameterList& mat) {
-  declareDouble(mat, "Johnson-Cook A", 0.0, "'Johnson-Cook': A, the initial yield stress [Pa] (required, > 0)",
-                Range::nonNegative());
-  declareDouble(mat, "Johnson-Cook B", 0.0, "'Johnson-Cook': B, the hardening coefficient [Pa]", Range::nonNegative());
-  declareDouble(mat, "Johnson-Cook n", 1.0, "'Johnson-Cook': n, the hardening exponent, in (0, 1]",
-                Range::positive());
-  declareDouble(mat, "Johnson-Cook C", 0.0, "'Johnson-Cook': C, the strain-rate coefficient [-]",
-                Range::nonNegative());
-  declareDouble(mat, "Reference Strain Rate", 1.0,
-                "'Johnson-Cook': the plastic strain rate below which the flow stress is the quasi-static "
-                "one [1/s]",
-                Range::positive());
-  declareDouble(mat, "Johnson-Cook m", 1.0, "'Johnson-Cook': m, the thermal-softening exponent [-]",
-                Range::positive());
-  declareDouble(mat, "Reference Temperature", 20.0,
-                "'Johnson-Cook': T_0, the temperature of the quasi-static flow stress (any temperature "
-                "unit, the same for the three temperatures)");
-  declareDouble(mat, "Melting Temperature", 0.0,
-                "'Johnson-Cook': T_m, where the flow stress vanishes (required, above T_0)");
-  declareDouble(mat, "Initial Temperature", 20.0, "'Johnson-Cook': the temperature at the start (below T_m)");
-  declareDouble(mat, "Specific Heat", 0.0,
-                "'Johnson-Cook': c [J/(kg K)] (required with heating): the plastic work's heat raises the "
-                "temperature by chi dW_p / (rho c)",
-                Range::nonNegative());
-  declareDouble(mat, "Taylor-Quinney Coefficient", 0.9,
-                "'Johnson-Cook': chi, the share of the plastic work that becomes heat (0: isothermal)",
-                Range::closed(0.0, 1.0));
-}
-
-// eps_f = (D1 + D2 exp(D3 sigma*)) (1 + D4 ln rate*) (1 + D5 T*), D = sum d alpha / eps_f
-// (JohnsonCookDamage.hpp).
-void declareDamageParameters(ParameterList& mat) {
-  declareChoice(mat, "Damage", "none", {"none", "Johnson-Cook"},
-                "'Johnson-Cook' materials: 'Johnson-Cook' accumulates Johnson and Cook's damage D = sum "
-                "d alpha / eps_f, eps_f = (D1 + D2 exp(D3 sigma*)) (1 + D4 ln rate*) (1 + D5 T*), sigma* the "
-                "stress triaxiality, rate* and T* the flow stress's; reported (the DAMAGE element variable, "
-                "the log when D first reaches 1), not coupled: no softening, no element erosion");
-  const char* terms[5][2] = {{"D1", "the failure strain's constant term [-] (>= 0)"},
-                             {"D2", "the triaxiality term's factor [-] (>= 0; D1 + D2 > 0)"},
-                             {"D3", "the triaxiality exponent's factor [-] (usually negative)"},
-                             {"D4", "the strain-rate coefficient [-] (>= 0)"},
-                             {"D5", "the temperature coefficient [-] (>= 0)"}};
-  for (const auto& t : terms)  // D3 any sign; the others >= 0 (JohnsonCookDamage.hpp)
-    declareDouble(mat, std::string("Johnson-Cook ") + t[0], 0.0, std::string("'Damage' = 'Johnson-Cook': ") + t[1],
-                  std::string(t[0]) == "D3" ? Range::any() : Range::nonNegative());
-}
-
 void declareMaterialParameters(ParameterList& model) {
-  ParameterList& mat = declareNamedSublists(model, "Materials", "isotropic elastic materials, by name");
-  declareRequiredDouble(mat, "Young's Modulus", "E [Pa]", Range::positive());
-  declareDouble(mat, "Poisson's Ratio", 0.0, "nu [-]", {-1.0, 0.5, true, true});
-  declareRequiredDouble(mat, "Density", "rho [kg/m^3]", Range::positive());
-  declareChoice(mat, "Model", "linear elastic",
-                {"linear elastic", "Saint Venant-Kirchhoff", "neo-Hookean", "J2 plasticity", "Johnson-Cook"},
-                "the material law: 'linear elastic' (small strain: blocks with 'Strain' = 'small'); "
-                "in finite strain ('Strain' = 'finite'), 'Saint Venant-Kirchhoff' (S = lambda tr(E) I "
-                "+ 2 mu E, E the Green-Lagrange strain: exact for large rotations, for moderate "
-                "strains) or compressible 'neo-Hookean' (W = mu/2 (I1 - 3) - mu ln J + lambda/2 "
-                "(ln J)^2); mu and lambda are the Lame constants of E and nu. 'J2 plasticity' (von "
-                "Mises, isotropic hardening: linear or a flow curve; direct transients) and 'Johnson-Cook' "
-                "(J2 with the Johnson-Cook flow stress, its strain rate and adiabatic heating) on either "
-                "kinematics: additive split in small strain, multiplicative with Hencky elasticity in "
-                "finite strain");
-  declareDouble(mat, "Yield Stress", 0.0,
-                "'J2 plasticity': the initial yield stress sigma_y [Pa] (required, > 0, with that model)",
-                Range::nonNegative());
-  declareDouble(mat, "Hardening Modulus", 0.0,
-                "'J2 plasticity': the linear isotropic hardening H = d sigma_y / d alpha [Pa], alpha "
-                "the equivalent plastic strain (0: perfectly plastic)",
-                Range::nonNegative());
-  declareDouble(mat, "Kinematic Hardening Modulus", 0.0,
-                "'J2 plasticity' and 'Johnson-Cook' on small-strain blocks: linear kinematic hardening "
-                "(Prager-Ziegler), the yield surface's centre moving with the flow, d beta = 2/3 H_k d eps_p "
-                "[Pa] (0: none; the Bauschinger effect of cyclic loading); refused on finite-strain blocks",
-                Range::nonNegative());
-  declareString(mat, "Flow Curve", "",
-                "'J2 plasticity': the flow stress as a piecewise-linear curve 'alpha_0 sigma_0 alpha_1 "
-                "sigma_1 ...' of equivalent plastic strain [-] and stress [Pa] (alpha_0 = 0, alpha "
-                "increasing, sigma non-decreasing, constant beyond the last point), instead of 'Yield "
-                "Stress' and 'Hardening Modulus'");
-  declareJohnsonCookParameters(mat);
-  declareDamageParameters(mat);
+  ParameterList& mat = declareNamedSublists(model, "Materials", "isotropic materials, by name");
+  declareMaterialLaws(mat);
 }
 
 void declareSectionParameters(ParameterList& blk) {

@@ -42,35 +42,7 @@ class BelosSolver : public LinearSolver {
       if (multigrid_.is_null()) multigrid_ = rcp(new ElasticityMultigrid(blocks_));
       multigrid_->compute(A);
     } else if (precType_ != "None") {
-      const std::string ifpackName =
-          precType_ == "Jacobi" || precType_ == "Gauss-Seidel" ? "RELAXATION"
-          : precType_ == "Additive Schwarz"                    ? "SCHWARZ"
-                                                               : precType_;
-      try {
-        prec_ = Ifpack2::Factory::create<RowMatrix>(ifpackName, A);
-        Teuchos::ParameterList pp;
-        if (precType_ == "Jacobi") pp.set("relaxation: type", "Jacobi");
-        if (precType_ == "Gauss-Seidel") pp.set("relaxation: type", "Symmetric Gauss-Seidel");
-        if (precType_ == "RILUK") pp.set("fact: iluk level-of-fill", 1);
-        if (precType_ == "Additive Schwarz") {
-          // One subdomain per rank, overlapping by one layer of matrix neighbours, each
-          // solved by ILU(0): a one-level domain decomposition (restricted additive Schwarz
-          // would break the symmetry CG needs, so the combine mode stays "Add").
-          pp.set("schwarz: overlap level", overlap_);
-          pp.set("schwarz: combine mode", "Add");
-          pp.set("inner preconditioner name", "RILUK");
-          Teuchos::ParameterList inner;
-          inner.set("fact: iluk level-of-fill", 0);
-          pp.set("inner preconditioner parameters", inner);
-        }
-        prec_->setParameters(pp);
-        prec_->initialize();
-        prec_->compute();
-      } catch (const std::exception& e) {
-        rethrowIfOutOfMemory(describeFailure(e), "Ifpack2 " + precType_ + " preconditioner");
-        throw NumericalError("Ifpack2 " + precType_ + " preconditioner failed: " +
-                             std::string(e.what()).substr(0, 200));
-      }
+      computeIfpack2(A);
     }
     // The Belos problem and solver are built once per matrix and reused by every solve()
     // (only the right-hand side and the initial guess change between solves).
@@ -224,6 +196,37 @@ class BelosSolver : public LinearSolver {
   }
 
  private:
+  // The Ifpack2 preconditioner of A (Jacobi, Gauss-Seidel, RILUK, additive Schwarz) into prec_.
+  void computeIfpack2(const RCP<const CrsMatrix>& A) {
+    const std::string ifpackName = precType_ == "Jacobi" || precType_ == "Gauss-Seidel" ? "RELAXATION"
+                                   : precType_ == "Additive Schwarz"                    ? "SCHWARZ"
+                                                                                        : precType_;
+    try {
+      prec_ = Ifpack2::Factory::create<RowMatrix>(ifpackName, A);
+      Teuchos::ParameterList pp;
+      if (precType_ == "Jacobi") pp.set("relaxation: type", "Jacobi");
+      if (precType_ == "Gauss-Seidel") pp.set("relaxation: type", "Symmetric Gauss-Seidel");
+      if (precType_ == "RILUK") pp.set("fact: iluk level-of-fill", 1);
+      if (precType_ == "Additive Schwarz") {
+        // One subdomain per rank, overlapping by one layer of matrix neighbours, each
+        // solved by ILU(0): a one-level domain decomposition (restricted additive Schwarz
+        // would break the symmetry CG needs, so the combine mode stays "Add").
+        pp.set("schwarz: overlap level", overlap_);
+        pp.set("schwarz: combine mode", "Add");
+        pp.set("inner preconditioner name", "RILUK");
+        Teuchos::ParameterList inner;
+        inner.set("fact: iluk level-of-fill", 0);
+        pp.set("inner preconditioner parameters", inner);
+      }
+      prec_->setParameters(pp);
+      prec_->initialize();
+      prec_->compute();
+    } catch (const std::exception& e) {
+      rethrowIfOutOfMemory(describeFailure(e), "Ifpack2 " + precType_ + " preconditioner");
+      throw NumericalError("Ifpack2 " + precType_ + " preconditioner failed: " +
+                           std::string(e.what()).substr(0, 200));
+    }
+  }
   std::shared_ptr<const NodalBlocks> blocks_;
   std::string method_, precType_;
   double tol_, activeTol_ = 0.0;

@@ -233,7 +233,7 @@ choc_cli_test(deprecated_keys RC 0
                      "Progress Interval : double = 0"
               ARGS check ${CLI_INPUTS}/deprecated_keys.xml)
 choc_cli_test(parameters RC 0
-              STDOUT "Young's Modulus \\(double, required. a number in \\(0, inf.\\)"
+              STDOUT "Young's Modulus \\(double, default 0. a number in \\(0, inf.\\)"
                      "Density \\(double, required"
                      "Mass \\(string, default 'consistent'. one of 'consistent', 'lumped'\\)"
                      "Node Set \\(string, required"

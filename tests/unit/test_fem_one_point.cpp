@@ -12,6 +12,8 @@
 
 #include "fd_tangent.hpp"
 #include "fem/FiniteStrainSolid.hpp"
+#include "materials/HyperelasticPoint.hpp"
+#include "materials/J2Point.hpp"
 #include "finite_strain_states.hpp"
 #include "test_fem_solid_cases.hpp"
 
@@ -31,11 +33,11 @@ std::vector<ElementCase> onePointCases() {
   return cases;
 }
 
-FiniteStrainSolid onePoint(const ElementCase& c, SolidMaterial m, double Q = kQ) {
+FiniteStrainSolid onePoint(const ElementCase& c, std::shared_ptr<const MaterialPoint> m, double Q = kQ) {
   return FiniteStrainSolid(c.topology, c.kinematics, std::move(m), ElementFormulation{false, true, Q});
 }
 
-SolidMaterial neoHookean() { return {makeHyperelastic("neo-Hookean", kE, kNu), nullptr}; }
+std::shared_ptr<const MaterialPoint> neoHookean() { return hyperelasticPoint(makeHyperelastic("neo-Hookean", kE, kNu)); }
 
 // A general deformation plus a nodal pattern: not homogeneous, so the hourglass modes are loaded.
 std::vector<double> wobbled(const ElementCase& c, double wobble) {
@@ -56,7 +58,7 @@ TEST_P(OnePoint, PlasticTangentMatchesCentralDifferencesOfTheForce) {
   const ElementCase& c = GetParam();
   for (bool finite : {false, true}) {
     const auto m = std::make_shared<const J2Plasticity>(linearHardening(kE, kNu, kE / 200, kE / 20), finite);
-    const double asymmetry = test::checkPlasticTangent(onePoint(c, {nullptr, m}), c, 0.004, finite ? "finite" : "small");
+    const double asymmetry = test::checkPlasticTangent(onePoint(c, j2Point(m)), c, 0.004, finite ? "finite" : "small");
     EXPECT_LE(asymmetry, 1e-12);  // one material point and a symmetric hourglass stiffness
   }
 }
@@ -75,7 +77,7 @@ TEST_P(OnePoint, HomogeneousDeformationIsTheFullyIntegratedElements) {
   const std::vector<double> u = test::displacementOf(c, test::generalGradient(c.kinematics));
   std::vector<double> f, fs;
   const double w = onePoint(c, neoHookean()).evaluate(c.x, u, f, nullptr);
-  const double ws = FiniteStrainSolid(c.topology, c.kinematics, neoHookean().elastic).evaluate(c.x, u, fs, nullptr);
+  const double ws = FiniteStrainSolid(c.topology, c.kinematics, neoHookean(), ElementFormulation{}).evaluate(c.x, u, fs, nullptr);
   double scale = 0.0;
   for (double v : fs) scale = std::max(scale, std::abs(v));
   for (size_t k = 0; k < f.size(); ++k) EXPECT_NEAR(f[k], fs[k], 1e-12 * scale);
@@ -138,7 +140,7 @@ TEST(OnePointHourglass, EveryModeIsStiffWithTheCubesEnergy) {
 }
 
 TEST(OnePointRefused, OnOtherElementsAndOutOfRange) {
-  const SolidMaterial m = neoHookean();
+  const auto m = neoHookean();
   const ElementFormulation one{false, true, kQ};
   EXPECT_THROW(FiniteStrainSolid("TET4", Kinematics::ThreeD, m, one), std::invalid_argument);
   EXPECT_THROW(FiniteStrainSolid("HEX20", Kinematics::ThreeD, m, one), std::invalid_argument);
