@@ -75,7 +75,7 @@ void DirectStepView::archive(StateArchive& a, const StateVectors& vectors) const
   }
 }
 
-void DirectStepView::unarchive(const StateArchive& a, const StateVectors& vectors, RCP<const Map> map) {
+void DirectStepView::restore(const StateArchive& a, const StateVectors& vectors, RCP<const Map> map) {
   const std::vector<double> w = a.getVector<double>("view/integrals", 4);
   dissipated_ = w[0];
   lastPower_ = w[1];

@@ -44,7 +44,7 @@ class DirectStepView : public TransientView, public StepObserver {
   // The integrals (damping, obstacle and load work) and the previous
   // reported fields of massless DOFs, for a checkpoint (collective), and back.
   void archive(StateArchive& a, const StateVectors& vectors) const;
-  void unarchive(const StateArchive& a, const StateVectors& vectors, RCP<const Map> map);
+  void restore(const StateArchive& a, const StateVectors& vectors, RCP<const Map> map);
 
  private:
   const StructuralOperator& op_;

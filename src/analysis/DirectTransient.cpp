@@ -527,7 +527,7 @@ void DirectTransient::configure(StructuralOperator& op, Model& model) const {
 // The view's records of a checkpoint's state, before the loop continues from it.
 void DirectTransient::continueView(DirectStepView& view, const StateArchive& resume, const StateVectors& vectors,
                                    const Model& model) {
-  view.unarchive(resume, vectors, model.map());
+  view.restore(resume, vectors, model.map());
   log() << format("  continuing from the checkpoint at t = %.6e s (step %lld)\n", resume.getDouble("point/time"),
                   resume.getInt("point/nominal"));
 }

@@ -27,7 +27,7 @@ void ContactActiveSet::archive(StateArchive& a) const {
   a.putDouble("contact/scale", scale);
 }
 
-void ContactActiveSet::unarchive(const StateArchive& a, size_t n) {
+void ContactActiveSet::restore(const StateArchive& a, size_t n) {
   status = a.getVector<char>("contact/status", n);
   lambda = a.getVector<double>("contact/pressure", n);
   scale = a.getDouble("contact/scale");

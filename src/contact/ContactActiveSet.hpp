@@ -20,11 +20,11 @@ struct ContactActiveSet {
   double scale = 1.0;
   int version = 0;
 
-  void save() {
+  void commit() {
     savedStatus = status;
     savedLambda = lambda;
   }
-  void restore() {
+  void revert() {
     if (status != savedStatus) ++version;
     status = savedStatus;
     lambda = savedLambda;
@@ -37,7 +37,7 @@ struct ContactActiveSet {
   void archive(StateArchive& a) const;
   // The records of n constraints; the caller bumps the version and saves once it has restored
   // the rest of its state.
-  void unarchive(const StateArchive& a, size_t n);
+  void restore(const StateArchive& a, size_t n);
 };
 
 }  // namespace choc

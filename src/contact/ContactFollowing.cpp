@@ -136,7 +136,7 @@ void ContactManager::followSurfaces(const Vector& u) {
   }
 }
 
-void ContactManager::commitStep(const Vector& u) {
+void ContactManager::commitMotion(const Vector& u) {
   if (friction_) commitFriction(u);
   if (!followed_ || !paired_) return;
   followed_->place(gather(followed_->dofs(), u), false);
@@ -173,7 +173,7 @@ void ContactManager::archivePairing(StateArchive& a) const {
   a.putVector("contact/pairing", g);
 }
 
-void ContactManager::unarchivePairing(const StateArchive& a) {
+void ContactManager::restorePairing(const StateArchive& a) {
   const std::vector<double> g = a.getVector<double>("contact/pairing");
   size_t k = 0;
   for (ContactConstraint& c : constraints_) {

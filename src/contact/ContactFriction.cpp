@@ -224,7 +224,7 @@ void ContactManager::archiveFriction(StateArchive& a) const {
   }
 }
 
-void ContactManager::unarchiveFriction(const StateArchive& a) {
+void ContactManager::restoreFriction(const StateArchive& a) {
   if (!friction_) return;
   const size_t n = constraints_.size();
   const std::vector<double> forces = a.getVector<double>("contact/friction", 3 * n);

@@ -98,7 +98,7 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
   slipStart_.assign(constraints_.size(), Vec3{0, 0, 0});
   followed_ = std::make_unique<FollowedSurfaces>(mesh, dofs, pairs_);
   if (followed_->empty()) followed_.reset();
-  save();
+  commit();
 }
 
 // contactDofs_ and localTerms_ from the constraints' terms.
@@ -299,7 +299,7 @@ void ContactManager::initialize(const Vector& u) {
     set_.status[s] = method_->isActive(g[s], 0.0, false);
   }
   ++set_.version;
-  save();
+  commit();
 }
 
 StatusUpdate ContactManager::updateStatus(const Vector& u) {
@@ -336,18 +336,18 @@ void ContactManager::archive(StateArchive& a) const {
   archiveFriction(a);
 }
 
-void ContactManager::unarchive(const StateArchive& a) {
-  set_.unarchive(a, constraints_.size());
+void ContactManager::restore(const StateArchive& a) {
+  set_.restore(a, constraints_.size());
   if (followed_) slip_ = a.getVector<double>("contact/slip", constraints_.size());
-  if (followed_) unarchivePairing(a);
-  unarchiveFriction(a);
+  if (followed_) restorePairing(a);
+  restoreFriction(a);
   ++set_.version;
-  save();
+  commit();
 }
 
-void ContactManager::save() { set_.save(); }
+void ContactManager::commit() { set_.commit(); }
 
-void ContactManager::restore() { set_.restore(); }
+void ContactManager::revert() { set_.revert(); }
 
 std::string ContactManager::activeSummary() const {
   std::vector<int> active(pairs_.size(), 0), all(pairs_.size(), 0);

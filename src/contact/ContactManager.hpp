@@ -81,7 +81,7 @@ class ContactManager {
 
   // Tangential slip of each slave node at u and time t [m]: the length of the tangential part
   // of its displacement relative to its master point (or to the moving obstacle) since t = 0;
-  // on a followed surface, the path length of its slip while in contact (commitStep).
+  // on a followed surface, the path length of its slip while in contact (commitMotion).
   // Collective; the same array on every rank.
   std::vector<double> slips(const Vector& u, double t) const;
   // Gaps at u (the same array on every rank).
@@ -117,7 +117,7 @@ class ContactManager {
   int topologyVersion() const { return topologyVersion_; }
   // An accepted step ending at u: each active node of a followed surface adds to its slip the
   // tangential motion relative to its master point since beginStep. Collective.
-  void commitStep(const Vector& u);
+  void commitMotion(const Vector& u);
   long long searchProjections() const { return followed_ ? followed_->projections() : 0; }
   // Slave nodes through a rigid obstacle by more than a fraction of their faces' size (the
   // shortest edge of the slave faces around the node): past kPenetrationWarning a warning, past
@@ -165,17 +165,17 @@ class ContactManager {
   // relative tangential motion from u to uStar, capped at mu lambda (ForwardIncrementFriction.cpp),
   // h the sub-step (uStar is the position at the time of beginStep plus h). useForwardIncrements
   // must have been called: the friction of an explicit run is decided here, not by the implicit
-  // law of beginStep and commitStep.
+  // law of beginStep and commitMotion.
   void forwardIncrement(const Vector& u, const Vector& uStar, const Vector& inverseMass, double h, double h2,
                         Vector& a);
   void useForwardIncrements(bool on);
   void initialize(const Vector& u);          // statuses from the gaps at u, lambda = 0
   StatusUpdate updateStatus(const Vector& u);  // complementarity test, all ranks agree
-  void save();
-  void restore();
+  void commit();
+  void revert();
   // Statuses, pressures and the multiplier scale in a checkpoint ("contact/*"), and back.
   void archive(StateArchive& a) const;
-  void unarchive(const StateArchive& a);
+  void restore(const StateArchive& a);
 
   const std::vector<char>& status() const { return set_.status; }
   const std::vector<double>& pressures() const { return set_.lambda; }  // lambda_s [N]
@@ -212,8 +212,8 @@ class ContactManager {
   Vec3 relativeMotion(int s, const std::vector<double>& x, double t) const;
   void archiveFriction(StateArchive& a) const;
   void archivePairing(StateArchive& a) const;
-  void unarchivePairing(const StateArchive& a);
-  void unarchiveFriction(const StateArchive& a);
+  void restorePairing(const StateArchive& a);
+  void restoreFriction(const StateArchive& a);
   void beginFrictionStep(const Vector& u, double t, double dt);
   void commitFriction(const Vector& u);
   void indexFriction();

@@ -239,8 +239,8 @@ void DirectLinks::archive(StateArchive& a) const {
   a.putInt("links/dashpotDrops", dashpotDrops_);
 }
 
-void DirectLinks::unarchive(const StateArchive& a) {
-  unarchiveLinks(a);
+void DirectLinks::restore(const StateArchive& a) {
+  restoreLinks(a);
   const std::vector<double> x = a.getVector<double>("links/direct", 9 * links_.size());
   for (size_t i = 0; i < links_.size(); ++i)
     for (int c = 0; c < 3; ++c)

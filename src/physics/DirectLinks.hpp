@@ -44,12 +44,14 @@ class DirectLinks : public ShockLinkSet {
   // evaluation when the key or the factor changed, else the one evaluated then (so that a
   // restarted run factors the very matrix the uninterrupted run had).
   std::vector<MatrixEntry> tangent(double velocityFactor);
-  // The step is accepted: the state at the last evaluation becomes the links' state.
+  // The step is accepted: the state at the last evaluation becomes the links' state
+  // (restart/SteppedState.hpp); revert drops the last evaluation (the step was cut or failed).
   void commit();
+  void revert() { pending_ = false; }
   void archive(StateArchive& a) const;
   // Steps in which a link went on without its dashpot (see addForces), over the run.
   long long dashpotDrops() const { return dashpotDrops_; }
-  void unarchive(const StateArchive& a);
+  void restore(const StateArchive& a);
 
  private:
   Vec3 force(size_t i, const Vec3& d, const Vec3& w) const;  // on node 2, state not advanced

@@ -26,6 +26,10 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
       linearPart_(anyNonzero(*Klin_)) {
   KT_ = rcp(new CrsMatrix(K0_->getCrsGraph()));
   importer_ = K0_->getGraph()->getImporter();
+  // The force's scratch vectors, made once: u on the column map, K_lin u, the u of the last force.
+  if (!importer_.is_null()) uCol_ = rcp(new Vector(K0_->getColMap()));
+  tmp_ = rcp(new Vector(K0_->getRowMap()));
+  forceAt_ = rcp(new Vector(K0_->getRowMap()));
   const Map& rows = *K0_->getRowMap();
   const Map& cols = *K0_->getColMap();
   const Mesh& mesh = model.mesh();
@@ -235,7 +239,7 @@ void FiniteStrainForce::archive(StateArchive& a) const {
   a.putDouble("internal/plasticTime", committedTime_);
 }
 
-void FiniteStrainForce::unarchive(const StateArchive& a) {
+void FiniteStrainForce::restore(const StateArchive& a) {
   if (!plastic_) return;
   const std::vector<double> global = a.getVector<double>("internal/plasticState", globalStateSize_);
   for (const Element& e : elements_)
@@ -252,7 +256,6 @@ void FiniteStrainForce::unarchive(const StateArchive& a) {
 
 const Vector& FiniteStrainForce::onColumns(const Vector& u) const {
   if (importer_.is_null()) return u;
-  if (uCol_.is_null()) uCol_ = rcp(new Vector(K0_->getColMap()));
   uCol_->doImport(u, *importer_, Tpetra::INSERT);
   return *uCol_;
 }
@@ -305,22 +308,21 @@ void FiniteStrainForce::prefetch(const Element& e, bool trial) const {
 }
 
 template <class Visit>
-std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTangent, Visit&& visit, bool trial,
+std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTangent, Visit&& visit, TrialPass* trial,
                                               bool elasticTangent) const {
   auto data = uCol.getData();
   std::vector<double> ue, fe;
   DenseMatrix Ke;
-  if (trial) trialWork_ = 0.0, trialHourglass_ = 0.0, trialTime_ = time_;
   const double dt = time_ - committedTime_;
   for (size_t k = 0; k < elements_.size(); ++k) {
     const Element& e = elements_[k];
-    if (k + 1 < elements_.size()) prefetch(elements_[k + 1], trial);
+    if (k + 1 < elements_.size()) prefetch(elements_[k + 1], trial != nullptr);
     gather(e, data, ue);
     double energy = 0.0, work = 0.0, hourglass = 0.0;
     try {
       energy = e.kernel->evaluate(e.geometry, ue, fe, withTangent ? &Ke : nullptr, committed_.data() + e.state,
-                                  trial ? trial_.data() + e.state : nullptr, &work, elasticTangent, dt, &hourglass);
-      if (trial && e.owner) trialWork_ += work, trialHourglass_ += hourglass;
+                                  trial ? trial->state + e.state : nullptr, &work, elasticTangent, dt, &hourglass);
+      if (trial && e.owner) trial->work += work, trial->hourglass += hourglass;
     } catch (const InvertedElement& err) {
       return describe(e, err.what());
     }
@@ -339,13 +341,14 @@ bool FiniteStrainForce::sameState(const RCP<Vector>& at, const Vector& u) const 
   return any == 0;
 }
 
-void FiniteStrainForce::internalForce(const Vector& u, Vector& out) const {
+void FiniteStrainForce::internalForce(const Vector& u, Vector& out) {
   if (linearPart_)
     Klin_->apply(u, out);
   else
     out.putScalar(0.0);
   auto o = out.getDataNonConst();
   double energy = 0.0;
+  TrialPass pass{trial_.data()};
   const Vector& uc = onColumns(u);
   for (const auto& p : followers_) p->subtractForce(uc.getData(), time_, o);
   const std::string failure = forEachElement(uc, false, [&](const Element& e, const std::vector<double>& f,
@@ -353,11 +356,12 @@ void FiniteStrainForce::internalForce(const Vector& u, Vector& out) const {
     for (size_t k = 0; k < e.row.size(); ++k)
       if (e.row[k] >= 0) o[e.row[k]] += f[k];
     if (e.owner) energy += w;
-  }, true);
+  }, &pass);
+  trialWork_ = pass.work, trialHourglass_ = pass.hourglass, trialTime_ = time_;
   trialValid_ = failure.empty();
   throwIfFailed(failure);
-  if (forceAt_.is_null()) forceAt_ = rcp(new Vector(u.getMap()));
   forceAt_->assign(u);
+  forceAtValid_ = true;
   forceAtEnergy_ = energy;
   forceAtHourglass_ = trialHourglass_;
 }
@@ -399,14 +403,13 @@ RCP<const CrsMatrix> FiniteStrainForce::tangent(const Vector& u) {
 }
 
 double FiniteStrainForce::strainEnergy(const Vector& u, const Vector* /*internalForceAtU*/) const {
-  if (tmp_.is_null()) tmp_ = rcp(new Vector(u.getMap()));
   double linear = 0.0;
   if (linearPart_) {
     Klin_->apply(u, *tmp_);
     linear = 0.5 * u.dot(*tmp_);
   }
   double local = 0.0;
-  if (sameState(forceAt_, u)) {
+  if (forceAtValid_ && sameState(forceAt_, u)) {
     local = forceAtEnergy_;
   } else {
     const std::string failure = forEachElement(onColumns(u), false, [&](const Element& e, const std::vector<double>&,
@@ -423,7 +426,7 @@ double FiniteStrainForce::strainEnergy(const Vector& u, const Vector* /*internal
 double FiniteStrainForce::hourglassEnergy(const Vector& u) const {
   if (!hourglass_) return 0.0;  // the same on every rank (the model's blocks)
   double local = 0.0, global = 0.0;
-  if (sameState(forceAt_, u)) {  // the internal force at u summed it already
+  if (forceAtValid_ && sameState(forceAt_, u)) {  // the internal force at u summed it already
     local = forceAtHourglass_;
   } else {
     auto data = onColumns(u).getData();
@@ -469,7 +472,7 @@ double FiniteStrainForce::stateEigenvalueBound(const Vector& u) const {
     active.resize(e.col.size());
     for (size_t i = 0; i < e.col.size(); ++i) active[i] = e.col[i] >= 0;
     maximum.add(K, e.lumpedMass, active);
-  }, false, true);
+  }, nullptr, true);
   throwIfFailed(failure);
   const double local = maximum.value();
   double global = 0.0;

@@ -44,7 +44,7 @@ class FiniteStrainForce : public InternalForce {
  public:
   explicit FiniteStrainForce(Model& model);
   RCP<const Map> map() const override { return K0_->getRowMap(); }
-  void internalForce(const Vector& u, Vector& out) const override;
+  void internalForce(const Vector& u, Vector& out) override;
   RCP<const CrsMatrix> tangent(const Vector& u) override;
   long long tangentVersion() const override { return version_; }
   void applyDampingStiffness(const Vector& x, Vector& out) const override { K0_->apply(x, out); }
@@ -70,7 +70,7 @@ class FiniteStrainForce : public InternalForce {
   void commit() override;
   void revert() override { trialValid_ = false; }
   void archive(StateArchive& a) const override;
-  void unarchive(const StateArchive& a) override;
+  void restore(const StateArchive& a) override;
 
   // The Cauchy stress averaged over each finite-strain element (FiniteStrainSolid::
   // averageStress) and its strain-energy density: SIGMA_XX, SIGMA_YY, SIGMA_ZZ, SIGMA_XY
@@ -97,14 +97,19 @@ class FiniteStrainForce : public InternalForce {
     std::vector<double> roundoff;    // per DOF: the round-off of its force (termsNorm)
     size_t state = 0;                // its plastic state's offset in committed_ and trial_
   };
+  // A pass at a trial u: the new states (element offsets into `state`) and the owners' plastic
+  // work and hourglass energy (this rank).
+  struct TrialPass {
+    double* state;
+    double work = 0.0, hourglass = 0.0;
+  };
   // Per element: the displacements from u on the column map, the force (and tangent when K),
-  // from the committed state; with `trial`, the new states go to trial_ and the owners'
-  // plastic work to trialWork_. Returns this rank's first failure ("" if none); the callers
-  // make it collective.
+  // from the committed state; with `trial`, the new states and the owners' work go to it.
+  // Returns this rank's first failure ("" if none); the callers make it collective.
   void prefetch(const Element& e, bool trial) const;
   void packElements();  // the arrays the force reads, in element order (FiniteStrainForce.cpp)
   template <class Visit>
-  std::string forEachElement(const Vector& uCol, bool withTangent, Visit&& visit, bool trial = false,
+  std::string forEachElement(const Vector& uCol, bool withTangent, Visit&& visit, TrialPass* trial = nullptr,
                              bool elasticTangent = false) const;
   const Vector& onColumns(const Vector& u) const;
   // The element's displacements (element DOF order, 0 where fixed) from u on the column map.
@@ -128,22 +133,23 @@ class FiniteStrainForce : public InternalForce {
   bool tangentValid_ = false;  // KT_ holds the complete tangent at tangentAt_
   // The elements' energy (this rank's share) at the u of the last internal force, for the
   // energies of the state a step ended at without a second pass over the elements.
-  mutable RCP<Vector> forceAt_;
-  mutable double forceAtEnergy_ = 0.0;
-  mutable double forceAtHourglass_ = 0.0;  // the owners' hourglass energy there (this rank)
+  RCP<Vector> forceAt_;
+  bool forceAtValid_ = false;
+  double forceAtEnergy_ = 0.0;
+  double forceAtHourglass_ = 0.0;  // the owners' hourglass energy there (this rank)
   bool sameState(const RCP<Vector>& at, const Vector& u) const;
   // The plastic states: committed, and the trial of the last internal force (see above).
   bool plastic_ = false;
   std::vector<double> committed_;
-  mutable std::vector<double> trial_;
-  mutable bool trialValid_ = false;
-  mutable double trialHourglass_ = 0.0;  // the owners' hourglass energy of the last trial pass (this rank)
-  mutable double trialWork_ = 0.0;  // the owners' plastic work of the trial increment (this rank)
+  std::vector<double> trial_;
+  bool trialValid_ = false;
+  double trialHourglass_ = 0.0;  // the owners' hourglass energy of the last trial pass (this rank)
+  double trialWork_ = 0.0;       // the owners' plastic work of the trial increment (this rank)
   double plasticWork_ = 0.0;        // the committed increments' plastic work, all ranks [J]
   // The time of the committed state and of the trial: the increment's duration for rate-dependent
   // flow stresses (Johnson-Cook) is time_ - committedTime_.
   double committedTime_ = 0.0;
-  mutable double trialTime_ = 0.0;
+  double trialTime_ = 0.0;
   bool timeKnown_ = false;
   bool thermal_ = false;  // a block's flow stress carries a temperature
   bool damage_ = false;   // a block accumulates Johnson-Cook's damage
@@ -173,7 +179,7 @@ class FiniteStrainForce : public InternalForce {
   std::string describeMeasure(const Measure& m, const std::string& text) const;
   std::vector<size_t> globalState_;  // per global element: its state's offset in the archive (-1: none)
   size_t globalStateSize_ = 0;
-  mutable RCP<Vector> uCol_, tmp_;
+  RCP<Vector> uCol_, tmp_;  // scratch: u on the column map, K_lin u (made once)
 };
 
 }  // namespace choc

@@ -90,6 +90,7 @@ FollowerPressure::FollowerPressure(std::string name, std::vector<Face> faces, Pr
                                    bool axisymmetric, const DofMap& dofs, int components, const CrsMatrix& K)
     : name_(std::move(name)), p_(p), rampTime_(rampTime), axisymmetric_(axisymmetric), colMap_(K.getColMap()),
       importer_(K.getGraph()->getImporter()) {
+  if (!importer_.is_null()) uCol_ = rcp(new Vector(colMap_));
   const Map& rows = *K.getRowMap();
   const Map& cols = *K.getColMap();
   const LO invalid = Teuchos::OrdinalTraits<LO>::invalid();
@@ -162,7 +163,6 @@ void FollowerPressure::addForce(const Vector& u, double t, Vector& out) const {
   if (lambda == 0.0) return;
   const Vector* onCols = &u;
   if (!importer_.is_null()) {
-    if (uCol_.is_null()) uCol_ = rcp(new Vector(colMap_));
     uCol_->doImport(u, *importer_, Tpetra::INSERT);
     onCols = uCol_.get();
   }

@@ -72,7 +72,7 @@ class FollowerPressure {
   std::vector<Loaded> faces_;
   RCP<const Map> colMap_;
   RCP<const Tpetra::Import<LO, GO>> importer_;
-  mutable RCP<Vector> uCol_;
+  RCP<Vector> uCol_;  // scratch: u on the column map (made once)
 };
 
 }  // namespace choc

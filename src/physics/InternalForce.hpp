@@ -15,9 +15,9 @@
 // re-preconditions. A linear model returns K with a constant version: W is factored once per
 // (coefficients, contact status) as before.
 //
-// Material state (per integration point, for the models to come) follows the step: commit()
-// when a step is accepted, revert() when it is cut or fails, archive()/unarchive() in
-// checkpoints. The linear model has none.
+// Material state (per integration point) follows the steps (restart/SteppedState.hpp): each
+// internalForce is a trial at its u, commit() when a step is accepted, revert() when it is cut or
+// fails, archive()/restore() in checkpoints. The linear model has none.
 //
 // Rayleigh damping C = aK K0 + aM M uses the reference stiffness K0 (dampingStiffness; the
 // tangent at u = 0), which for a linear model is K itself.
@@ -27,16 +27,16 @@
 
 #include "core/TpetraTypes.hpp"
 #include "fem/ElementValidity.hpp"
-#include "restart/StateArchive.hpp"
+#include "restart/SteppedState.hpp"
 
 namespace choc {
 
-class InternalForce {
+class InternalForce : public SteppedState {
  public:
   virtual ~InternalForce() = default;
   virtual RCP<const Map> map() const = 0;
-  // out = f_int(u)
-  virtual void internalForce(const Vector& u, Vector& out) const = 0;
+  // out = f_int(u): a trial at u (the material points' new states kept as the trial).
+  virtual void internalForce(const Vector& u, Vector& out) = 0;
   // K_T(u), on the same graph every call (see above).
   virtual RCP<const CrsMatrix> tangent(const Vector& u) = 0;
   virtual long long tangentVersion() const = 0;
@@ -76,10 +76,6 @@ class InternalForce {
   // Whether the force carries a history whose update has kinks in u (a plastic return map:
   // elastic or plastic at each point), where a full Newton correction can overshoot.
   virtual bool hasReturnMap() const { return false; }
-  virtual void commit() {}
-  virtual void revert() {}
-  virtual void archive(StateArchive& /*a*/) const {}
-  virtual void unarchive(const StateArchive& /*a*/) {}
 };
 
 }  // namespace choc

@@ -37,7 +37,7 @@ void KeptFactorization::archive(StateArchive& a, const Comm& comm) const {
   a.putVector("kept_factorization/solver", solverState);
 }
 
-bool KeptFactorization::unarchive(const StateArchive& a, const Comm& comm) {
+bool KeptFactorization::restore(const StateArchive& a, const Comm& comm) {
   if (!a.has("kept_factorization/ranks") || a.getInt("kept_factorization/ranks") != comm.getSize())
     return false;
   const std::vector<double> c = a.getVector<double>("kept_factorization/coefficients", 3);

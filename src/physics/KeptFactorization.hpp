@@ -18,14 +18,14 @@ namespace choc {
 
 struct KeptFactorization {
   EffectiveCoefficients coefficients;
-  std::vector<MatrixEntry> factored, last;  // this rank's rows; every rank's once unarchived
+  std::vector<MatrixEntry> factored, last;  // this rank's rows; every rank's once restored
   std::vector<char> keyStatus;
   std::vector<long long> solverState;
 
   // Collective: gathers the entries of every rank.
   void archive(StateArchive& a, const Comm& comm) const;
   // False when the archive holds none, or was written on another number of ranks.
-  bool unarchive(const StateArchive& a, const Comm& comm);
+  bool restore(const StateArchive& a, const Comm& comm);
 };
 
 // Every rank's entries, in rank order, on every rank.

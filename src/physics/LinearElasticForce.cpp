@@ -9,7 +9,8 @@
 
 namespace choc {
 
-LinearElasticForce::LinearElasticForce(RCP<const CrsMatrix> K) : K_(std::move(K)) {}
+LinearElasticForce::LinearElasticForce(RCP<const CrsMatrix> K)
+    : K_(std::move(K)), tmp_(rcp(new Vector(K_->getRowMap()))), colTmp_(rcp(new Vector(K_->getColMap()))) {}
 
 void LinearElasticForce::preferSymmetricProducts() {
   if (!symmetricK_ && K_->getGlobalNumRows() >= SymmetricProduct::kWorthwhileRows)
@@ -23,13 +24,11 @@ void LinearElasticForce::apply(const Vector& x, Vector& out) const {
 
 double LinearElasticForce::strainEnergy(const Vector& u, const Vector* internalForceAtU) const {
   if (internalForceAtU) return 0.5 * u.dot(*internalForceAtU);
-  if (tmp_.is_null()) tmp_ = rcp(new Vector(K_->getRowMap()));
   apply(u, *tmp_);
   return 0.5 * u.dot(*tmp_);
 }
 
 double LinearElasticForce::termsNorm(const Vector& u) const {
-  if (colTmp_.is_null()) colTmp_ = rcp(new Vector(K_->getColMap()));
   Vector& uc = *colTmp_;
   auto importer = K_->getGraph()->getImporter();
   if (importer.is_null()) uc.assign(u);

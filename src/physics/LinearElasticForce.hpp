@@ -12,7 +12,7 @@ class LinearElasticForce : public InternalForce {
  public:
   explicit LinearElasticForce(RCP<const CrsMatrix> K);
   RCP<const Map> map() const override { return K_->getRowMap(); }
-  void internalForce(const Vector& u, Vector& out) const override { apply(u, out); }
+  void internalForce(const Vector& u, Vector& out) override { apply(u, out); }
   RCP<const CrsMatrix> tangent(const Vector& /*u*/) override { return K_; }
   long long tangentVersion() const override { return 0; }
   void applyDampingStiffness(const Vector& x, Vector& out) const override { apply(x, out); }
@@ -27,8 +27,8 @@ class LinearElasticForce : public InternalForce {
   void apply(const Vector& x, Vector& out) const;
   RCP<const CrsMatrix> K_;
   std::unique_ptr<SymmetricProduct> symmetricK_;
-  mutable RCP<Vector> tmp_;     // K u for strainEnergy without a given product
-  mutable RCP<Vector> colTmp_;  // u on K's column map, for termsNorm
+  RCP<Vector> tmp_;     // scratch: K u for strainEnergy without a given product
+  RCP<Vector> colTmp_;  // scratch: u on K's column map, for termsNorm
 };
 
 }  // namespace choc

@@ -187,8 +187,8 @@ void ModalLinks::archive(StateArchive& a) const {
   a.putVector("links/constraintForce", constraintForce_);
 }
 
-void ModalLinks::unarchive(const StateArchive& a) {
-  unarchiveLinks(a);
+void ModalLinks::restore(const StateArchive& a) {
+  restoreLinks(a);
   constraintForce_ = a.getVector<double>("links/constraintForce", constraintForce_.size());
 }
 

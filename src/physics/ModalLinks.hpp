@@ -35,7 +35,7 @@ class ModalLinks : public ModalForce, public ShockLinkSet {
   // The constraint force of the last project() expressed on another basis (a restart on a
   // basis recomputed on another number of ranks).
   void setConstraintForce(std::vector<double> f) { constraintForce_ = std::move(f); }
-  void unarchive(const StateArchive& a) override;
+  void restore(const StateArchive& a) override;
 
  private:
   Vec3 relative(size_t i, const std::vector<double>& x, bool position) const;

@@ -267,7 +267,7 @@ void ShockLinkSet::archiveLinks(StateArchive& a) const {
   a.putVector("links/tangentialPower", lastTangentialPower_);
 }
 
-void ShockLinkSet::unarchiveLinks(const StateArchive& a) {
+void ShockLinkSet::restoreLinks(const StateArchive& a) {
   const auto states = a.getVector<ShockLawState>("links/states", links_.size());
   const auto last = a.getVector<ShockResponse>("links/responses", links_.size());
   for (size_t i = 0; i < links_.size(); ++i) {

@@ -68,7 +68,7 @@ class ShockLinkSet : public InteractionOutput {
   void accumulateTangentialPower(size_t i, const Vec3& w, double dt);
   void addTangentialWork(size_t i, double work) { tangentialWork_[i] += work; }
   void archiveLinks(StateArchive& a) const;
-  void unarchiveLinks(const StateArchive& a);
+  void restoreLinks(const StateArchive& a);
 
   std::vector<ShockLink> links_;
   double dissipated_ = 0.0;

@@ -13,6 +13,7 @@ SmallStrainDomain::SmallStrainDomain(Model& model) {
   const RCP<const CrsMatrix> K = model.stiffness();
   columns_ = K->getColMap();
   importer_ = K->getGraph()->getImporter();
+  if (!importer_.is_null()) uCol_ = rcp(new Vector(columns_));  // u on the column map (scratch, made once)
   const Mesh& mesh = model.mesh();
   const auto& kernels = model.finiteStrainKernels();
   const int rank = K->getComm()->getRank();
@@ -45,7 +46,6 @@ void SmallStrainDomain::check(const Vector& u, ElementValidity& v) const {
   if (empty() || !v.failure.empty()) return;
   const Vector* onColumns = &u;
   if (!importer_.is_null()) {
-    if (uCol_.is_null()) uCol_ = rcp(new Vector(columns_));
     uCol_->doImport(u, *importer_, Tpetra::INSERT);
     onColumns = uCol_.get();
   }

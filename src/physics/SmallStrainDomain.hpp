@@ -39,7 +39,7 @@ class SmallStrainDomain {
   std::vector<std::string> blockNames_;
   RCP<const Map> columns_;
   RCP<const Tpetra::Import<LO, GO>> importer_;
-  mutable RCP<Vector> uCol_;
+  RCP<Vector> uCol_;  // scratch: u on the column map (made once)
   long long elementsOnAnyRank_ = 0;
 };
 

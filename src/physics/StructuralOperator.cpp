@@ -183,10 +183,10 @@ void StructuralOperator::addExplicitContact(const Vector& u, const Vector& uStar
   contact_->forwardIncrement(u, uStar, inverseMass, h, h2, a);
 }
 
-void StructuralOperator::acceptStep(const Vector& u) {
+void StructuralOperator::commitMotion(const Vector& u) {
   if (!contact_) return;
   TimerScope ts(timer_, "Transient: contact search");
-  contact_->commitStep(u);
+  contact_->commitMotion(u);
 }
 
 ConstraintUpdate StructuralOperator::updateConstraints(const Vector& u) {
@@ -212,14 +212,15 @@ ElementValidity StructuralOperator::validity(const Vector& u) const {
   return v;
 }
 
-void StructuralOperator::saveState() {
+void StructuralOperator::commit() {
   internal_->commit();
   if (links_) links_->commit();
-  if (contact_) contact_->save();
+  if (contact_) contact_->commit();
 }
-void StructuralOperator::restoreState() {
+void StructuralOperator::revert() {
   internal_->revert();
-  if (contact_) contact_->restore();
+  if (links_) links_->revert();
+  if (contact_) contact_->revert();
 }
 void StructuralOperator::archive(StateArchive& a) const {
   internal_->archive(a);
@@ -233,11 +234,11 @@ void StructuralOperator::archive(StateArchive& a) const {
     k.archive(a, *internal_->map()->getComm());
   }
 }
-void StructuralOperator::unarchive(const StateArchive& a) {
-  internal_->unarchive(a);
-  if (contact_) contact_->unarchive(a);
-  if (links_) links_->unarchive(a);
-  restoreKept_ = kept_.unarchive(a, *internal_->map()->getComm());
+void StructuralOperator::restore(const StateArchive& a) {
+  internal_->restore(a);
+  if (contact_) contact_->restore(a);
+  if (links_) links_->restore(a);
+  restoreKept_ = kept_.restore(a, *internal_->map()->getComm());
 }
 
 // The checkpoint's factored matrix, factored again, then its last filled matrix on the

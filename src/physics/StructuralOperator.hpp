@@ -65,7 +65,7 @@ class StructuralOperator : public ExplicitOperator {
     if (contact_ && !forwardIncrement_) contact_->scaleLastCorrection(factor);
   }
   void beginStep(const Vector& u, double t, double dt) override;
-  void acceptStep(const Vector& u) override;
+  void commitMotion(const Vector& u) override;
   // The elements' validity, the assembled small-strain blocks' domain, then the slave nodes'
   // penetration of rigid obstacles.
   ElementValidity validity(const Vector& u) const override;
@@ -99,10 +99,10 @@ class StructuralOperator : public ExplicitOperator {
                           Vector& a) override;
   std::string constraintState() const override { return contact_ ? contact_->activeSummary() : ""; }
   void initializeConstraints(const Vector& u) override;
-  void saveState() override;
-  void restoreState() override;
+  void commit() override;
+  void revert() override;
   void archive(StateArchive& a) const override;
-  void unarchive(const StateArchive& a) override;
+  void restore(const StateArchive& a) override;
 
   const DirectLinks* links() const { return links_; }
   // The state-dependent elements' eigenvalue bound at u (InternalForce::stateEigenvalueBound).

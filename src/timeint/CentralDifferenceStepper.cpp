@@ -38,7 +38,7 @@ CentralDifferenceStepper::CentralDifferenceStepper(ExplicitOperator& op, RCP<con
 
 void CentralDifferenceStepper::acceleration(const Vector& u, const Vector& vStar, double t, double dt,
                                             Vector& a, double h, double factor) {
-  op_.acceptStep(u);  // the previous sub-step ended at u
+  op_.commitMotion(u);  // the previous sub-step ended at u
   op_.beginStep(u, t, dt);
   op_.updateConstraints(u);  // penalty status at u (the only constraints an explicit step takes)
   op_.applyForces(u, vStar, t, *r_);
@@ -49,7 +49,6 @@ void CentralDifferenceStepper::acceleration(const Vector& u, const Vector& vStar
     uStar_->update(factor * h * h, a, 1.0);
     xop_.addExplicitContact(u, *uStar_, *inverseMass_, h, factor * h * h, a);
   }
-  op_.saveState();  // the links' state advances with the step
 }
 
 // The initial state's acceleration (with the contact increments of the first sub-step).
@@ -58,6 +57,7 @@ void CentralDifferenceStepper::start(double t0, double firstStep, TransientSumma
   op_.beginStep(*u_, t0, 0.0);
   op_.initializeConstraints(*u_);
   acceleration(*u_, *v_, t0, 0.0, *a_, firstStep / substeps_, 0.5);
+  op_.commit();  // every explicit force is accepted: its trial states (links, material points) advance
   info.substep = firstStep / substeps_;
 }
 
@@ -71,6 +71,7 @@ void CentralDifferenceStepper::takeSubsteps(double t, double target, double h) {
     t = k + 1 == substeps_ ? target : t + h;
     xop_.keepProducts(k + 1 == substeps_);  // the step's end state: the energies follow
     acceleration(*u_, *vHalf_, t, h, *a_, h, 1.0);
+    op_.commit();
     v_->update(1.0, *vHalf_, 0.5 * h, *a_, 0.0);
     if (k + 1 < substeps_) notifySubstep(t);
   }
@@ -90,8 +91,8 @@ void CentralDifferenceStepper::archiveState(StateArchive& a, const StateVectors&
   if (decide_) a.putInt("driver/substeps", substeps_);
 }
 
-void CentralDifferenceStepper::unarchiveState(const StateArchive& a, const StateVectors& vectors) {
-  StructuralStepper::unarchiveState(a, vectors);
+void CentralDifferenceStepper::restoreState(const StateArchive& a, const StateVectors& vectors) {
+  StructuralStepper::restoreState(a, vectors);
   if (decide_ && a.has("driver/substeps")) substeps_ = int(a.getInt("driver/substeps"));
 }
 

@@ -37,7 +37,7 @@ class CentralDifferenceStepper : public StructuralStepper {
   // logged once.
   void checkValidityEvery(int interval) { validityEvery_ = interval; }
   void archiveState(StateArchive& a, const StateVectors& vectors) const override;
-  void unarchiveState(const StateArchive& a, const StateVectors& vectors) override;
+  void restoreState(const StateArchive& a, const StateVectors& vectors) override;
 
   void start(double t0, double firstStep, TransientSummary& sum, StepInfo& info) override;
   // The nominal step in `substeps` sub-steps; throws NumericalError when the state stops

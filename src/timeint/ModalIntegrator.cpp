@@ -128,7 +128,7 @@ void ModalIntegrator::archive(const ModalState& s, StateArchive& a) const {
   force_.archive(a);
 }
 
-void ModalIntegrator::unarchive(ModalState& s, const StateArchive& a) const {
+void ModalIntegrator::restore(ModalState& s, const StateArchive& a) const {
   const size_t n = w2_.size();
   s.t = a.getDouble("modal/t");
   s.q = a.getVector<double>("modal/q", n);
@@ -139,7 +139,7 @@ void ModalIntegrator::unarchive(ModalState& s, const StateArchive& a) const {
   const std::vector<double> w = a.getVector<double>("modal/integrals", 2);
   lastStep_ = w[0];
   dissipated_ = w[1];
-  force_.unarchive(a);
+  force_.restore(a);
 }
 
 }  // namespace choc

@@ -32,7 +32,7 @@ class ModalForce {
   virtual const std::vector<double>* constraintForce() const { return nullptr; }
   // What the force carries between steps, for a checkpoint, and back.
   virtual void archive(StateArchive& /*a*/) const {}
-  virtual void unarchive(const StateArchive& /*a*/) {}
+  virtual void restore(const StateArchive& /*a*/) {}
 };
 
 enum class ModalScheme { SymplecticEuler, CentralDifference, Adaptive };
@@ -65,7 +65,7 @@ class ModalIntegrator {
   double modalDissipation() const { return dissipated_; }
   // The state s and what the integrator and the force carry ("modal/*"), and back.
   void archive(const ModalState& s, StateArchive& a) const;
-  void unarchive(ModalState& s, const StateArchive& a) const;
+  void restore(ModalState& s, const StateArchive& a) const;
 
  private:
   void euler(ModalState& s, double h) const;

@@ -29,10 +29,10 @@ void ModalStepper::archiveState(StateArchive& a, const StateVectors& vectors) co
 
 // The integrator starts as for a new run (the links' force evaluated once), then takes the
 // checkpoint's state.
-void ModalStepper::unarchiveState(const StateArchive& a, const StateVectors& vectors) {
+void ModalStepper::restoreState(const StateArchive& a, const StateVectors& vectors) {
   integrator_.initialize(state_, t0_);
-  integrator_.unarchive(state_, a);
-  if (hooks_.unarchive) hooks_.unarchive(a, vectors);
+  integrator_.restore(state_, a);
+  if (hooks_.restore) hooks_.restore(a, vectors);
 }
 
 }  // namespace choc

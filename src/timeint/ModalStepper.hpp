@@ -17,7 +17,7 @@ class ModalStepper : public Stepper {
     std::function<void(const StepInfo&)> accepted;  // the state holds the step info reports
     std::function<void(double)> substep;            // a sub-step's end time (not the step's last)
     std::function<void(StateArchive&, const StateVectors&)> archive;  // the analysis' records
-    std::function<void(const StateArchive&, const StateVectors&)> unarchive;
+    std::function<void(const StateArchive&, const StateVectors&)> restore;
   };
   // substeps: per nominal step, from the stability policy. state holds the initial
   // coordinates and velocities at t0.
@@ -27,7 +27,7 @@ class ModalStepper : public Stepper {
   Advance advance(const NominalStep& s, StepControl& c, TransientSummary& sum) override;
   void notify(const StepInfo& info) override { hooks_.accepted(info); }
   void archiveState(StateArchive& a, const StateVectors& vectors) const override;
-  void unarchiveState(const StateArchive& a, const StateVectors& vectors) override;
+  void restoreState(const StateArchive& a, const StateVectors& vectors) override;
 
  private:
   const ModalIntegrator& integrator_;

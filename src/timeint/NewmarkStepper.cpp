@@ -102,7 +102,7 @@ void NewmarkStepper::start(double t0, double /*firstStep*/, TransientSummary& su
   if (cs.refactored) ++sum.refactorizations;
   if (!cs.ok)
     throw NumericalError(s_.label + ": initial acceleration: linear solve failed: " + cs.message);
-  op_.saveState();
+  op_.commit();
   sum.smallestStep = s_.timeStep;
   weightedTerms(t0);
 }
@@ -112,8 +112,8 @@ void NewmarkStepper::weightedTerms(double t) {
   if (scheme_.alphaF() != 0.0) op_.applyForces(*u_, *v_, t, *F0_);
 }
 
-void NewmarkStepper::unarchiveState(const StateArchive& a, const StateVectors& vectors) {
-  StructuralStepper::unarchiveState(a, vectors);
+void NewmarkStepper::restoreState(const StateArchive& a, const StateVectors& vectors) {
+  StructuralStepper::restoreState(a, vectors);
   weightedTerms(a.getDouble("driver/time"));
 }
 
@@ -128,7 +128,7 @@ void NewmarkStepper::countIterations(const NewtonOutcome& out, TransientSummary&
 // A failed attempt: back to the accepted state; the run stops when no cut of dt is left.
 void NewmarkStepper::rejectAttempt(double t, double h, int cuts, const NewtonOutcome& out,
                                    TransientSummary& sum) {
-  op_.restoreState();
+  op_.revert();
   ++sum.failedSteps;
   if (cuts < s_.maxCuts) return;
   char buf[200];
@@ -144,8 +144,8 @@ void NewmarkStepper::acceptAttempt(double t) {
   std::swap(u_, u1_);
   std::swap(v_, v1_);
   std::swap(a_, a1_);
-  op_.acceptStep(*u_);
-  op_.saveState();
+  op_.commitMotion(*u_);
+  op_.commit();
   std::swap(Ma0_, Ma1_);  // M a and F of the converged u (zero-weighted when alpha is 0)
   if (scheme_.alphaF() != 0.0 && op_.forcesVaryInTime())
     op_.applyForces(*u_, *v_, t, *F0_);  // at t itself (t + h can differ by round-off)

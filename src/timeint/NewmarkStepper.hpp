@@ -17,7 +17,7 @@ class NewmarkStepper : public StructuralStepper {
 
   void start(double t0, double firstStep, TransientSummary& sum, StepInfo& info) override;
   Advance advance(const NominalStep& s, StepControl& c, TransientSummary& sum) override;
-  void unarchiveState(const StateArchive& a, const StateVectors& vectors) override;
+  void restoreState(const StateArchive& a, const StateVectors& vectors) override;
 
  private:
   // One attempt from the accepted state at t to t + dt; returns the outcome, leaves u1, v1, a1.

@@ -13,7 +13,7 @@
 
 #include "core/TpetraTypes.hpp"
 #include "fem/ElementValidity.hpp"
-#include "restart/StateArchive.hpp"
+#include "restart/SteppedState.hpp"
 
 namespace choc {
 
@@ -38,7 +38,7 @@ struct ConstraintUpdate {
   std::string summary;       // e.g. "3 -> 4 active"
 };
 
-class SecondOrderOperator {
+class SecondOrderOperator : public SteppedState {
  public:
   virtual ~SecondOrderOperator() = default;
   virtual RCP<const Map> map() const = 0;
@@ -83,8 +83,8 @@ class SecondOrderOperator {
   // Whether a converged state u is in the model's domain (no element inverted at a corner or a
   // point, small strain within its bound: ElementValidity.hpp); collective.
   virtual ElementValidity validity(const Vector& /*u*/) const { return {}; }
-  // A step was accepted at u (before saveState): state that accumulates over accepted steps.
-  virtual void acceptStep(const Vector& /*u*/) {}
+  // The motion up to u is accepted (before commit): state that accumulates over accepted steps.
+  virtual void commitMotion(const Vector& /*u*/) {}
   // Is R(u) affine in u while the constraint status is frozen (linear elasticity, contact
   // without friction, no shock links)? Then one exact correction solves an active-set pass.
   // false (the default) is always safe.
@@ -99,13 +99,9 @@ class SecondOrderOperator {
   virtual ConstraintUpdate updateConstraints(const Vector& u) = 0;
   // Initial status from u (before the first step).
   virtual void initializeConstraints(const Vector& /*u*/) {}
-  // The extra unknowns and statuses of the last accepted step: saved on acceptance,
-  // restored when a step fails.
-  virtual void saveState() {}
-  virtual void restoreState() {}
-  // The accepted state of the extra unknowns and statuses in a checkpoint, and back.
-  virtual void archive(StateArchive& /*a*/) const {}
-  virtual void unarchive(const StateArchive& /*a*/) {}
+  // commit(), revert(), archive() and restore() (restart/SteppedState.hpp): the material
+  // points', the constraints' extra unknowns and statuses, and the links' state of the last
+  // accepted step.
 };
 
 }  // namespace choc

@@ -18,7 +18,7 @@ void StepLoop::resumeState(const Resume& r) {
   t_ = r.archive.getDouble("driver/time");
   nominal_ = r.archive.getInt("driver/nominal");
   sum_ = r.archive.getPod<TransientSummary>("driver/summary");
-  stepper_.unarchiveState(r.archive, r.vectors);
+  stepper_.restoreState(r.archive, r.vectors);
 }
 
 void StepLoop::archive(StateArchive& a, const StateVectors& vectors) const {

@@ -94,7 +94,7 @@ class Stepper {
   // The stepper's state in a checkpoint, and back (its own records; the loop writes
   // "driver/time", "driver/nominal" and "driver/summary").
   virtual void archiveState(StateArchive& a, const StateVectors& vectors) const = 0;
-  virtual void unarchiveState(const StateArchive& a, const StateVectors& vectors) = 0;
+  virtual void restoreState(const StateArchive& a, const StateVectors& vectors) = 0;
 };
 
 class StepLoop {

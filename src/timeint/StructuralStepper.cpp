@@ -45,12 +45,12 @@ void StructuralStepper::archiveState(StateArchive& a, const StateVectors& vector
   op_.archive(a);
 }
 
-void StructuralStepper::unarchiveState(const StateArchive& a, const StateVectors& vectors) {
+void StructuralStepper::restoreState(const StateArchive& a, const StateVectors& vectors) {
   vectors.get(a, "driver/u", *u_);
   vectors.get(a, "driver/v", *v_);
   vectors.get(a, "driver/a", *a_);
-  op_.unarchive(a);
-  op_.saveState();
+  op_.restore(a);
+  op_.commit();
 }
 
 TransientSummary StructuralStepper::run(Vector& u, Vector& v, const StepLoop::Resume* resume) {

@@ -35,7 +35,7 @@ class StructuralStepper : public Stepper {
 
   void notify(const StepInfo& info) override;
   void archiveState(StateArchive& a, const StateVectors& vectors) const override;
-  void unarchiveState(const StateArchive& a, const StateVectors& vectors) override;
+  void restoreState(const StateArchive& a, const StateVectors& vectors) override;
 
  protected:
   StructuralStepper(SecondOrderOperator& op, TransientSettings settings);

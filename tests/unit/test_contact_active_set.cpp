@@ -13,22 +13,22 @@ TEST(ContactActiveSet, RestoreArchiveAndCorrection) {
   s.status = {1, 0, 1};
   s.lambda = {10.0, 0.0, 5.0};
   s.scale = 2.0;
-  s.save();
+  s.commit();
   EXPECT_EQ(s.activeCount(), 2);
   s.applyCorrection({1.0, 0.0, -0.5});
   EXPECT_EQ(s.lambda, (std::vector<double>{12.0, 0.0, 4.0}));
-  s.restore();  // same statuses: no new version
+  s.revert();  // same statuses: no new version
   EXPECT_EQ(s.version, 0);
   EXPECT_EQ(s.lambda, (std::vector<double>{10.0, 0.0, 5.0}));
   s.status[1] = 1;
   s.lambda[1] = 3.0;
   StateArchive a;
   s.archive(a);  // the accepted state
-  s.restore();
+  s.revert();
   EXPECT_EQ(s.version, 1);
   EXPECT_EQ(s.status, (std::vector<char>{1, 0, 1}));
   ContactActiveSet t;
-  t.unarchive(a, 3);
+  t.restore(a, 3);
   EXPECT_EQ(t.status, (std::vector<char>{1, 0, 1}));
   EXPECT_EQ(t.lambda, (std::vector<double>{10.0, 0.0, 5.0}));
   EXPECT_EQ(t.scale, 2.0);

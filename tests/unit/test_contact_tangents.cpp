@@ -183,7 +183,7 @@ class Scene {
   std::vector<double> residual(const std::vector<double>& x) {
     const auto u = vec(std::vector<double>(x.begin(), x.begin() + nU()));
     if (multipliers()) {
-      contact_->restore();
+      contact_->revert();
       contact_->applyCorrection(std::vector<double>(x.begin() + nU(), x.end()));
     }
     Vector out(map_);
@@ -436,7 +436,7 @@ TEST(ContactTangents, FrictionAgainstObstacles) {
       sc.residual(x1);
       expectTangent(sc, x1, (label + ", first step").c_str());
       sc.residual(x1);
-      sc.contact().commitStep(*sc.vec(u1));
+      sc.contact().commitMotion(*sc.vec(u1));
       // Step 2 from u1 (the sphere's normals turn), evaluated at u2.
       sc.beginStep(u1, 1.1e-4, 1e-5);
       sc.initialize(u2);

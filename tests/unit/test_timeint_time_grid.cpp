@@ -72,7 +72,7 @@ struct RecordingStepper : Stepper {
     boundaries.push_back(info.boundary);
   }
   void archiveState(StateArchive& a, const StateVectors&) const override { a.putDouble("test/state", state); }
-  void unarchiveState(const StateArchive& a, const StateVectors&) override { state = a.getDouble("test/state"); }
+  void restoreState(const StateArchive& a, const StateVectors&) override { state = a.getDouble("test/state"); }
 };
 
 TEST(StepLoop, ReportsTheInitialStateAndEveryAcceptedOne) {
