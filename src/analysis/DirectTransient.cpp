@@ -24,6 +24,7 @@
 #include "analysis/DeformedStability.hpp"
 #include "physics/FiniteStrainForce.hpp"
 #include "physics/LinearElasticForce.hpp"
+#include "physics/LoadAssembly.hpp"
 #include "solvers/FactorizationBackend.hpp"
 #include "solvers/SolverChoice.hpp"
 #include "timeint/CentralDifferenceStepper.hpp"
@@ -40,110 +41,7 @@ StatusTiming statusTimingOf(const std::string& update) {
                                        : StatusTiming::Auto;
 }
 
-// The Newton sublist of a Transient.
-void declareNewton(ParameterList& nw) {
-  declareDouble(nw, "Residual Tolerance", 1e-8,
-                "||R|| / (largest of ||inertia||, ||forces||, ||contact forces||)", Range::positive());
-  declareDouble(nw, "Increment Tolerance", 1e-8,
-                "the iterate's error / ||u_{n+1} - predictor||: theta / (1 - theta) ||du_k|| with "
-                "theta = ||du_k|| / ||du_k-1|| < 1 (the error bound from the last two corrections' "
-                "contraction, which accepts a quadratically converged iterate without a correction "
-                "to confirm it), else the last correction ||du_k||", Range::positive());
-  declareInt(nw, "Maximum Iterations", 10, "Newton corrections per active-set pass", Range::atLeast(1));
-  declareChoice(nw, "Line Search", "auto", {"auto", "on", "off"},
-                "whether a correction that does not decrease the residual norm is halved (up to 6 "
-                "times, Armijo's test): 'auto' on where a block is plastic (J2, Johnson-Cook: a "
-                "full correction can overshoot the points' changes between elastic and plastic "
-                "response), off elsewhere; 'on' for every model; 'off' every correction whole");
-  declareChoice(nw, "Convergence", "auto", {"auto", "residual and increment", "residual"},
-                "which tests accept an iterate: 'residual and increment' both; 'residual' the "
-                "residual alone, saving the solve that only confirms a small increment; 'auto' "
-                "the residual alone in the passes that are linear (no friction, no shock links: "
-                "one correction per step while the contact status holds) and both otherwise");
-  declareChoice(nw, "Linear Tolerance", "adaptive", {"adaptive", "fixed"},
-                "how far an iterative linear solver (CG, GMRES, MINRES) takes each correction: "
-                "'adaptive' until its residual is a tenth of what the residual test allows (its "
-                "tolerance of the reference, or the round-off floor; never tighter than 'Linear "
-                "Solver/Tolerance'; the Newton tests are unchanged); 'fixed' "
-                "always to 'Linear Solver/Tolerance'. A direct solve is exact either way; GMRES "
-                "on a kept factorisation ('Linear Solver/Update Budget') stops as an iterative "
-                "solver does");
-}
-
-// Analyses/<transient>/Pressures/<name>: dead or follower, uniform or linear in X.
-void declarePressures(ParameterList& p, const char* ramp) {
-  ParameterList& pr = declareNamedSublists(p, "Pressures", "pressures on side sets, by name");
-  declareRequiredString(pr, "Side Set", "faces (3D) or edges (plane strain, axisymmetric) loaded");
-  declareRequiredDouble(pr, "Value",
-                        "pressure [Pa], positive pushing into the body (against the outward normal); "
-                        "consistent nodal forces on the reference faces, or on the current ones with Follower");
-  declareString(pr, "Gradient", "0 0 0",
-                "the pressure's change per metre of the reference position, \"gx gy gz\" [Pa/m]: "
-                "p(X) = Value + Gradient . X at each point X of the faces (a linear pressure: "
-                "hydrostatic, or an end moment with Follower)");
-  declareBool(pr, "Follower", false,
-              "true: the pressure acts on the current faces along their current normal (a follower "
-              "load, its load stiffness in Newton's tangent; needs a block with Strain = finite); "
-              "false: on the reference faces (a dead load)");
-  declareDouble(pr, "Ramp Time", 0.0, ramp, Range::nonNegative());
-}
-
 }  // namespace
-
-Teuchos::ParameterList DirectTransient::parameters() {
-  Teuchos::ParameterList p;
-  declareRequiredChoice(p, "Type", {"Transient"}, "analysis type");
-  std::vector<std::string> schemes = NewmarkFamily::presetNames();
-  schemes.push_back("central differences");
-  declareChoice(p, "Scheme", "modified average acceleration", schemes,
-                "Newmark-family preset (see src/timeint/NewmarkFamily.hpp), or 'central "
-                "differences': explicit, lumped mass, no linear solve (src/timeint/CentralDifferenceStepper.hpp)");
-  declareStabilityCheck(p);
-  declareInt(p, "Critical Step Interval", 100,
-             "central differences with finite-strain blocks: every this many steps the critical step "
-             "is estimated again on the deformed mesh (the elements' tangent against their lumped "
-             "mass: 2 to 12 internal forces' cost per estimate) and 'Stability Check' decides again "
-             "(src/analysis/DeformedStability.hpp); lower it for violent compression. Every central-"
-             "differences run checks the elements' validity at the same interval (an inverted element, "
-             "small strain out of its domain, a penetrated obstacle: docs/user-guide/errors.md; about "
-             "1.5 internal forces' cost)",
-             Range::positive());
-  declareDouble(p, "Alpha", -0.1,
-                "alpha of 'modified average acceleration' and 'HHT', in [-1/3, 0]: "
-                "beta = (1-alpha)^2/4, gamma = 1/2 - alpha");
-  declareDouble(p, "Spectral Radius", 0.8, "rho_inf of 'generalized-alpha', in [0, 1]");
-  declareDouble(p, "Beta", 0.25, "beta of 'Newmark' (gamma/2 <= beta <= 1)");
-  declareDouble(p, "Gamma", 0.5, "gamma of 'Newmark' (>= 1/2)");
-  declareRequiredDouble(p, "Time Step", "dt [s]", Range::positive());
-  declareDouble(p, "Start Time", 0.0,
-                "time of the initial state [s] (loads' ramps and obstacles' motions are functions of "
-                "the time itself, from t = 0)", Range::nonNegative());
-  declareRequiredDouble(p, "End Time", "end of the run [s]", Range::positive());
-  ParameterList& ray = declareSublist(p, "Rayleigh Damping", "C = a K + b M");
-  declareDouble(ray, "Stiffness Coefficient", 0.0, "a [s]", Range::nonNegative());
-  declareDouble(ray, "Mass Coefficient", 0.0, "b [1/s]", Range::nonNegative());
-  declareNewton(declareSublist(p, "Newton", "Newton iterations of each step"));
-  ParameterList& sc = declareSublist(p, "Step Control", "what a failed step does");
-  declareInt(sc, "Maximum Step Cuts", 0,
-             "cuts of dt allowed inside one step before the run stops (0: stop at once)",
-             Range::atLeast(0));
-  declareDouble(sc, "Cut Factor", 0.5, "dt <- factor dt after a failure", Range{0.0, 1.0, true, true});
-  p.set("Linear Solver", linearSolverParameters(), "linear solver of the Newton corrections");
-  declareContactParameters(p);
-  declareShockLinks(p);
-  const char* ramp = "the load grows linearly from zero at t = 0 to its value at this time [s], then "
-                     "stays constant (0: full value from t = 0)";
-  ParameterList& nf = declareNamedSublists(p, "Nodal Forces", "forces on the nodes of node sets, by name");
-  declareRequiredString(nf, "Node Set", "node set receiving the force");
-  declareChoice(nf, "Component", "DX", {"DX", "DY", "DZ"}, "direction");
-  declareRequiredDouble(nf, "Value", "force per node [N]");
-  declareDouble(nf, "Ramp Time", 0.0, ramp, Range::nonNegative());
-  declarePressures(p, ramp);
-  declareInitialConditions(p);
-  declareTransientOutput(p);
-  declareChecks(p);
-  return p;
-}
 
 DirectTransient::DirectTransient(const std::string& name, const Teuchos::ParameterList& params,
                                      const std::string& inputFile)
@@ -258,7 +156,7 @@ void DirectTransient::setup(SetupContext& ctx) {
   b_->finiteStrain = model.finiteStrain();
   b_->M = model.mass();
   b_->meshMass = b_->M;
-  b_->loads = assembleLoads(model);
+  b_->loads = assembleLoads(model, params_, inputFile_, "Analyses/" + name_);
   buildContact(model);
   if (b_->contact && b_->contact->hasFriction()) {
     const int dimension = int(spatialComponents(model.mesh().dimension).size());
@@ -289,81 +187,6 @@ void DirectTransient::setup(SetupContext& ctx) {
   b_->checks = makeChecks(params_, model, name_);
   for (const auto& c : b_->checks) c->verify(b_->columns, s_.time.endTime);
   b_->init = buildInitialFields(params_, model, "Analyses/" + name_);
-}
-
-// Nodal forces and pressures, each a load group (null when there are none).
-std::shared_ptr<const Loads> DirectTransient::assembleLoads(Model& model) const {
-  auto loads = std::make_shared<Loads>();
-  const ParameterList& nf = params_.sublist("Nodal Forces");
-  for (auto it = nf.begin(); it != nf.end(); ++it) {
-    const ParameterList& f = nf.sublist(nf.name(it));
-    const NodeSet& ns = model.nodeSet(f.get<std::string>("Node Set"), path("Nodal Forces/" + nf.name(it) + "/Node Set"));
-    const int comp = componentFromName(f.get<std::string>("Component"));
-    auto force = rcp(new Vector(model.map()));
-    for (int n : ns.nodes) {
-      const long long d = model.dof(n, comp);
-      if (d >= 0 && model.dofs().ownsNode(n)) force->sumIntoGlobalValue(GO(d), f.get<double>("Value"));
-    }
-    loads->add({nf.name(it), force, f.get<double>("Ramp Time")});
-  }
-  const ParameterList& pr = params_.sublist("Pressures");
-  for (auto it = pr.begin(); it != pr.end(); ++it) {
-    const ParameterList& q = pr.sublist(pr.name(it));
-    const std::string side = q.get<std::string>("Side Set");
-    std::vector<Face> faces;
-    try {
-      faces = facesOf(model.mesh(), side);
-    } catch (const std::invalid_argument& e) {
-      throwInput(inputFile_, path("Pressures/" + pr.name(it) + "/Side Set"), side, e.what());
-    }
-    const std::string key = path("Pressures/" + pr.name(it));
-    PressureField field;
-    field.value = q.get<double>("Value");
-    field.gradient = parseVector3(q.get<std::string>("Gradient"), inputFile_, key + "/Gradient");
-    if (q.get<bool>("Follower")) {
-      loads->addFollower(followerPressure(model, pr.name(it), std::move(faces), field));
-      continue;
-    }
-    auto force = rcp(new Vector(model.map()));
-    const auto nodal = pressureForces(faces, field, model.kinematics() == Kinematics::Axisymmetric);
-    for (const auto& [n, fn] : nodal) {
-      if (!model.dofs().ownsNode(n)) continue;
-      for (int c = 0; c < 3; ++c) {
-        const long long d = model.dof(n, c);
-        if (d >= 0 && fn[c] != 0.0) force->sumIntoGlobalValue(GO(d), fn[c]);
-      }
-    }
-    loads->add({pr.name(it), force, q.get<double>("Ramp Time")});
-  }
-  if (loads->empty()) return nullptr;
-  return loads;
-}
-
-// The follower pressure `name` (Pressures/<name>, Follower = true) on its faces: finite-strain
-// blocks under every face, or an input error.
-std::shared_ptr<const FollowerPressure> DirectTransient::followerPressure(Model& model, const std::string& name,
-                                                                          std::vector<Face> faces,
-                                                                          const PressureField& field) const {
-  const std::string key = path("Pressures/" + name);
-  const ParameterList& q = params_.sublist("Pressures").sublist(name);
-  const std::string side = q.get<std::string>("Side Set");
-  if (model.firstFiniteStrainBlock().empty())
-    throwInput(inputFile_, key + "/Follower", "true",
-               "a follower pressure makes the model nonlinear and needs a block with Strain = finite",
-               "set Strain = finite on the loaded block, or Follower = false (a dead load on the reference faces)");
-  for (int e : model.mesh().findSideSet(side)->elements) {  // facesOf found the set
-    const int b = model.mesh().locateElement(e).first;
-    const auto& kernel = model.finiteStrainKernels()[size_t(b)];
-    if (!kernel || !kernel->finiteKinematics())
-      throwInput(inputFile_, key + "/Side Set", side,
-                 "has faces of block '" + model.mesh().blocks[size_t(b)].name +
-                     "', whose Strain is small: a follower pressure loads finite-strain blocks",
-                 "set Strain = finite on that block, or Follower = false");
-  }
-  const int components = static_cast<int>(spatialComponents(model.mesh().dimension).size());
-  return std::make_shared<FollowerPressure>(name, std::move(faces), field, q.get<double>("Ramp Time"),
-                                            model.kinematics() == Kinematics::Axisymmetric, model.dofs(),
-                                            components, *model.stiffness());
 }
 
 // The contact pairs, and the mass with the contact surfaces massless when redistributed.
@@ -480,13 +303,14 @@ void DirectTransient::run(RunContext& ctx) {
   StructuralOperator op(internalForce(ctx.model), b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->contact.get(),
                         b_->links.get(), std::move(b_->solver), timer.get());
   configure(op, ctx.model);
-  describe(ctx.model, op);
+  TransientReport report(facts(), op, b_->contact.get(), b_->links.get());
+  report.describe(ctx.model, *b_->M);
   const StateArchive* resume = resumeFor(ctx);
   ObserverSet outputs;
-  std::unique_ptr<ContactReport> report;
-  if (b_->contact) report = std::make_unique<ContactReport>(*b_->contact, ctx.model.mesh().numNodes());
-  const InteractionList interactions({report.get(), b_->links.get()});
-  DirectStepView view(op, report.get(), interactions.simplest(), b_->probes, outputs, timer.get());
+  std::unique_ptr<ContactReport> contactReport;
+  if (b_->contact) contactReport = std::make_unique<ContactReport>(*b_->contact, ctx.model.mesh().numNodes());
+  const InteractionList interactions({contactReport.get(), b_->links.get()});
+  DirectStepView view(op, contactReport.get(), interactions.simplest(), b_->probes, outputs, timer.get());
   std::unique_ptr<StructuralStepper> scheme = stepper(op);
   scheme->addObserver(&view);
   scheme->setInitialState(*b_->init.displacement, *b_->init.velocity);
@@ -506,13 +330,14 @@ void DirectTransient::run(RunContext& ctx) {
   try {
     outputs.run(view, [&] { sum = loop.run(resume ? &from : nullptr); });
   } catch (...) {  // the summary of a run that stopped holds what it did up to its last accepted state
-    recordFigures(loop.progress(), op, *timer, wallStart);
-    summarizeCounts(ctx.summary, loop.progress(), op, loop.time());
+    report.record(loop.progress(), *timer, wallStart);
+    figures_ = report.figures();
+    report.summarizeCounts(ctx.summary, loop.progress(), loop.time());
     history.summarize(ctx.summary);
     throw;
   }
   timer->stopBaseTimer();
-  reportRun(ctx, sum, op, *timer, wallStart, history);
+  reportRun(ctx, sum, report, *timer, wallStart, history);
 }
 
 // How the operator treats contact (forward increments, condensed), and the domain of its assembled
@@ -533,201 +358,37 @@ void DirectTransient::continueView(DirectStepView& view, const StateArchive& res
 }
 
 // The figures of the run: recorded, logged, summarised (<name>.summary.json); then the checks.
-void DirectTransient::reportRun(RunContext& ctx, const TransientSummary& sum, const StructuralOperator& op,
-                               Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start,
-                               const HistoryObserver& history) {
-  recordFigures(sum, op, timer, start);
-  logFigures(sum, ctx.model, timer);
-  summarize(ctx.summary, sum, op, *ctx.model.comm());
+void DirectTransient::reportRun(RunContext& ctx, const TransientSummary& sum, TransientReport& report,
+                                Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start,
+                                const HistoryObserver& history) {
+  report.record(sum, timer, start);
+  figures_ = report.figures();
+  report.logFigures(sum, ctx.model, timer);
+  report.summarize(ctx.summary, sum, *ctx.model.comm());
   history.summarize(ctx.summary);
   evaluateChecks(b_->checks, history.history(), ctx.checks);
   if (history.balance().failed()) ctx.checks.push_back(history.balance().checkResult(name_));
   if (history.hourglass().failed()) ctx.checks.push_back(history.hourglass().checkResult(name_));
 }
 
-void DirectTransient::summarize(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
-                                  const Comm& comm) const {
-  summarizeCounts(s, sum, op, s_.time.endTime);
-  const std::pair<const char*, double> timers[] = {{"assembly", figures_.assembly},
-                                                   {"linear_solve", figures_.linearSolve},
-                                                   {"contact", figures_.contact},
-                                                   {"output", figures_.output},
-                                                   {"analysis", figures_.wall}};
-  for (const auto& [name, seconds] : timers) {  // min and max over the ranks (collective)
-    double lo = 0, hi = 0;
-    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MIN, seconds, Teuchos::outArg(lo));
-    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MAX, seconds, Teuchos::outArg(hi));
-    s.set(std::string("timers/") + name + "/min", lo);
-    s.set(std::string("timers/") + name + "/max", hi);
+// What the report says of the run.
+TransientFacts DirectTransient::facts() const {
+  TransientFacts f;
+  f.explicitScheme = s_.explicitScheme;
+  f.schemeName = s_.scheme.name();
+  f.schemeDescription = s_.scheme.describe();
+  f.timeStep = s_.time.timeStep, f.startTime = s_.time.startTime, f.endTime = s_.time.endTime;
+  f.rayleighK = s_.rayleighK, f.rayleighM = s_.rayleighM;
+  f.solverChoice = b_->solverChoice;
+  if (const ExplicitPlan* plan = b_->explicitPlan.get()) {
+    f.substeps = plan->substeps, f.criticalStep = plan->criticalStep, f.bound = plan->bound;
+    f.stabilityWarning = plan->stabilityWarning;
   }
-}
-
-void DirectTransient::summarizeCounts(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
-                                      double timeReached) const {
-  s.set("scheme", s_.explicitScheme ? std::string("central differences") : s_.scheme.name());
-  s.set("time_step", s_.time.timeStep);
-  s.set("end_time", s_.time.endTime);
-  s.set("steps", sum.steps);
-  s.set("smallest_step", sum.smallestStep);
-  s.set("time_reached", timeReached);
-  if (s_.explicitScheme) {
-    s.set("substeps_per_step", b_->explicitPlan->substeps);  // at the start
-    s.set("substep", s_.time.timeStep / b_->explicitPlan->substeps);
-    s.set("substeps_taken", sum.substeps);  // in all: the deformed mesh's estimates may change the count
-    s.set("substeps_largest", sum.maxSubsteps);
-    s.set("critical_step", b_->explicitPlan->criticalStep);
-    s.set("frequency_bound/omega_max", b_->explicitPlan->bound.omegaMax);
-    s.set("frequency_bound/element", b_->explicitPlan->bound.element);
-    s.set("frequency_bound/gershgorin", b_->explicitPlan->bound.gershgorin);
-  } else {
-    s.set("newton/iterations", sum.newtonIterations);
-    s.set("newton/max_per_step", sum.maxNewtonPerStep);
-    s.set("newton/backtracks", sum.backtracks);
-    s.set("active_set_passes", sum.activeSetIterations);
-    s.set("failed_attempts", sum.failedSteps);
-    s.set("factorizations", figures_.refactorizations);
-    s.set("kept_factorizations", figures_.keptFactorizations);
-    s.set("krylov_iterations", sum.krylovIterations);
-    s.set("linear_solver/description", op.solver().description());
-    s.set("linear_solver/choice", b_->solverChoice);
-  }
-  if (b_->contact) {
-    s.set("contact/method", s_.contact.methodName());
-    s.set("contact/constraints", b_->contact->numConstraints());
-  }
-}
-
-namespace {
-
-// " (+ n contact pressures[, how they leave the Newton system])", or "" without multipliers.
-std::string pressuresClause(const ContactManager* contact, const StructuralOperator& op) {
-  if (!contact || !contact->method().hasMultipliers()) return "";
-  const char* how = op.condensedContact()   ? ", condensed out of the Newton system node by node"
-                    : op.projectedContact() ? ", projected out of the Newton system (C^T du = t by P = I - C (C^T C)^-1 C^T)"
-                                            : "";
-  return " (+ " + std::to_string(contact->numConstraints()) + " contact pressures" + how + ")";
-}
-
-}  // namespace
-
-void DirectTransient::describe(Model& model, const StructuralOperator& op) const {
-  const ContactManager* contact = b_->contact.get();
-  log() << "  " << model.dofs().numGlobal() << " unknowns" << pressuresClause(contact, op)
-        << "; " << (s_.explicitScheme ? std::string("central differences (explicit, lumped mass)")
-                                         : s_.scheme.describe())
-        << "\n";
-  if (s_.explicitScheme)
-    log() << format("  critical step %.4e s (highest frequency at most %.4e rad/s: mesh, penalty contact, "
-                    "links; element bound %.4e, Gershgorin's %.4e); dt = %.4e s: %d sub-step(s) per "
-                    "step\n",
-                    b_->explicitPlan->criticalStep, b_->explicitPlan->bound.omegaMax, b_->explicitPlan->bound.element, b_->explicitPlan->bound.gershgorin,
-                    s_.time.timeStep, b_->explicitPlan->substeps);
-  if (b_->explicitPlan && !b_->explicitPlan->stabilityWarning.empty())
-    log() << "  warning: " << b_->explicitPlan->stabilityWarning << "\n";
-  log() << "  dt = " << s_.time.timeStep << " s"
-        << (s_.time.startTime != 0 ? " from " + shortNumber(s_.time.startTime) + " s" : std::string()) << " to "
-        << s_.time.endTime << " s; Rayleigh C = "
-        << s_.rayleighK << " K + " << s_.rayleighM << " M; "
-        << (s_.explicitScheme ? std::string("no linear solve") : "linear solver " + op.solver().description())
-        << (s_.explicitScheme || b_->solverChoice.empty() ? std::string() : " (" + b_->solverChoice + ")")
-        << "\n";
-  if (b_->masslessNodes > 0) {
-    // 1^T M 1 over the free DOFs (the mass summed over the free directions), before and after.
-    Vector one(model.map()), y(model.map());
-    one.putScalar(1.0);
-    model.mass()->apply(one, y);
-    const double before = one.dot(y);
-    b_->M->apply(one, y);
-    log() << format("  contact mass: redistributed: %lld contact-surface nodes massless (%lld DOFs); "
-                    "1^T M 1 over the free DOFs (the mass once per free direction: 3 x the mass in "
-                    "3D with every direction free) %.12g -> %.12g kg\n",
-                    b_->masslessNodes, op.masslessDofs(), before, one.dot(y));
-  }
-  if (!b_->massFallback.empty())
-    log() << "  contact mass: standard ('auto' could not redistribute it: " << b_->massFallback << ")\n";
-  if (contact) {
-    log() << "  contact: " << contact->method().name() << ", " << contact->numConstraints()
-          << " slave nodes paired";
-    if (contact->unpairedNodes() > 0) log() << " (" << contact->unpairedNodes() << " unpaired)";
-    if (contact->hasFriction())
-      log() << format("; Coulomb friction, stick stiffness k_t = %.4g N/m per node%s",
-                      contact->tangentialStiffness(),
-                      s_.contact.tangentialStiffness > 0 ? "" : " (the stiffest node's mean diagonal of K)");
-    log() << "\n";
-  }
-  if (b_->links) {
-    log() << "  shock links (penalty law, tangent by central differences):";
-    for (const ShockLink& l : b_->links->links())
-      log() << " " << l.name << " (node " << l.node1 + 1
-            << (l.node2 >= 0 ? " to node " + std::to_string(l.node2 + 1) : std::string(" to a fixed obstacle"))
-            << ")";
-    log() << "\n";
-  }
-}
-
-void DirectTransient::recordFigures(const TransientSummary& sum, const StructuralOperator& op,
-                                      const Teuchos::StackedTimer& timer,
-                                      std::chrono::steady_clock::time_point start) {
-  figures_.steps = sum.steps;
-  figures_.newtonIterations = sum.newtonIterations;
-  figures_.refactorizations = op.factorizations();
-  figures_.keptFactorizations = op.keptFactorizations();
-  figures_.activeSetIterations = sum.activeSetIterations;
-  figures_.maxNewtonPerStep = sum.maxNewtonPerStep;
-  figures_.failedSteps = sum.failedSteps;
-  figures_.unknowns = op.unknowns();
-  auto& t = const_cast<Teuchos::StackedTimer&>(timer);  // accumulatedTime is not const
-  figures_.assembly = t.accumulatedTime("Transient: assembly");
-  figures_.linearSolve = t.accumulatedTime("Transient: linear solve");
-  figures_.contact = t.accumulatedTime("Transient: contact");
-  figures_.output = t.accumulatedTime("Transient: output");
-  figures_.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-void DirectTransient::logFigures(const TransientSummary& sum, const Model& model,
-                                   Teuchos::StackedTimer& timer) const {
-  const Figures& f = figures_;
-  if (s_.explicitScheme && sum.maxSubsteps > b_->explicitPlan->substeps)
-    log() << format("  %d steps, %lld sub-steps in all (%d per step at the start, up to %d on the deformed "
-                    "mesh; the smallest %.3e s), no linear solve\n",
-                    sum.steps, sum.substeps, b_->explicitPlan->substeps, sum.maxSubsteps, sum.smallestStep);
-  else if (s_.explicitScheme) {
-    const double each = s_.time.timeStep / b_->explicitPlan->substeps;  // the last step may be cut to End Time
-    const std::string last = sum.smallestStep < each * (1 - 1e-9)
-                                 ? format("; the last step's %.3e s", sum.smallestStep) : std::string();
-    log() << format("  %d steps of %d sub-step(s) (%.3e s each%s), no linear solve\n", sum.steps,
-                    b_->explicitPlan->substeps, each, last.c_str());
-  }
-  else
-    log() << format("  %d steps, %d Newton iterations (%.2f per step, at most %d), %d active-set "
-                    "passes, %d factorisations%s, %d failed attempts (smallest dt %.3e s)\n",
-                    sum.steps, sum.newtonIterations, double(sum.newtonIterations) / std::max(1, sum.steps),
-                    sum.maxNewtonPerStep, sum.activeSetIterations, f.refactorizations,
-                    f.keptFactorizations > 0
-                        ? format(" (%d changes of contact status solved on the factorisation kept, see "
-                                 "Update Budget)", f.keptFactorizations).c_str()
-                        : "",
-                    sum.failedSteps, sum.smallestStep);
-  if (sum.backtracks > 0)
-    log() << format("  %d Newton correction(s) halved because they inverted an element\n", sum.backtracks);
-  if (b_->links && b_->links->dashpotDrops() > 0)
-    log() << format("  shock links: a dashpot was dropped in %lld step(s): closing while approaching, the "
-                    "law's force jumps and the step had no solution with it\n",
-                    b_->links->dashpotDrops());
-  if (sum.krylovIterations > 0)
-    log() << format("  Krylov iterations: %d (%.1f per step, %.1f per Newton solve)\n",
-                    sum.krylovIterations, double(sum.krylovIterations) / std::max(1, sum.steps),
-                    double(sum.krylovIterations) / std::max(1, sum.newtonIterations));
-  log() << format("  time: %.3f s = assembly %.3f + linear solve %.3f + contact %.3f + output %.3f "
-                  "+ other (rank 0)\n",
-                  f.wall, f.assembly, f.linearSolve, f.contact, f.output);
-  std::ostringstream rep;
-  Teuchos::StackedTimer::OutputOptions opt;
-  opt.output_minmax = model.comm()->getSize() > 1;
-  opt.output_fraction = true;
-  opt.print_warnings = false;
-  timer.report(rep, model.comm(), opt);
-  log() << rep.str();
+  f.contactMethod = s_.contact.methodName();
+  f.givenTangentialStiffness = s_.contact.tangentialStiffness > 0;
+  f.masslessNodes = b_->masslessNodes;
+  f.massFallback = b_->massFallback;
+  return f;
 }
 
 }  // namespace choc

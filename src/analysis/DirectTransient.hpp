@@ -17,6 +17,7 @@
 #include "contact/ContactParameters.hpp"
 #include "observers/Probes.hpp"
 #include "observers/TransientOutputs.hpp"
+#include "observers/TransientReport.hpp"
 #include "physics/InitialConditions.hpp"
 #include "physics/CriticalStep.hpp"
 #include "physics/DirectLinks.hpp"
@@ -40,12 +41,7 @@ class DirectTransient : public Analysis {
   void run(RunContext& ctx) override;
 
   // Figures of the last run (for tests and the benchmark).
-  struct Figures {
-    int steps = 0, newtonIterations = 0, refactorizations = 0, activeSetIterations = 0;
-    int keptFactorizations = 0;  // changes of contact status solved on the previous factorisation
-    int maxNewtonPerStep = 0, failedSteps = 0, unknowns = 0;
-    double wall = 0, assembly = 0, linearSolve = 0, contact = 0, output = 0;
-  };
+  using Figures = TransientFigures;
   const Figures& figures() const { return figures_; }
 
  private:
@@ -80,29 +76,18 @@ class DirectTransient : public Analysis {
   };
   void readScheme();
   void readTimeSettings();
-  std::shared_ptr<const Loads> assembleLoads(Model& model) const;
-  std::shared_ptr<const FollowerPressure> followerPressure(Model& model, const std::string& name,
-                                                           std::vector<Face> faces, const PressureField& field) const;
   void buildContact(Model& model);
   void buildSolver(const Model& model);
   void setupExplicit(const Model& model);
   std::shared_ptr<InternalForce> internalForce(Model& model) const;
   std::unique_ptr<StructuralStepper> stepper(StructuralOperator& op) const;
-  void describe(Model& model, const StructuralOperator& op) const;
-  void recordFigures(const TransientSummary& sum, const StructuralOperator& op,
-                     const Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start);
-  void logFigures(const TransientSummary& sum, const Model& model, Teuchos::StackedTimer& timer) const;
-  void reportRun(RunContext& ctx, const TransientSummary& sum, const StructuralOperator& op,
-              Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start,
-              const HistoryObserver& history);
-  void summarize(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
-                 const Comm& comm) const;
+  void reportRun(RunContext& ctx, const TransientSummary& sum, TransientReport& report,
+                 Teuchos::StackedTimer& timer, std::chrono::steady_clock::time_point start,
+                 const HistoryObserver& history);
+  TransientFacts facts() const;
   void configure(StructuralOperator& op, Model& model) const;
   static void continueView(DirectStepView& view, const StateArchive& resume, const StateVectors& vectors,
                            const Model& model);
-  // summarize's figures that need no collective call: a run that stopped writes them too.
-  void summarizeCounts(RunSummary& s, const TransientSummary& sum, const StructuralOperator& op,
-                       double timeReached) const;
 
   Settings s_;
   std::unique_ptr<Built> b_;

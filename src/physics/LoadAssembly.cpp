@@ -1,0 +1,93 @@
+// The loads of a transient from its input (Analyses/<name>/Nodal Forces and Pressures), each a
+// load group of Loads.hpp.
+#include "physics/LoadAssembly.hpp"
+
+#include <Tpetra_Vector.hpp>
+
+#include "core/Errors.hpp"
+#include "fem/Components.hpp"
+#include "input/Vector3.hpp"
+
+namespace choc {
+
+namespace {
+
+// The follower pressure `name` (Pressures/<name>, Follower = true) on its faces: finite-strain
+// blocks under every face, or an input error.
+std::shared_ptr<const FollowerPressure> followerPressure(Model& model, const Teuchos::ParameterList& q,
+                                                         std::vector<Face> faces, const PressureField& field,
+                                                         const std::string& inputFile, const std::string& key) {
+  const std::string name = key.substr(key.rfind('/') + 1);
+  const std::string side = q.get<std::string>("Side Set");
+  if (model.firstFiniteStrainBlock().empty())
+    throwInput(inputFile, key + "/Follower", "true",
+               "a follower pressure makes the model nonlinear and needs a block with Strain = finite",
+               "set Strain = finite on the loaded block, or Follower = false (a dead load on the reference faces)");
+  for (int e : model.mesh().findSideSet(side)->elements) {  // facesOf found the set
+    const int b = model.mesh().locateElement(e).first;
+    const auto& kernel = model.finiteStrainKernels()[size_t(b)];
+    if (!kernel || !kernel->finiteKinematics())
+      throwInput(inputFile, key + "/Side Set", side,
+                 "has faces of block '" + model.mesh().blocks[size_t(b)].name +
+                     "', whose Strain is small: a follower pressure loads finite-strain blocks",
+                 "set Strain = finite on that block, or Follower = false");
+  }
+  const int components = static_cast<int>(spatialComponents(model.mesh().dimension).size());
+  return std::make_shared<FollowerPressure>(name, std::move(faces), field, q.get<double>("Ramp Time"),
+                                            model.kinematics() == Kinematics::Axisymmetric, model.dofs(),
+                                            components, *model.stiffness());
+}
+
+}  // namespace
+
+// Nodal forces and pressures, each a load group (null when there are none).
+std::shared_ptr<const Loads> assembleLoads(Model& model, const Teuchos::ParameterList& analysis,
+                                           const std::string& inputFile, const std::string& analysisPath) {
+  const auto path = [&](const std::string& key) { return analysisPath + "/" + key; };
+  auto loads = std::make_shared<Loads>();
+  const Teuchos::ParameterList& nf = analysis.sublist("Nodal Forces");
+  for (auto it = nf.begin(); it != nf.end(); ++it) {
+    const Teuchos::ParameterList& f = nf.sublist(nf.name(it));
+    const NodeSet& ns = model.nodeSet(f.get<std::string>("Node Set"), path("Nodal Forces/" + nf.name(it) + "/Node Set"));
+    const int comp = componentFromName(f.get<std::string>("Component"));
+    auto force = rcp(new Vector(model.map()));
+    for (int n : ns.nodes) {
+      const long long d = model.dof(n, comp);
+      if (d >= 0 && model.dofs().ownsNode(n)) force->sumIntoGlobalValue(GO(d), f.get<double>("Value"));
+    }
+    loads->add({nf.name(it), force, f.get<double>("Ramp Time")});
+  }
+  const Teuchos::ParameterList& pr = analysis.sublist("Pressures");
+  for (auto it = pr.begin(); it != pr.end(); ++it) {
+    const Teuchos::ParameterList& q = pr.sublist(pr.name(it));
+    const std::string side = q.get<std::string>("Side Set");
+    std::vector<Face> faces;
+    try {
+      faces = facesOf(model.mesh(), side);
+    } catch (const std::invalid_argument& e) {
+      throwInput(inputFile, path("Pressures/" + pr.name(it) + "/Side Set"), side, e.what());
+    }
+    const std::string key = path("Pressures/" + pr.name(it));
+    PressureField field;
+    field.value = q.get<double>("Value");
+    field.gradient = parseVector3(q.get<std::string>("Gradient"), inputFile, key + "/Gradient");
+    if (q.get<bool>("Follower")) {
+      loads->addFollower(followerPressure(model, q, std::move(faces), field, inputFile, key));
+      continue;
+    }
+    auto force = rcp(new Vector(model.map()));
+    const auto nodal = pressureForces(faces, field, model.kinematics() == Kinematics::Axisymmetric);
+    for (const auto& [n, fn] : nodal) {
+      if (!model.dofs().ownsNode(n)) continue;
+      for (int c = 0; c < 3; ++c) {
+        const long long d = model.dof(n, c);
+        if (d >= 0 && fn[c] != 0.0) force->sumIntoGlobalValue(GO(d), fn[c]);
+      }
+    }
+    loads->add({pr.name(it), force, q.get<double>("Ramp Time")});
+  }
+  if (loads->empty()) return nullptr;
+  return loads;
+}
+
+}  // namespace choc
