@@ -19,9 +19,20 @@
 
 namespace choc {
 
+namespace {
+
+std::vector<std::string> blockNamesOf(const Mesh& mesh) {
+  std::vector<std::string> names;
+  for (const auto& b : mesh.blocks) names.push_back(b.name);
+  return names;
+}
+
+}  // namespace
+
 FiniteStrainForce::FiniteStrainForce(Model& model)
     : K0_(model.stiffness()),
       Klin_(model.smallStrainStiffness()),
+      states_(model.stiffness()->getComm(), blockNamesOf(model.mesh())),
       hourglass_(model.hasOnePointBlocks()),
       linearPart_(anyNonzero(*Klin_)) {
   KT_ = rcp(new CrsMatrix(K0_->getCrsGraph()));
@@ -29,7 +40,7 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
   // The force's scratch vectors, made once: u on the column map, K_lin u, the u of the last force.
   if (!importer_.is_null()) uCol_ = rcp(new Vector(K0_->getColMap()));
   tmp_ = rcp(new Vector(K0_->getRowMap()));
-  forceAt_ = rcp(new Vector(K0_->getRowMap()));
+  lastForce_.u = rcp(new Vector(K0_->getRowMap()));
   const Map& rows = *K0_->getRowMap();
   const Map& cols = *K0_->getColMap();
   const Mesh& mesh = model.mesh();
@@ -66,13 +77,10 @@ FiniteStrainForce::FiniteStrainForce(Model& model)
     el.geometry = el.kernel->geometry(X);
     el.roundoff = forceRoundoff(*el.kernel, el.geometry);
     for (int i = 0; i < M.rows(); ++i) el.lumpedMass.push_back(M(i, i));
-    el.state = committed_.size();
-    committed_.resize(committed_.size() + size_t(el.kernel->stateSize()));
-    el.kernel->initialState(committed_.data() + el.state);
+    el.state = states_.add(*el.kernel, ge, b, el.owner);
     elements_.push_back(std::move(el));
   }
-  trial_ = committed_;
-  layoutArchive(mesh, kernels);
+  states_.layout(mesh, kernels);
   layoutFields(kernels);
   packElements();
 }
@@ -131,129 +139,6 @@ std::vector<double> FiniteStrainForce::forceRoundoff(const FiniteStrainSolid& ke
   return r;
 }
 
-// Every element's plastic state's offset in the archive's global array (element order).
-void FiniteStrainForce::layoutArchive(const Mesh& mesh,
-                                      const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels) {
-  globalState_.assign(size_t(numElements_), size_t(-1));
-  for (int ge = 0; ge < numElements_; ++ge) {
-    const auto [b, e] = mesh.locateElement(ge);
-    const int n = kernels[size_t(b)] ? kernels[size_t(b)]->stateSize() : 0;
-    if (n == 0) continue;
-    plastic_ = true;
-    thermal_ = thermal_ || kernels[size_t(b)]->thermal();
-    damage_ = damage_ || kernels[size_t(b)]->damaged();
-    globalState_[size_t(ge)] = globalStateSize_;
-    globalStateSize_ += size_t(n);
-  }
-}
-
-void FiniteStrainForce::commit() {
-  if (!plastic_ || !trialValid_) return;
-  committed_.swap(trial_);  // the force wrote every element's trial state: no copy needed
-  committedTime_ = trialTime_;
-  double work = 0.0;
-  Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_SUM, trialWork_, Teuchos::outArg(work));
-  plasticWork_ += work;
-  trialValid_ = false;
-  if (damage_ && !failurePredicted_) reportPredictedFailure();
-  if (thermal_ && !meltingReported_) reportMelting();
-}
-
-std::pair<long, int> FiniteStrainForce::committedMelting() const {
-  long mine = 0, count = 0;
-  int firstMine = std::numeric_limits<int>::max(), first = firstMine;
-  for (const Element& e : elements_) {
-    if (!e.owner) continue;
-    const int n = e.kernel->pointsAtMelting(committed_.data() + e.state);
-    mine += n;
-    if (n > 0) firstMine = std::min(firstMine, e.number);
-  }
-  const Comm& comm = *K0_->getComm();
-  Teuchos::reduceAll<int, long>(comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(count));
-  Teuchos::reduceAll<int, int>(comm, Teuchos::REDUCE_MIN, firstMine, Teuchos::outArg(first));
-  return {count, count > 0 ? first : -1};
-}
-
-// The first committed state in which Johnson-Cook points reach their melting temperature (the flow
-// stress is zero there: the metal flows as a liquid would without a viscosity): one line on the
-// log with the count of such points, the first element and the time.
-void FiniteStrainForce::reportMelting() {
-  const auto [count, first] = committedMelting();
-  if (count == 0) return;
-  meltingReported_ = true;
-  std::string line;
-  for (const Element& e : elements_)
-    if (e.owner && e.number == first)
-      line = format("warning: %ld Johnson-Cook point(s) reached the melting temperature at t = %.6g s, the first in ",
-                    count, committedTime_) +
-             describe(e, "their flow stress is below 1 % of the cold one (1 - T*^m <= 0.01): the solid model holds "
-                         "below melting");
-  line = collectiveFailure(*K0_->getComm(), line);
-  if (isRootRank()) log() << line << "\n";
-}
-
-// The first committed state in which a point's damage reaches 1: one line on the log naming the
-// element (the lowest-numbered among those whose largest point damage is the largest of all).
-void FiniteStrainForce::reportPredictedFailure() {
-  const double largest = largestCommittedDamage();
-  if (!(largest >= 1.0)) return;
-  failurePredicted_ = true;
-  const Comm& comm = *K0_->getComm();
-  int first = std::numeric_limits<int>::max(), mine = first;
-  for (const Element& e : elements_)
-    if (e.owner && e.kernel->largestDamage(committed_.data() + e.state) == largest) mine = std::min(mine, e.number);
-  Teuchos::reduceAll<int, int>(comm, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(first));
-  std::string line;
-  for (const Element& e : elements_)
-    if (e.owner && e.number == first)
-      line = format("damage: Johnson-Cook's D reached %.4g at t = %.6g s in ", largest, committedTime_) +
-             describe(e, "failure predicted there (reported only: no softening, no erosion)");
-  line = collectiveFailure(comm, line);
-  if (isRootRank()) log() << line << "\n";
-}
-
-// The largest point damage of the committed states over every rank (collective).
-double FiniteStrainForce::largestCommittedDamage() const {
-  double local = 0.0, largest = 0.0;
-  for (const Element& e : elements_)
-    if (e.owner) local = std::max(local, e.kernel->largestDamage(committed_.data() + e.state));
-  Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_MAX, local, Teuchos::outArg(largest));
-  return largest;
-}
-
-// Each element's committed state by its owner, summed over the ranks into one array in global
-// element order.
-void FiniteStrainForce::archive(StateArchive& a) const {
-  if (!plastic_) return;
-  std::vector<double> local(globalStateSize_, 0.0), global(globalStateSize_, 0.0);
-  for (const Element& e : elements_) {
-    if (!e.owner) continue;
-    const size_t n = size_t(e.kernel->stateSize());
-    std::copy_n(committed_.begin() + long(e.state), n, local.begin() + long(globalState_[size_t(e.number)]));
-  }
-  if (!local.empty())
-    Teuchos::reduceAll<int, double>(*K0_->getComm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(),
-                                    global.data());
-  a.putVector("internal/plasticState", global);
-  a.putDouble("internal/plasticWork", plasticWork_);
-  a.putDouble("internal/plasticTime", committedTime_);
-}
-
-void FiniteStrainForce::restore(const StateArchive& a) {
-  if (!plastic_) return;
-  const std::vector<double> global = a.getVector<double>("internal/plasticState", globalStateSize_);
-  for (const Element& e : elements_)
-    std::copy_n(global.begin() + long(globalState_[size_t(e.number)]), size_t(e.kernel->stateSize()),
-                committed_.begin() + long(e.state));
-  plasticWork_ = a.getDouble("internal/plasticWork");
-  committedTime_ = a.getDouble("internal/plasticTime");
-  // A failure the run before the checkpoint logged is not logged again.
-  failurePredicted_ = damage_ && largestCommittedDamage() >= 1.0;
-  meltingReported_ = thermal_ && committedMelting().first > 0;
-  timeKnown_ = true;
-  trialValid_ = false;
-}
-
 const Vector& FiniteStrainForce::onColumns(const Vector& u) const {
   if (importer_.is_null()) return u;
   uCol_->doImport(u, *importer_, Tpetra::INSERT);
@@ -303,8 +188,8 @@ void FiniteStrainForce::prefetch(const Element& e, bool trial) const {
   prefetchVector(e.row);
   const size_t n = size_t(e.kernel->stateSize()) * sizeof(double);
   if (n == 0) return;
-  prefetchBytes(committed_.data() + e.state, n, false);
-  if (trial) prefetchBytes(trial_.data() + e.state, n, true);
+  prefetchBytes(states_.committed() + e.state, n, false);
+  if (trial) prefetchBytes(states_.trial() + e.state, n, true);
 }
 
 template <class Visit>
@@ -313,14 +198,14 @@ std::string FiniteStrainForce::forEachElement(const Vector& uCol, bool withTange
   auto data = uCol.getData();
   std::vector<double> ue, fe;
   DenseMatrix Ke;
-  const double dt = time_ - committedTime_;
+  const double dt = time_ - states_.committedTime();
   for (size_t k = 0; k < elements_.size(); ++k) {
     const Element& e = elements_[k];
     if (k + 1 < elements_.size()) prefetch(elements_[k + 1], trial != nullptr);
     gather(e, data, ue);
     double energy = 0.0, work = 0.0, hourglass = 0.0;
     try {
-      energy = e.kernel->evaluate(e.geometry, ue, fe, withTangent ? &Ke : nullptr, committed_.data() + e.state,
+      energy = e.kernel->evaluate(e.geometry, ue, fe, withTangent ? &Ke : nullptr, states_.committed() + e.state,
                                   trial ? trial->state + e.state : nullptr, &work, elasticTangent, dt, &hourglass);
       if (trial && e.owner) trial->work += work, trial->hourglass += hourglass;
     } catch (const InvertedElement& err) {
@@ -348,7 +233,7 @@ void FiniteStrainForce::internalForce(const Vector& u, Vector& out) {
     out.putScalar(0.0);
   auto o = out.getDataNonConst();
   double energy = 0.0;
-  TrialPass pass{trial_.data()};
+  TrialPass pass{states_.trial()};
   const Vector& uc = onColumns(u);
   for (const auto& p : followers_) p->subtractForce(uc.getData(), time_, o);
   const std::string failure = forEachElement(uc, false, [&](const Element& e, const std::vector<double>& f,
@@ -357,13 +242,12 @@ void FiniteStrainForce::internalForce(const Vector& u, Vector& out) {
       if (e.row[k] >= 0) o[e.row[k]] += f[k];
     if (e.owner) energy += w;
   }, &pass);
-  trialWork_ = pass.work, trialHourglass_ = pass.hourglass, trialTime_ = time_;
-  trialValid_ = failure.empty();
+  states_.trialWritten(failure.empty(), time_, pass.work);
   throwIfFailed(failure);
-  forceAt_->assign(u);
-  forceAtValid_ = true;
-  forceAtEnergy_ = energy;
-  forceAtHourglass_ = trialHourglass_;
+  lastForce_.u->assign(u);
+  lastForce_.valid = true;
+  lastForce_.energy = energy;
+  lastForce_.hourglass = pass.hourglass;
 }
 
 RCP<const CrsMatrix> FiniteStrainForce::tangent(const Vector& u) {
@@ -409,8 +293,8 @@ double FiniteStrainForce::strainEnergy(const Vector& u, const Vector* /*internal
     linear = 0.5 * u.dot(*tmp_);
   }
   double local = 0.0;
-  if (forceAtValid_ && sameState(forceAt_, u)) {
-    local = forceAtEnergy_;
+  if (lastForce_.valid && sameState(lastForce_.u, u)) {
+    local = lastForce_.energy;
   } else {
     const std::string failure = forEachElement(onColumns(u), false, [&](const Element& e, const std::vector<double>&,
                                                                         const DenseMatrix&, double energy) {
@@ -426,8 +310,8 @@ double FiniteStrainForce::strainEnergy(const Vector& u, const Vector* /*internal
 double FiniteStrainForce::hourglassEnergy(const Vector& u) const {
   if (!hourglass_) return 0.0;  // the same on every rank (the model's blocks)
   double local = 0.0, global = 0.0;
-  if (forceAtValid_ && sameState(forceAt_, u)) {  // the internal force at u summed it already
-    local = forceAtHourglass_;
+  if (lastForce_.valid && sameState(lastForce_.u, u)) {  // the internal force at u summed it already
+    local = lastForce_.hourglass;
   } else {
     auto data = onColumns(u).getData();
     std::vector<double> ue;
@@ -501,7 +385,7 @@ void FiniteStrainForce::elementFields(const Vector& u, std::vector<std::vector<d
     if (!e.owner) continue;
     gather(e, data, ue);
     try {
-      e.kernel->averageStress(e.geometry, ue, sigma, w, committed_.data() + e.state, &fields);
+      e.kernel->averageStress(e.geometry, ue, sigma, w, states_.committed() + e.state, &fields);
     } catch (const InvertedElement& err) {
       failure = describe(e, err.what());
       break;

@@ -11,14 +11,9 @@
 // its nodes (the Assembler's elements) and sums their rows it owns in global element order.
 // Rayleigh damping's stiffness is the model's K at u = 0. An element that inverts (det F <= 0)
 // on any rank throws InadmissibleState on every rank, naming the element, its block and det F.
-// Hyperelastic blocks carry no history. Plastic blocks (J2 plasticity, small or finite strain)
-// keep kJ2StateSize numbers per quadrature point, in two copies: every evaluation starts from
-// the committed copy (the state at the last accepted step), and internalForce writes the
-// trial copy, the state at its u. commit() makes the trial of the LAST internalForce call the
-// committed state (the steppers call it right after the force at the accepted u), revert()
-// drops it. The plastic work of the committed increments is summed in dissipatedWork(); the
-// committed states and that work are in the checkpoint, stored by global element number, so a
-// run restarts on any number of ranks.
+// The material points' states (a plastic law's, per quadrature point) are MaterialStates.hpp's:
+// every evaluation starts from the committed copy, internalForce writes the trial (its u's),
+// commit() and revert() follow the steps, checkpoints store them by global element number.
 // Follower pressures (FollowerPressure.hpp), loads that depend on the state, are carried here
 // too: f_int(u) - f_p(u, t) and K_T + K_p(u, t), at the time setTime last gave.
 #pragma once
@@ -34,6 +29,7 @@
 #include "fem/FiniteStrainSolid.hpp"
 #include "physics/FollowerPressure.hpp"
 #include "physics/InternalForce.hpp"
+#include "physics/MaterialStates.hpp"
 
 namespace choc {
 
@@ -52,7 +48,7 @@ class FiniteStrainForce : public InternalForce {
   // The time of the next evaluations; the first one given is the committed state's (the start).
   void setTime(double t) override {
     time_ = t;
-    if (!timeKnown_) committedTime_ = t, timeKnown_ = true;
+    states_.startAt(t);
   }
   void addFollowerPressure(std::shared_ptr<const FollowerPressure> p) { followers_.push_back(std::move(p)); }
   // 1/2 u.K_lin u + the elements' int W dV (each element counted on the rank owning its first node).
@@ -63,14 +59,14 @@ class FiniteStrainForce : public InternalForce {
   // max over the finite-strain elements of lambda_max(K_e(u), M_e), M_e the block's lumped mass;
   // plastic points with their elastic tangent (an unloading point is the stiffest).
   double stateEigenvalueBound(const Vector& u) const override;
-  double dissipatedWork() const override { return plasticWork_; }
+  double dissipatedWork() const override { return states_.dissipatedWork(); }
   double hourglassEnergy(const Vector& u) const override;
   ElementValidity validity(const Vector& u) const override;  // FiniteStrainValidity.cpp
-  bool hasReturnMap() const override { return plastic_; }
-  void commit() override;
-  void revert() override { trialValid_ = false; }
-  void archive(StateArchive& a) const override;
-  void restore(const StateArchive& a) override;
+  bool hasReturnMap() const override { return states_.any(); }
+  void commit() override { states_.commit(); }
+  void revert() override { states_.revert(); }
+  void archive(StateArchive& a) const override { states_.archive(a); }
+  void restore(const StateArchive& a) override { states_.restore(a); }
 
   // The Cauchy stress averaged over each finite-strain element (FiniteStrainSolid::
   // averageStress) and its strain-energy density: SIGMA_XX, SIGMA_YY, SIGMA_ZZ, SIGMA_XY
@@ -95,7 +91,7 @@ class FiniteStrainForce : public InternalForce {
     std::vector<LO> row;  // local row when this rank owns that DOF (-1: not owned or fixed)
     std::vector<double> lumpedMass;  // the element's lumped mass per DOF (reference configuration)
     std::vector<double> roundoff;    // per DOF: the round-off of its force (termsNorm)
-    size_t state = 0;                // its plastic state's offset in committed_ and trial_
+    size_t state = 0;                // its material state's offset in states_
   };
   // A pass at a trial u: the new states (element offsets into `state`) and the owners' plastic
   // work and hourglass energy (this rank).
@@ -133,40 +129,20 @@ class FiniteStrainForce : public InternalForce {
   bool tangentValid_ = false;  // KT_ holds the complete tangent at tangentAt_
   // The elements' energy (this rank's share) at the u of the last internal force, for the
   // energies of the state a step ended at without a second pass over the elements.
-  RCP<Vector> forceAt_;
-  bool forceAtValid_ = false;
-  double forceAtEnergy_ = 0.0;
-  double forceAtHourglass_ = 0.0;  // the owners' hourglass energy there (this rank)
+  struct LastForce {
+    RCP<Vector> u;           // where it was evaluated
+    bool valid = false;      // once a force was evaluated
+    double energy = 0.0;     // the owners' strain energy there (this rank)
+    double hourglass = 0.0;  // the owners' hourglass energy there (this rank)
+  } lastForce_;
   bool sameState(const RCP<Vector>& at, const Vector& u) const;
   // The plastic states: committed, and the trial of the last internal force (see above).
-  bool plastic_ = false;
-  std::vector<double> committed_;
-  std::vector<double> trial_;
-  bool trialValid_ = false;
-  double trialHourglass_ = 0.0;  // the owners' hourglass energy of the last trial pass (this rank)
-  double trialWork_ = 0.0;       // the owners' plastic work of the trial increment (this rank)
-  double plasticWork_ = 0.0;        // the committed increments' plastic work, all ranks [J]
-  // The time of the committed state and of the trial: the increment's duration for rate-dependent
-  // flow stresses (Johnson-Cook) is time_ - committedTime_.
-  double committedTime_ = 0.0;
-  double trialTime_ = 0.0;
-  bool timeKnown_ = false;
-  bool thermal_ = false;  // a block's flow stress carries a temperature
-  bool damage_ = false;   // a block accumulates Johnson-Cook's damage
-  bool failurePredicted_ = false;  // a point's damage reached 1 (logged once)
-  void reportPredictedFailure();
-  double largestCommittedDamage() const;
-  bool meltingReported_ = false;  // a Johnson-Cook point reached its melting temperature (logged once)
-  void reportMelting();
-  // The committed points at or above their melting temperature, over every rank (collective), and
-  // the lowest-numbered element holding one (-1: none).
-  std::pair<long, int> committedMelting() const;
+  MaterialStates states_;  // the material points' states and their lifecycle
   bool hourglass_ = false;  // a block has one-point elements
   bool linearPart_ = true;  // K_lin has a nonzero value (else its products are skipped)
   static bool anyNonzero(const CrsMatrix& K);
   // Per element DOF: the round-off of its force (termsNorm; see the .cpp).
   static std::vector<double> forceRoundoff(const FiniteStrainSolid& kernel, const ElementGeometry& g);
-  void layoutArchive(const Mesh& mesh, const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels);
   void layoutFields(const std::vector<std::shared_ptr<const FiniteStrainSolid>>& kernels);
   std::vector<std::string> materialFields_;       // the blocks' material fields (elementFieldNames)
   std::vector<std::vector<size_t>> blockFields_;  // per block: its material's fields' places in them
@@ -177,8 +153,6 @@ class FiniteStrainForce : public InternalForce {
   void measureElement(const Element& e, const std::vector<double>& ue, Measure& detF, Measure& strain,
                       Measure& rotation) const;
   std::string describeMeasure(const Measure& m, const std::string& text) const;
-  std::vector<size_t> globalState_;  // per global element: its state's offset in the archive (-1: none)
-  size_t globalStateSize_ = 0;
   RCP<Vector> uCol_, tmp_;  // scratch: u on the column map, K_lin u (made once)
 };
 
