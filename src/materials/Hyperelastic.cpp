@@ -57,12 +57,7 @@ class NeoHookean : public HyperelasticMaterial {
   explicit NeoHookean(Lame l) : l_(l) {}
   const char* name() const override { return "neo-Hookean"; }
   void respond(const Mat3& C, bool withTangent, StressResponse& out) const override {
-    const double detC = determinant(C);
-    if (!(detC > 0)) {
-      std::ostringstream msg;
-      msg << "neo-Hookean material: det C = " << detC << " <= 0 (an inverted or collapsed point)";
-      throw std::domain_error(msg.str());
-    }
+    const double detC = positiveDeterminant(C, "neo-Hookean");
     const double lnJ = 0.5 * std::log(detC);
     const Mat3 Ci = inverse(C, detC);
     for (int i = 0; i < 3; ++i)
@@ -85,6 +80,16 @@ std::shared_ptr<const HyperelasticMaterial> makeHyperelastic(const std::string& 
     return std::make_shared<NeoHookean>(lameConstants(model, youngsModulus, poissonsRatio));
   throw std::invalid_argument("unknown hyperelastic model '" + model +
                               "'; valid: 'Saint Venant-Kirchhoff', 'neo-Hookean'");
+}
+
+double positiveDeterminant(const Mat3& C, const char* law) {
+  const double detC = determinant(C);
+  if (!(detC > 0)) {
+    std::ostringstream msg;
+    msg << law << " material: det C = " << detC << " <= 0 (an inverted or collapsed point)";
+    throw std::domain_error(msg.str());
+  }
+  return detC;
 }
 
 Mat3 cauchyStress(const Mat3& F, const Mat3& S) {

@@ -50,4 +50,8 @@ std::shared_ptr<const HyperelasticMaterial> makeHyperelastic(const std::string& 
 // The cauchy stress sigma = F S F^T / det F.
 Mat3 cauchyStress(const Mat3& F, const Mat3& S);
 
+// det C, or std::domain_error "<law> material: det C = ... <= 0 (an inverted or collapsed point)"
+// for a law whose energy is undefined there.
+double positiveDeterminant(const Mat3& C, const char* law);
+
 }  // namespace choc

@@ -12,7 +12,6 @@
 // uniaxial sigma_11 - sigma_22 = 2 (l^2 - 1/l)(C10 + C01 / l), equibiaxial sigma_11 - sigma_33 =
 // 2 (l^2 - l^-4)(C10 + C01 l^2), simple shear sigma_12 = 2 gamma (C10 + C01).
 #include <cmath>
-#include <sstream>
 
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
@@ -35,12 +34,7 @@ class MooneyRivlin : public HyperelasticMaterial {
   explicit MooneyRivlin(MooneyRivlinConstants c) : c_(c) {}
   const char* name() const override { return "Mooney-Rivlin"; }
   void respond(const Mat3& C, bool withTangent, StressResponse& out) const override {
-    const double detC = determinant(C);
-    if (!(detC > 0)) {
-      std::ostringstream msg;
-      msg << "Mooney-Rivlin material: det C = " << detC << " <= 0 (an inverted or collapsed point)";
-      throw std::domain_error(msg.str());
-    }
+    const double detC = positiveDeterminant(C, "Mooney-Rivlin");
     const double J = std::sqrt(detC), a = std::pow(J, -2.0 / 3.0), b = a * a;
     const Mat3 Ci = inverse(C, detC), C2 = multiply(C, C);
     const double I1 = trace(C), I2 = 0.5 * (I1 * I1 - trace(C2));
