@@ -162,7 +162,7 @@ void DirectTransient::setup(SetupContext& ctx) {
     const int dimension = int(spatialComponents(model.mesh().dimension).size());
     const double kt = s_.contact.tangentialStiffness > 0 ? s_.contact.tangentialStiffness
                                                           : largestNodalDiagonal(*b_->K, model.dofs(), dimension);
-    b_->contact->setTangentialStiffness(kt);
+    b_->contact->friction()->setTangentialStiffness(kt);
   }
   std::vector<ShockLink> links = readShockLinks(params_, model, "Analyses/" + name_);
   if (!links.empty()) b_->links = std::make_unique<DirectLinks>(std::move(links), model, model.map());

@@ -137,7 +137,8 @@ void ContactManager::followSurfaces(const Vector& u) {
 }
 
 void ContactManager::commitMotion(const Vector& u) {
-  if (friction_) commitFriction(u);
+  if (friction_)
+    friction_->commitMotion([&] { return contactValues(u); }, [&](const std::vector<double>& x) { return gapsAt(x); });
   if (!followed_ || !paired_) return;
   followed_->place(gather(followed_->dofs(), u), false);
   for (size_t s = 0; s < constraints_.size(); ++s) {

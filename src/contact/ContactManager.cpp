@@ -61,6 +61,8 @@ ContactConstraint makeContactConstraint(const Point3& reference, const DofMap& d
   return c;
 }
 
+ContactManager::~ContactManager() = default;
+
 ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const Map> map,
                                const std::vector<PairDefinition>& pairs,
                                std::unique_ptr<ContactMethod> method)
@@ -89,7 +91,9 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
   dofs_ = &dofs;
   if (hasObstacles_) measureSlaveSizes(mesh);
   for (const PairDefinition& pair : pairs_)
-    if (pair.friction > 0 && !friction_) enableFriction();
+    if (pair.friction > 0 && !friction_)
+      friction_ = std::make_unique<CoulombFriction>(
+          CoulombFriction::Geometry{constraints_, pairs_, contactDofs_, dofs, map_, set_, *method_});
   indexTerms();
   buildSlipTerms(dofs);
   set_.status.assign(constraints_.size(), 0);
@@ -117,7 +121,7 @@ void ContactManager::indexTerms() {
                     t.second});
     localTerms_.push_back(lt);
   }
-  indexFriction();
+  if (friction_) friction_->index();
 }
 
 std::vector<double> ContactManager::contactValues(const Vector& u) const {
@@ -192,7 +196,7 @@ double ContactManager::addForces(const Vector& u, Vector& out) const {
       local += r * r;
     }
   }
-  if (friction_) addFrictionForces(x, g, out);
+  if (friction_) friction_->addForces(x, g, out);
   double global = 0.0;
   Teuchos::reduceAll<int, double>(*map_->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
   return std::sqrt(global);
@@ -247,7 +251,7 @@ std::vector<double> ContactManager::slips(const Vector& u, double t) const {
 void ContactManager::beginStep(const Vector& u, double t, double dt) {
   if (followed_) followSurfaces(u);
   if (hasObstacles_) placeObstacles(u, t);
-  if (friction_) beginFrictionStep(u, t, dt);
+  if (friction_) friction_->beginStep(t, dt, [&] { return contactValues(u); });
 }
 
 void ContactManager::placeObstacles(const Vector& u, double t) {
@@ -333,14 +337,14 @@ void ContactManager::archive(StateArchive& a) const {
   set_.archive(a);
   if (followed_) a.putVector("contact/slip", slip_);
   if (followed_) archivePairing(a);
-  archiveFriction(a);
+  if (friction_) friction_->archive(a);
 }
 
 void ContactManager::restore(const StateArchive& a) {
   set_.restore(a, constraints_.size());
   if (followed_) slip_ = a.getVector<double>("contact/slip", constraints_.size());
   if (followed_) restorePairing(a);
-  restoreFriction(a);
+  if (friction_) friction_->restore(a);
   ++set_.version;
   commit();
 }
@@ -368,7 +372,7 @@ double ContactManager::energy(const Vector& u) const {
   const std::vector<double> g = gaps(u);
   double e = 0.0;
   for (size_t s = 0; s < g.size(); ++s) e += method_->energy(g[s], set_.lambda[s], set_.status[s]);
-  return e + stickEnergy();
+  return e + (friction_ ? friction_->stickEnergy() : 0.0);
 }
 
 }  // namespace choc

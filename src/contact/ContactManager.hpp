@@ -18,6 +18,8 @@
 #include "contact/ContactActiveSet.hpp"
 #include "contact/ContactMethod.hpp"
 #include "contact/ContactPairing.hpp"
+#include "contact/CoulombFriction.hpp"
+#include "contact/MatrixEntry.hpp"
 #include "contact/FollowedSurfaces.hpp"
 #include "fem/DofMap.hpp"
 #include "core/TpetraTypes.hpp"
@@ -26,12 +28,6 @@
 #include "restart/StateArchive.hpp"
 
 namespace choc {
-
-// One entry of a tangent added to the effective matrix (global row and column).
-struct MatrixEntry {
-  GO row = 0, col = 0;
-  double value = 0.0;
-};
 
 struct ContactConstraint {
   SlaveProjection geometry;
@@ -126,33 +122,13 @@ class ContactManager {
   static constexpr double kPenetrationWarning = 0.1, kPenetrationLimit = 0.5;
   void checkPenetration(const Vector& u, ElementValidity& v) const;
 
-  // Coulomb friction (pairs with 'Friction Coefficient' mu > 0; contact/ContactFriction.cpp).
-  // Per active slave node, an elastic-plastic tangential law on the step's relative tangential
-  // motion on the current master surface, delta = P (r(u) - r(u_n)) with P = I - n n^T and
-  // r = u_s - sum_i w_i u_i (less the obstacle's motion): the trial force on the slave node
-  // F* = P F_n - k_t delta, kept while |F*| <= mu f_N (stick), returned onto the cone
-  // F = mu f_N F* / |F*| otherwise (slip), f_N the normal force of the current iterate. The
-  // force enters the residual with the normal one (the master nodes take -w_i F); its
-  // consistent tangent (with d f_N / du and d f_N / d lambda: not symmetric while sliding) is
-  // friction().tangent. Stick and slip are decided at every residual evaluation, inside the
-  // Newton loop that also carries the normal multipliers.
+  // Coulomb friction (pairs with 'Friction Coefficient' mu > 0): a layer of its own
+  // (CoulombFriction.hpp) over this manager's constraints; null without friction.
   bool hasFriction() const { return friction_ != nullptr; }
-  void setTangentialStiffness(double kt);  // k_t [N/m] per slave node
-  double tangentialStiffness() const;
-  // Matrix entries of the friction tangent (d residual / d(u, lambda / scale)) at the last
-  // evaluation, on the rows this rank owns; multiplierBase: the global id of constraint 0's
-  // multiplier row (the number of DOFs).
-  std::vector<MatrixEntry> frictionTangent(GO multiplierBase) const;
-  // Per node: 0 no friction force, 1 stick, 2 slip at the last evaluation; then, while a node
-  // slides, the evaluation count (the tangent changes with every iterate).
-  std::vector<char> frictionKey() const;
-  // Accepted state: per node the friction force on the slave node [N] and stick/slip status,
-  // the friction work dissipated since the start [J] and the stick springs' energy [J].
-  const std::vector<Vec3>& frictionForces() const;
-  const std::vector<char>& frictionStatus() const;
-  double frictionDissipation() const;
-  double frictionDissipation(int pair) const;
-  double stickEnergy() const;
+  const CoulombFriction* friction() const { return friction_.get(); }
+  CoulombFriction* friction() { return friction_.get(); }
+  // Work of the pairs' friction dissipated since the start [J] (0 without friction).
+  double frictionDissipation() const { return friction_ ? friction_->dissipation() : 0.0; }
 
   // Forward-increment Lagrange multipliers (explicit central differences, Carpenter, Taylor
   // and Katona 1991): the pressures lambda >= 0 for which the predicted positions uStar +
@@ -162,13 +138,15 @@ class ContactManager {
   // Throws NumericalError when the sweeps do not converge. inverseMass must be the same at
   // every call (its values at the contact DOFs are gathered once per pairing).
   // With friction (pairs with mu > 0): then each active node's tangential force that stops its
-  // relative tangential motion from u to uStar, capped at mu lambda (ForwardIncrementFriction.cpp),
+  // relative tangential motion from u to uStar, capped at mu lambda (CoulombFriction::increment),
   // h the sub-step (uStar is the position at the time of beginStep plus h). useForwardIncrements
   // must have been called: the friction of an explicit run is decided here, not by the implicit
   // law of beginStep and commitMotion.
   void forwardIncrement(const Vector& u, const Vector& uStar, const Vector& inverseMass, double h, double h2,
                         Vector& a);
-  void useForwardIncrements(bool on);
+  void useForwardIncrements(bool on) {
+    if (friction_) friction_->useForwardIncrements(on);
+  }
   void initialize(const Vector& u);          // statuses from the gaps at u, lambda = 0
   StatusUpdate updateStatus(const Vector& u);  // complementarity test, all ranks agree
   void commit();
@@ -201,23 +179,9 @@ class ContactManager {
   std::vector<double> gapsAt(const std::vector<double>& x) const;  // gaps from contactValues
   std::vector<double> gather(const std::vector<GO>& dofs, const Vector& u) const;  // replicated
   void buildSlipTerms(const DofMap& dofs);
-  struct Friction;                     // contact/ContactFriction.cpp
-  std::shared_ptr<Friction> friction_;  // null without friction (shared_ptr: an incomplete type here)
-  void addFrictionForces(const std::vector<double>& x, const std::vector<double>& g, Vector& out) const;
-  void evaluateFriction(const std::vector<double>& x, const std::vector<double>& g) const;
-  void frictionIncrement(const std::vector<double>& x, const std::vector<double>& xStar, double h, double h2,
-                         const Vector& inverseMass, Vector& a);
-  std::vector<Vec3> tangentialForces(const std::vector<Vec3>& predicted, const std::vector<Vec3>& d,
-                                     const std::vector<char>& acts, double h2, double scale) const;
-  Vec3 relativeMotion(int s, const std::vector<double>& x, double t) const;
-  void archiveFriction(StateArchive& a) const;
+  std::unique_ptr<CoulombFriction> friction_;  // null without friction
   void archivePairing(StateArchive& a) const;
   void restorePairing(const StateArchive& a);
-  void restoreFriction(const StateArchive& a);
-  void beginFrictionStep(const Vector& u, double t, double dt);
-  void commitFriction(const Vector& u);
-  void indexFriction();
-  void enableFriction();
   std::vector<GO> slipDofs_;  // every component of the slave and master nodes
   std::vector<std::array<std::vector<std::pair<int, double>>, 3>> slipTerms_;
   std::vector<PairDefinition> pairs_;

@@ -44,9 +44,9 @@ std::vector<double> ContactReport::historyValues() const {
       Vec3 ft{0, 0, 0};
       for (int s = 0; s < contact_.numConstraints(); ++s)
         if (contact_.constraints()[s].geometry.pair == p)
-          for (int d = 0; d < 3; ++d) ft[d] += contact_.frictionForces()[s][d];
+          for (int d = 0; d < 3; ++d) ft[d] += contact_.friction()->forces()[s][d];
       vals.push_back(norm(ft));
-      vals.push_back(contact_.frictionDissipation(p));
+      vals.push_back(contact_.friction()->dissipation(p));
     }
   }
   return vals;
@@ -75,8 +75,8 @@ std::vector<std::vector<double>> ContactReport::nodalFields() const {
   std::vector<double> traction(numNodes_, 0.0);
   for (int s = 0; s < contact_.numConstraints(); ++s) {
     const auto& geo = contact_.constraints()[s].geometry;
-    if (contact_.frictionStatus()[s] == 2) status[geo.slaveNode] = 2.0;  // sliding
-    traction[geo.slaveNode] = geo.area > 0 ? norm(contact_.frictionForces()[s]) / geo.area : 0.0;
+    if (contact_.friction()->status()[s] == 2) status[geo.slaveNode] = 2.0;  // sliding
+    traction[geo.slaveNode] = geo.area > 0 ? norm(contact_.friction()->forces()[s]) / geo.area : 0.0;
   }
   return {force, pressure, gap, status, slip, traction};
 }

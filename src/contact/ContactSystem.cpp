@@ -141,7 +141,7 @@ std::vector<MatrixEntry> ContactSystem::couplingEntries(const std::vector<Matrix
     }
   }
   if (contact_ && contact_->hasFriction())
-    for (const MatrixEntry& e : contact_->frictionTangent(nU)) out.push_back(e);
+    for (const MatrixEntry& e : contact_->friction()->tangent(nU)) out.push_back(e);
   out.insert(out.end(), extra.begin(), extra.end());
   return out;
 }
@@ -202,7 +202,7 @@ std::vector<char> ContactSystem::statusKey() const {
   const int g = contact_->geometryVersion();  // the coefficients of curved obstacles' rows
   const char* b = reinterpret_cast<const char*>(&g);
   key.insert(key.end(), b, b + sizeof g);
-  const std::vector<char> friction = contact_->frictionKey();
+  const std::vector<char> friction = contact_->hasFriction() ? contact_->friction()->key() : std::vector<char>{};
   key.insert(key.end(), friction.begin(), friction.end());
   return key;
 }

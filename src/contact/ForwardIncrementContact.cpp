@@ -47,7 +47,8 @@ void ContactManager::forwardIncrement(const Vector& u, const Vector& uStar, cons
   std::vector<double> corrected = xStar;
   for (size_t s = 0; s < nS; ++s)
     for (const auto& [k, c] : localTerms_[s]) corrected[k] += h2 * inverseMassAtContact_[k] * c * lam[s];
-  frictionIncrement(contactValues(u), corrected, h, h2, inverseMass, a);
+  friction_->increment(contactValues(u), corrected, h, h2, inverseMassAtContact_, inverseMass, a,
+                       [&] { return activeSummary(); });
 }
 
 }  // namespace choc

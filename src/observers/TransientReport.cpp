@@ -118,7 +118,7 @@ void TransientReport::describe(Model& model, const CrsMatrix& runMass) const {
     if (contact->unpairedNodes() > 0) log() << " (" << contact->unpairedNodes() << " unpaired)";
     if (contact->hasFriction())
       log() << format("; Coulomb friction, stick stiffness k_t = %.4g N/m per node%s",
-                      contact->tangentialStiffness(),
+                      contact->friction()->tangentialStiffness(),
                       f_.givenTangentialStiffness ? "" : " (the stiffest node's mean diagonal of K)");
     log() << "\n";
   }

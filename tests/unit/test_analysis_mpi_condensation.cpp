@@ -157,7 +157,7 @@ TEST(MpiContactCondensation, SlidingFrictionGivesTheSaddlePointsCorrectionAndPre
   auto saddle = block.manager(plane, 0.3), condensed = block.manager(plane, 0.3);
   Vector u(model.map()), r(model.map()), du(model.map());
   for (ContactManager* cm : {saddle.get(), condensed.get()}) {
-    cm->setTangentialStiffness(1e12);
+    cm->friction()->setTangentialStiffness(1e12);
     cm->beginStep(u, 1e-6, 1e-6);
     cm->initialize(u);
   }
@@ -177,7 +177,7 @@ TEST(MpiContactCondensation, SlidingFrictionGivesTheSaddlePointsCorrectionAndPre
   saddle->addForces(push, fe);  // evaluates friction at push: sliding
   condensed->addForces(push, fc);
   int sliding = 0;
-  for (char st : saddle->frictionKey()) sliding += st == 2;
+  for (char st : saddle->friction()->key()) sliding += st == 2;
   ASSERT_GT(sliding, 0) << "nodes sliding";
   ext.fill(kAM, kAK);
   con.fill(kAM, kAK);

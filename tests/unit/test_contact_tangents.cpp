@@ -219,7 +219,7 @@ class Scene {
 
   // Per constraint: 0 no friction force, 1 stick, 2 slip at the last evaluation.
   std::vector<int> frictionStatus() const {
-    const std::vector<char> key = contact_->frictionKey();
+    const std::vector<char> key = contact_->friction()->key();
     return std::vector<int>(key.begin(), key.begin() + nS());
   }
 
@@ -373,7 +373,7 @@ void frictionNodeToFace(const std::string& name, double small, double large, boo
   PairDefinition def = pairOf("ifc", "CNT_POU2", "CNT_POU1");
   def.friction = 0.3;
   Scene sc(barScene(), {def}, method(name));
-  sc.contact().setTangentialStiffness(1e9);
+  sc.contact().friction()->setTangentialStiffness(1e9);
   sc.beginStep(std::vector<double>(size_t(sc.nU()), 0.0), 1e-4, 1e-5);
   const std::vector<double> u = pressed(sc, lateralMotion(small, large, kSlaveSpacing));
   sc.initialize(u);
@@ -416,7 +416,7 @@ TEST(ContactTangents, FrictionAgainstObstacles) {
   for (const auto& [what, o] : {std::make_pair("plane", plane), std::make_pair("sphere", sphere)})
     for (const std::string name : {"Penalty", "Lagrange"}) {
       Scene sc(barScene(), {obstaclePair(o, 0.3)}, method(name));
-      sc.contact().setTangentialStiffness(1e9);
+      sc.contact().friction()->setTangentialStiffness(1e9);
       // Bar 2 pushed up by 2.5e-5 (plane: every node in contact; sphere: not the corners),
       // sliding by 5e-5 m or sticking (1e-7 m) on a checkerboard of its 3 x 3 nodes.
       auto state = [&](double scale) {

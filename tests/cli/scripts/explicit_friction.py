@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Coulomb friction in explicit central differences (forward increments, src/contact/
-ForwardIncrementFriction.cpp): the compact block (meshes/compact_block.geo, 4 x 4 x 4 HEX8, a 0.1 m
+CoulombFriction::increment): the compact block (meshes/compact_block.geo, 4 x 4 x 4 HEX8, a 0.1 m
 steel cube of 7.8 kg) resting on a rigid plane, sliding along x at v0 = 1 m/s, pressed by a
 pressure on its upper face ramped to 3.9e5 Pa (N = 3,900 N) over T = 1 ms, mu = 0.2. Its
 deceleration a(t) = A min(t / T, 1), A = mu N / m = 100 m/s2, stops it at t_s = T + v(T) / A =
