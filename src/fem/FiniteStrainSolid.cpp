@@ -214,6 +214,7 @@ FiniteStrainSolid::FiniteStrainSolid(const std::string& topology, Kinematics kin
       hourglass_(formulation.hourglass) {
   checkSolidKinematics(shape_, kin_);
   checkFormulation();
+  fields_ = material_->fieldNames().size();
   rule_ = onePoint_ ? &gaussBoxRule(parametricDimension(shape_), 1) : &stiffnessRule(shape_, kin_);
 }
 
@@ -502,7 +503,7 @@ void FiniteStrainSolid::averageStress(const ElementGeometry& g, const std::vecto
   const double J0 = recorded ? 0.0 : meanDilatation(g, F, B, Finv);
   std::vector<double> virgin;
   if (m.stateSize() > 0 && !old) virgin.resize(size_t(stateSize())), initialState(virgin.data()), old = virgin.data();
-  if (fields) fields->assign(m.fieldNames().size(), 0.0);
+  if (fields) fields->assign(fields_, 0.0);
   sigma.fill(0.0);
   energyDensity = 0.0;
   double volume = 0.0;

@@ -169,6 +169,7 @@ class FiniteStrainSolid {
   SolidShape shape_;
   Kinematics kin_;
   std::shared_ptr<const MaterialPoint> material_;
+  size_t fields_ = 0;  // the material's named fields (fieldNames(), asked once)
   bool fbar_ = false;
   bool onePoint_ = false;
   double hourglass_ = 0.0;

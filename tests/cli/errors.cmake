@@ -335,6 +335,10 @@ choc_cli_input_error(follower_small_block check bad_follower_small_block.xml
   "parameter 'Analyses/push/Pressures/face/Side Set' = 'CNT_POU2': has faces of block 'POU2', whose Strain is small: a follower pressure loads finite-strain blocks. set Strain = finite on that block, or Follower = false")
 choc_cli_input_error(plastic_no_yield check bad_plastic_no_yield.xml
   "parameter 'Model/Materials/steel/Yield Stress': is missing: 'J2 plasticity' needs the initial yield stress. give 'Yield Stress' > 0 .Pa.")
+choc_cli_input_error(mooney_rivlin_no_bulk check bad_mooney_rivlin_no_bulk.xml
+  "parameter 'Model/Materials/rubber/Bulk Modulus': is missing: 'Mooney-Rivlin' needs it. give 'Bulk Modulus' > 0 .Pa.")
+choc_cli_input_error(mooney_rivlin_young check bad_mooney_rivlin_young.xml
+  "parameter 'Model/Materials/rubber/Young's Modulus' = '3e.06': is not a parameter of 'Mooney-Rivlin'. give its own constants: 'Mooney-Rivlin C10', 'Mooney-Rivlin C01' and 'Bulk Modulus'")
 choc_cli_input_error(plastic_hardening check bad_plastic_hardening.xml
   "parameter 'Model/Materials/steel/Hardening Modulus' = '-1e.09': out of range. valid: a number in .0, inf.")
 choc_cli_input_error(flow_curve_softening check bad_flow_curve_softening.xml

@@ -114,6 +114,29 @@ TEST_P(MaterialPoints, TangentIsTheDerivativeOfTheStress) {
   EXPECT_TRUE(test::tangentMismatches(P, test::perturbed(J), kF, options()));
 }
 
+// Objectivity of the finite-strain laws: a rigid rotation Q after F rotates P, P(QF) = Q P(F), and
+// leaves W (from a virgin state: a plastic point's state then depends on F alone). The small-strain
+// laws are not objective (their strain sym(F - I) sees the rotation), and are not held to it.
+class FiniteMaterialPoints : public MaterialPoints {};
+
+TEST_P(FiniteMaterialPoints, ResponseIsObjective) {
+  ASSERT_TRUE(m->finiteStrain());
+  const double c = std::cos(0.7), s = std::sin(0.7);
+  const Mat3 Q = {{{c, -s, 0}, {s, c, 0}, {0, 0, 1}}};
+  const Mat3 QF = multiply(Q, matrixOf(kF));
+  const PointResponse r = at(kF, false);
+  std::vector<double> qf(9);
+  for (int k = 0; k < 9; ++k) qf[size_t(k)] = QF[k / 3][k % 3];
+  const PointResponse rq = at(qf, false);
+  const Mat3 QP = multiply(Q, r.P);
+  double scale = 0.0;
+  for (const auto& row : r.P)
+    for (double v : row) scale = std::max(scale, std::abs(v));
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_NEAR(rq.P[i][j], QP[i][j], 1e-10 * scale) << i << j;
+  EXPECT_NEAR(rq.energy, r.energy, 1e-10 * std::abs(r.energy));
+}
+
 // At F = I: no stress and the linear elastic tangent of the law's own constants.
 TEST_P(MaterialPoints, TheUndeformedStateIsLinearElastic) {
   const ElasticConstants c = materialLaw(GetParam().law).elasticConstants(keysOf(GetParam().law));
@@ -148,6 +171,9 @@ const LawCase kPlastic[] = {{"J2 plasticity", true}, {"J2 plasticity", false}, {
 INSTANTIATE_TEST_SUITE_P(Elastic, ElasticMaterialPoints, ::testing::ValuesIn(kElastic), caseName);
 INSTANTIATE_TEST_SUITE_P(Elastic, MaterialPoints, ::testing::ValuesIn(kElastic), caseName);
 INSTANTIATE_TEST_SUITE_P(Plastic, MaterialPoints, ::testing::ValuesIn(kPlastic), caseName);
+const LawCase kFinite[] = {{"Saint Venant-Kirchhoff", true}, {"neo-Hookean", true}, {"Mooney-Rivlin", true},
+                           {"J2 plasticity", true}, {"Johnson-Cook", true}};
+INSTANTIATE_TEST_SUITE_P(Finite, FiniteMaterialPoints, ::testing::ValuesIn(kFinite), caseName);
 
 Mat3 cauchyOf(const MaterialPoint& m, const Mat3& F) {
   PointResponse r;
