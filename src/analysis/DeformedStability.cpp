@@ -20,7 +20,7 @@ double DeformedStability::omegaAt(double lambda) {
 }
 
 int DeformedStability::operator()(const Vector& u, double t, long long n) {
-  const double w = omegaAt(op_.stateEigenvalueBound(u));
+  const double w = omegaAt(op_.internalForce().stateEigenvalueBound(u));
   const double xi = w > 0 ? 0.5 * (rayleighK_ * w + rayleighM_ / w) : 0.0;
   const double critical = explicitCriticalStep(w, xi);
   const StabilityDecision d = decideStability(timeStep_, critical, plan_.switching, check_);

@@ -12,10 +12,10 @@
 
 namespace choc {
 
-DirectStepView::DirectStepView(const StructuralOperator& op, ContactReport* contact,
+DirectStepView::DirectStepView(StructuralOperator& op, ContactReport* contact,
                                    const InteractionOutput* interactions, std::vector<Probe> probes,
                                    ObserverSet& outputs, Teuchos::StackedTimer* timer)
-    : op_(op), contact_(contact), interactions_(interactions), probes_(std::move(probes)), outputs_(outputs), timer_(timer), loadWork_(op.loads()) {}
+    : op_(op), contact_(contact), interactions_(interactions), probes_(std::move(probes)), outputs_(outputs), timer_(timer) {}
 
 void DirectStepView::stepAccepted(const StepInfo& info, const Vector& u, const Vector& v,
                                     const Vector& a) {
@@ -36,7 +36,7 @@ void DirectStepView::substepTaken(double time, const Vector& u, const Vector& v)
 }
 
 void DirectStepView::differenceMassless(const Vector& u, const Vector& v, const Vector& a) {
-  if (op_.masslessDofs() == 0) return;
+  if (op_.mass().masslessDofs() == 0) return;
   if (!vOut_) {
     vOut_ = rcp(new Vector(v, Teuchos::Copy));
     aOut_ = rcp(new Vector(a, Teuchos::Copy));
@@ -47,7 +47,7 @@ void DirectStepView::differenceMassless(const Vector& u, const Vector& v, const 
     aOut_->assign(a);
   }
   if (info_.step > 0 && info_.dt > 0) {
-    const std::vector<char>& mask = op_.masslessMask();
+    const std::vector<char>& mask = op_.mass().masslessMask();
     auto ud = u.getData();
     auto up = uPrev_->getData();
     auto vp = vPrev_->getData();
@@ -66,9 +66,10 @@ void DirectStepView::differenceMassless(const Vector& u, const Vector& v, const 
 }
 
 void DirectStepView::archive(StateArchive& a, const StateVectors& vectors) const {
-  a.putVector("view/integrals", std::vector<double>{dissipated_, lastPower_, obstacleWork_, lastObstaclePower_});
-  a.putVector("view/loadWork", loadWork_.state());
-  if (const Vector* uf = loadWork_.followerDisplacement()) vectors.put(a, "view/followerDisplacement", *uf);
+  const WorkIntegrals& work = op_.work();
+  a.putVector("view/integrals", work.state());
+  a.putVector("view/loadWork", work.loadWork.state());
+  if (const Vector* uf = work.loadWork.followerDisplacement()) vectors.put(a, "view/followerDisplacement", *uf);
   if (uPrev_) {
     vectors.put(a, "view/uPrevious", *uPrev_);
     vectors.put(a, "view/vPrevious", *vPrev_);
@@ -76,18 +77,15 @@ void DirectStepView::archive(StateArchive& a, const StateVectors& vectors) const
 }
 
 void DirectStepView::restore(const StateArchive& a, const StateVectors& vectors, RCP<const Map> map) {
-  const std::vector<double> w = a.getVector<double>("view/integrals", 4);
-  dissipated_ = w[0];
-  lastPower_ = w[1];
-  obstacleWork_ = w[2];
-  lastObstaclePower_ = w[3];
-  loadWork_.restore(a.getVector<double>("view/loadWork", loadWork_.stateSize()));
-  if (loadWork_.hasFollowers() && a.has("view/followerDisplacement")) {
+  WorkIntegrals& work = op_.work();
+  work.restore(a.getVector<double>("view/integrals", 4));
+  work.loadWork.restore(a.getVector<double>("view/loadWork", work.loadWork.stateSize()));
+  if (work.loadWork.hasFollowers() && a.has("view/followerDisplacement")) {
     Vector uf(map);
     vectors.get(a, "view/followerDisplacement", uf);
-    loadWork_.restoreFollowers(uf);
+    work.loadWork.restoreFollowers(uf);
   }
-  if (op_.masslessDofs() == 0) return;
+  if (op_.mass().masslessDofs() == 0) return;
   for (RCP<Vector>* v : {&vOut_, &aOut_, &uPrev_, &vPrev_}) *v = rcp(new Vector(map));
   vectors.get(a, "view/uPrevious", *uPrev_);
   vectors.get(a, "view/vPrevious", *vPrev_);
@@ -114,7 +112,7 @@ std::vector<double> DirectStepView::probeValues() const {
     if (p.field == ProbeField::Momentum || p.field == ProbeField::AngularMomentum) {
       const std::string set = p.column.substr(0, p.column.find(':'));
       if (!momenta.count(set))
-        momenta[set] = setMomentum(p, *u_, *vScheme_, [&](const Vector& x, Vector& y) { op_.massTimes(x, y); });
+        momenta[set] = setMomentum(p, *u_, *vScheme_, [&](const Vector& x, Vector& y) { op_.mass().applyMass(x, y); });
       // The same on every rank already: rank 0's share of the sum below.
       if (map->getComm()->getRank() == 0)
         mine[k] = momenta[set][size_t((p.field == ProbeField::Momentum ? 0 : 3) + p.component)];
@@ -134,26 +132,18 @@ std::vector<double> DirectStepView::probeValues() const {
   return vals;
 }
 
+// The operator's energies of the reported state, from the scheme's own velocity.
 EnergyTerms DirectStepView::energies() {
+  const StateEnergies s = op_.energies(*u_, *vScheme_, *a_, info_.time, info_.dt, info_.substep);
   EnergyTerms e;
-  e.kinetic = op_.kineticEnergy(*vScheme_);
-  e.strain = op_.strainEnergy(*u_);
-  e.contact = op_.contactEnergy(*u_) + (op_.links() ? op_.links()->springEnergy() : 0.0);
-  const double power = op_.dampingPower(*vScheme_, e.kinetic);
-  dissipated_ += 0.5 * info_.dt * (lastPower_ + power);
-  lastPower_ = power;
-  e.dissipated = dissipated_ + (op_.links() ? op_.links()->dissipatedEnergy() : 0.0) +
-                 op_.frictionDissipation() + op_.internalForce().dissipatedWork();
-  e.plastic = op_.internalForce().dissipatedWork();
-  e.hourglass = op_.internalForce().hourglassEnergy(*u_);
-  // Work of moving obstacles: trapezoidal rule on their power.
-  const double obstaclePower = contact_ ? contact_->obstaclePower() : 0.0;
-  obstacleWork_ += 0.5 * info_.dt * (lastObstaclePower_ + obstaclePower);
-  lastObstaclePower_ = obstaclePower;
-  e.external = loadWork_.update(*u_, info_.time) + obstacleWork_;
-  // Central differences: the part of the energy the scheme's conserved energy leaves out,
-  // (h^2/8) a^T M a = (h^2/4) x "the kinetic energy of a" (EnergyTerms::shadow).
-  if (info_.substep > 0) e.shadow = 0.25 * info_.substep * info_.substep * op_.kineticEnergy(*a_);
+  e.kinetic = s.kinetic;
+  e.strain = s.strain;
+  e.contact = s.contact;
+  e.dissipated = s.dissipated;
+  e.external = s.external;
+  e.plastic = s.plastic;
+  e.hourglass = s.hourglass;
+  e.shadow = s.shadow;
   return e;
 }
 

@@ -1,7 +1,7 @@
 // The direct transient's state as the output observers see it: hung on the driver's step
 // hook, it evaluates the contact report once per accepted step, then calls the observers.
-// Energies come from the structural operator; the Rayleigh damping work is integrated here
-// by the trapezoidal rule, as is the work of moving rigid obstacles and of the loads (LoadWork). Massless DOFs (redistributed contact
+// Energies come from the structural operator (with the damping, obstacles' and loads' work it
+// integrates; this view archives them in a checkpoint). Massless DOFs (redistributed contact
 // mass) have no inertia to integrate: their Newmark velocity and acceleration only close the
 // scheme's relations and oscillate after a velocity jump, so the outputs (history, Exodus)
 // give them the backward differences of their displacement, v = (u_{n+1} - u_n)/dt and
@@ -24,7 +24,7 @@ class DirectStepView : public TransientView, public StepObserver {
  public:
   // contact may be null; interactions: what the output reports (the contact report, the
   // links, both, or null); timer (may be null) times the output under "Transient: output".
-  DirectStepView(const StructuralOperator& op, ContactReport* contact,
+  DirectStepView(StructuralOperator& op, ContactReport* contact,
                    const InteractionOutput* interactions, std::vector<Probe> probes,
                    ObserverSet& outputs, Teuchos::StackedTimer* timer);
 
@@ -41,13 +41,13 @@ class DirectStepView : public TransientView, public StepObserver {
   void elementFields(std::vector<std::vector<double>>& values) const override;
   std::string stepNote() const override;
 
-  // The integrals (damping, obstacle and load work) and the previous
+  // The operator's work integrals (damping, obstacle and load work) and the previous
   // reported fields of massless DOFs, for a checkpoint (collective), and back.
   void archive(StateArchive& a, const StateVectors& vectors) const;
   void restore(const StateArchive& a, const StateVectors& vectors, RCP<const Map> map);
 
  private:
-  const StructuralOperator& op_;
+  StructuralOperator& op_;
   ContactReport* contact_;
   const InteractionOutput* interactions_;
   std::vector<Probe> probes_;
@@ -58,9 +58,6 @@ class DirectStepView : public TransientView, public StepObserver {
   const Vector *u_ = nullptr, *v_ = nullptr, *a_ = nullptr;  // the reported fields
   const Vector* vScheme_ = nullptr;                           // the scheme's velocity
   RCP<Vector> vOut_, aOut_, uPrev_, vPrev_;  // reported fields and the previous step's
-  LoadWork loadWork_;
-  double dissipated_ = 0.0, lastPower_ = 0.0;
-  double obstacleWork_ = 0.0, lastObstaclePower_ = 0.0;
 };
 
 }  // namespace choc

@@ -57,50 +57,20 @@ DirectTransient::DirectTransient(const std::string& name, const Teuchos::Paramet
   s_.output = readTransientOutput(params_);
   checkStepCount(nominalSteps(s_.time.startTime, s_.time.endTime, s_.time.timeStep), 1, s_.output.limits, inputFile_,
                  "Analyses/" + name_, s_.time.timeStep);
-  if (s_.explicitScheme && s_.contact.hasPressureUnknowns())
-    throwInput(inputFile_, path("Contact/Method"), s_.contact.methodName(),
-               "has pressure unknowns, which the explicit scheme (central differences) cannot solve for",
-               "use Lagrange (forward-increment multipliers) or Penalty with central differences");
+  const ParameterList& lp = params_.sublist("Linear Solver");
+  checkContactChoice(s_.contact, {s_.explicitScheme, lp.get<std::string>("Method"), lp.get<std::string>("Preconditioner")},
+                     inputFile_);
   // Central differences enforce Lagrange contact by forward increments on the lumped mass:
   // the contact nodes keep their mass ('auto' means standard there).
   if (s_.explicitScheme && s_.contact.massIsAutomatic) s_.contact.redistributeMass = false;
-  if (const PairDefinition* fp = s_.contact.frictionPair()) {
-    const std::string key = "Contact/Pairs/" + fp->name + "/Friction Coefficient";
-    if (s_.explicitScheme && !s_.contact.forwardIncrementsWhenExplicit())
-      throwInput(inputFile_, path(key), shortNumber(fp->friction),
-                 "central differences apply friction by forward increments of Lagrange contact, not with '" +
-                     s_.contact.methodName() + "' contact",
-                 "use 'Contact/Method' = Lagrange, or an implicit scheme (HHT, Newmark...)");
-    if (!s_.explicitScheme && params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
-      throwInput(inputFile_, path(key), shortNumber(fp->friction),
-                 "the tangent of a sliding node is not symmetric, which CG cannot solve",
-                 "use 'Linear Solver/Method' = Direct or GMRES with friction");
-  }
   {
     const ParameterList& pr = params_.sublist("Pressures");
     for (auto it = pr.begin(); it != pr.end(); ++it)
-      if (pr.sublist(pr.name(it)).get<bool>("Follower") && !s_.explicitScheme &&
-          params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
+      if (pr.sublist(pr.name(it)).get<bool>("Follower") && !s_.explicitScheme && lp.get<std::string>("Method") == "CG")
         throwInput(inputFile_, path("Pressures/" + pr.name(it) + "/Follower"), "true",
                    "the load stiffness of a follower pressure is not symmetric, which CG cannot solve",
                    "use 'Linear Solver/Method' = Direct, GMRES or auto with follower pressures");
   }
-  // (Central differences make no linear solve: their forward increments need no solver.)
-  // Multipliers against rigid obstacles alone are condensed out of an iterative solve, Lagrange's
-  // between meshed bodies projected out; others (Continuous') make a saddle-point system.
-  const bool saddlePoint = s_.contact.hasMultipliers() && !s_.contact.condensable();
-  const std::string which = "' between meshed bodies";
-  if (!s_.explicitScheme && saddlePoint && params_.sublist("Linear Solver").get<std::string>("Method") == "CG")
-    throwInput(inputFile_, path("Linear Solver/Method"), "CG",
-               "the saddle-point system of contact method '" + s_.contact.methodName() + which + " is indefinite",
-               "use Direct, GMRES or MINRES (or the Penalty method with CG)");
-  const Teuchos::ParameterList& lp = params_.sublist("Linear Solver");
-  if (!s_.explicitScheme && saddlePoint && lp.get<std::string>("Preconditioner") == "Multigrid" &&
-      lp.get<std::string>("Method") != "Direct")
-    throwInput(inputFile_, path("Linear Solver/Preconditioner"), "Multigrid",
-               "the Newton matrix of contact method '" + s_.contact.methodName() + which +
-                   " has multiplier rows, which multigrid for elasticity does not aggregate",
-               "use the Penalty method with Multigrid, or Method = Direct or auto");
 }
 
 void DirectTransient::readScheme() {
@@ -194,7 +164,7 @@ void DirectTransient::buildContact(Model& model) {
   b_->contact = makeContactManager(s_.contact, model.mesh(), model.dofs(), model.map(), inputFile_,
                                    model.kinematics() == Kinematics::Axisymmetric);
   if (!s_.contact.redistributeMass) return;
-  const std::vector<char> massless = b_->contact->surfaceNodes(model.mesh());
+  const std::vector<char> massless = contactSurfaceNodes(*b_->contact, model.mesh());
   for (char c : massless) b_->masslessNodes += c;
   try {
     b_->M = model.mass(massless);
@@ -211,7 +181,7 @@ void DirectTransient::setupExplicit(const Model& model) {
   const double meshBound = b_->masslessNodes == 0 ? model.eigenvalueBound()
                                                   : std::numeric_limits<double>::infinity();
   b_->explicitPlan = std::make_unique<ExplicitPlan>(planExplicit(
-      {*b_->K, *b_->M, b_->contact.get(), b_->links.get(), meshBound, s_.rayleighK, s_.rayleighM,
+      {*b_->K, *b_->M, b_->strategy.get(), b_->links.get(), meshBound, s_.rayleighK, s_.rayleighM,
        s_.time.timeStep, s_.time.endTime - s_.time.startTime, s_.stability, s_.output.limits, inputFile_, "Analyses/" + name_}));
 }
 
@@ -254,7 +224,6 @@ void DirectTransient::buildSolver(const Model& model) {
   // links' and the follower pressures' tangents and the continuous method's pressure rows are not.
   const bool symmetric = !(b_->contact && (b_->contact->hasFriction() || s_.contact.hasPressureUnknowns())) &&
                          !b_->links && !hasFollowers;
-  b_->condenseContact = s_.contact.condensable() && lp.get<std::string>("Method") != "Direct";
   std::shared_ptr<const NodalBlocks> blocks;
   // (An explicit run builds the solver without using it; multiplier rows were refused with the input.)
   if (lp.get<std::string>("Preconditioner") == "Multigrid" && lp.get<std::string>("Method") != "Direct")
@@ -264,6 +233,9 @@ void DirectTransient::buildSolver(const Model& model) {
   } catch (const InputError& e) {
     throwInput(inputFile_, path("Linear Solver"), "", e.what());
   }
+  if (b_->contact)
+    b_->strategy = makeContactStrategy(s_.contact, *b_->contact,
+                                       {s_.explicitScheme, lp.get<std::string>("Method"), lp.get<std::string>("Preconditioner")});
 }
 
 // The stepper of the scheme: Newmark family (Newton) or central differences (explicit).
@@ -300,7 +272,7 @@ std::shared_ptr<InternalForce> DirectTransient::internalForce(Model& model) cons
 void DirectTransient::run(RunContext& ctx) {
   const auto wallStart = std::chrono::steady_clock::now();
   auto timer = rcp(new Teuchos::StackedTimer(("Transient '" + name_ + "'").c_str()));
-  StructuralOperator op(internalForce(ctx.model), b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->contact.get(),
+  StructuralOperator op(internalForce(ctx.model), b_->M, s_.rayleighK, s_.rayleighM, b_->loads, b_->strategy.get(),
                         b_->links.get(), std::move(b_->solver), timer.get());
   configure(op, ctx.model);
   TransientReport report(facts(), op, b_->contact.get(), b_->links.get());
@@ -340,11 +312,8 @@ void DirectTransient::run(RunContext& ctx) {
   reportRun(ctx, sum, report, *timer, wallStart, history);
 }
 
-// How the operator treats contact (forward increments, condensed), and the domain of its assembled
-// small-strain blocks (checked with the elements' validity).
+// The domain of the operator's assembled small-strain blocks (checked with the elements' validity).
 void DirectTransient::configure(StructuralOperator& op, Model& model) const {
-  op.setForwardIncrementContact(s_.explicitScheme && s_.contact.forwardIncrementsWhenExplicit());
-  op.setCondensedContact(!s_.explicitScheme && b_->condenseContact);
   auto domain = std::make_shared<SmallStrainDomain>(model);
   if (!domain->empty()) op.setSmallStrainDomain(domain);
 }

@@ -15,6 +15,7 @@
 #include "analysis/ExplicitPlan.hpp"
 #include "checks/HistoryCheck.hpp"
 #include "contact/ContactParameters.hpp"
+#include "contact/ContactStrategies.hpp"
 #include "observers/Probes.hpp"
 #include "observers/TransientOutputs.hpp"
 #include "observers/TransientReport.hpp"
@@ -61,9 +62,9 @@ class DirectTransient : public Analysis {
     RCP<const CrsMatrix> meshMass;  // the mesh's lumped mass (M before any redistribution)
     bool finiteStrain = false;      // some block has 'Strain' = 'finite'
     std::string solverChoice;  // the 'auto' linear solver's reason, for the log
-    bool condenseContact = false;  // the multipliers condensed out (an iterative solve, obstacles)
     std::shared_ptr<const Loads> loads;
     std::unique_ptr<ContactManager> contact;
+    std::unique_ptr<ContactStrategy> strategy;  // how the run enforces contact (over contact)
     std::unique_ptr<DirectLinks> links;  // null: no shock links
     long long masslessNodes = 0;
     std::string massFallback;  // why Contact Mass = auto kept the standard mass (empty: it did not)

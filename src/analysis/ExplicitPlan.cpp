@@ -18,8 +18,8 @@ ExplicitPlan planExplicit(const ExplicitInputs& in) {
   p.massDiagonal = m;
   p.inverseMass = rcp(new Vector(m->getMap()));
   p.inverseMass->reciprocal(*m);
-  const double k = in.contact ? in.contact->method().stiffness() : 0.0;
-  p.bound = omegaMaxBound(in.K, *m, in.contact, k, in.links, in.meshBound);
+  const double k = in.contact ? in.contact->springStiffness() : 0.0;
+  p.bound = omegaMaxBound(in.K, *m, in.contact ? &in.contact->geometry() : nullptr, k, in.links, in.meshBound);
   const double w = p.bound.omegaMax;
   const double xi = w > 0 ? 0.5 * (in.rayleighK * w + in.rayleighM / w) : 0.0;
   p.criticalStep = explicitCriticalStep(w, xi);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "observers/RunLimits.hpp"
+#include "contact/ContactStrategy.hpp"
 #include "physics/CriticalStep.hpp"
 #include "timeint/StabilityPolicy.hpp"
 
@@ -26,7 +27,7 @@ struct ExplicitPlan {
 struct ExplicitInputs {
   const CrsMatrix& K;
   const CrsMatrix& M;                // the run's mass (lumped; possibly redistributed)
-  const ContactManager* contact;     // may be null
+  const ContactStrategy* contact;    // may be null
   const DirectLinks* links;          // may be null
   double meshBound;                  // the element bound of (K, M), infinity when M is not the mesh's own
   double rayleighK, rayleighM;

@@ -30,6 +30,8 @@ struct ContactActiveSet {
     lambda = savedLambda;
   }
   int activeCount() const;
+  // Right-hand side of constraint row s at its gap (force units): active -scale g_s, else lambda_s.
+  double rowResidual(size_t s, double gap) const { return status[s] ? -scale * gap : lambda[s]; }
   // lambda += scale * dScaled (the multiplier unknowns are lambda / scale).
   void applyCorrection(const std::vector<double>& dScaled);
   // The last correction's change of lambda scaled by `factor` (a line search shortening it).

@@ -16,13 +16,6 @@
 
 namespace choc {
 
-bool ContactCondensation::applies(const ContactManager& contact) {
-  if (!contact.method().hasMultipliers() || contact.numPairs() == 0) return false;
-  for (int p = 0; p < contact.numPairs(); ++p)
-    if (!contact.pair(p).hasObstacle) return false;
-  return true;
-}
-
 // The active constraints grouped by slave node, each node's C = Q R by Gram-Schmidt.
 void ContactCondensation::groupActive(const Map& rowMap) {
   nodes_.clear();
@@ -120,7 +113,7 @@ bool invert(std::vector<double> a, size_t m, std::vector<double>& inv) {
 void ContactCondensation::project(const RCP<CrsMatrix>& A, const std::vector<MatrixEntry>& multiplierColumns,
                                   GO multiplierBase) {
   matrix_ = A;
-  sigma_ = contact_.scale();
+  sigma_ = contact_.activeSet().scale;
   groupActive(*A->getRowMap());
   addFriction(multiplierColumns, multiplierBase);
   projectColumns(*A);
@@ -262,7 +255,7 @@ void ContactCondensation::projectRows(CrsMatrix& A) {
 
 void ContactCondensation::rightHandSide(const Vector& r, const Vector& u, MultiVector& b) {
   const std::vector<double> g = contact_.gaps(u);
-  const double S = contact_.scale();
+  const double S = contact_.activeSet().scale;
   auto rd = r.getData();
   auto bd = b.getDataNonConst(0);
   for (size_t i = 0; i < r.getLocalLength(); ++i) bd[i] = -rd[i];
@@ -270,7 +263,7 @@ void ContactCondensation::rightHandSide(const Vector& r, const Vector& u, MultiV
     const size_t dim = n.dofs.size(), m = n.constraints.size();
     std::vector<double> y(m, 0.0);
     for (size_t j = 0; j < m; ++j) {
-      double t = contact_.rowResidual(n.constraints[j], g[n.constraints[j]]) / S;
+      double t = contact_.activeSet().rowResidual(n.constraints[j], g[n.constraints[j]]) / S;
       for (size_t i = 0; i < j; ++i) t -= n.R[j * m + i] * y[i];
       y[j] = t / n.R[j * m + j];
     }
@@ -313,7 +306,7 @@ void ContactCondensation::takeSolution(const MultiVector& x, Vector& du) const {
   if (importer.is_null()) onColumns.assign(du);
   else onColumns.doImport(du, *importer, Tpetra::INSERT);
   auto uc = onColumns.getData();
-  const double S = contact_.scale();
+  const double S = contact_.activeSet().scale;
   const int nS = contact_.numConstraints();
   const int rank = contact_.comm()->getRank();
   std::vector<double> mine(nS, 0.0), all(nS, 0.0);
@@ -334,9 +327,9 @@ void ContactCondensation::takeSolution(const MultiVector& x, Vector& du) const {
     }
   }
   for (int s = 0; s < nS; ++s)  // an inactive node's pressure returns to 0
-    if (!contact_.status()[s] && contact_.constraints()[s].owner == rank) mine[s] = -contact_.rowResidual(s, 0.0) / S;
+    if (!contact_.status()[s] && contact_.constraints()[s].owner == rank) mine[s] = -contact_.activeSet().rowResidual(s, 0.0) / S;
   Teuchos::reduceAll<int, double>(*contact_.comm(), Teuchos::REDUCE_SUM, nS, mine.data(), all.data());
-  contact_.applyCorrection(all);
+  contact_.activeSet().applyCorrection(all);
 }
 
 }  // namespace choc

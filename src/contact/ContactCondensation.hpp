@@ -9,7 +9,7 @@
 // W = aM M + aK K), so CG with Jacobi or multigrid solves it on every rank. The multipliers follow
 // from the node's equations before projection: C_a dlambda_a = (W du + R)_a. An inactive node's
 // pressure is reset to 0 as in the saddle-point system. The same Newton iterates as the
-// saddle-point system (ContactSystem's extended map), to the solver's tolerance.
+// saddle-point system (the saddle-point strategy.s extended map), to the solver's tolerance.
 // With friction the sliding node's rows carry its multiplier through V_a = C_a + mu T_a (the
 // friction force mu lambda t grows with lambda): the node's rows are projected by
 // P_L = I - V_a (Q^T V_a)^-1 Q^T, which annihilates V_a, instead of P; then
@@ -25,9 +25,6 @@ namespace choc {
 
 class ContactCondensation {
  public:
-  // Every constraint involves its slave node alone (every pair against a rigid obstacle), with
-  // multipliers.
-  static bool applies(const ContactManager& contact);
   explicit ContactCondensation(ContactManager& contact) : contact_(contact) {}
 
   // A holds W (values written, fill resumed; DOF map): saves what the right-hand side and the

@@ -47,14 +47,13 @@ double coefficientChange(const SlaveProjection& a, const SlaveProjection& b) {
   return m;
 }
 
-}  // namespace
-
-Vec3 ContactManager::tangentialOffset(const ContactConstraint& c) const {
+// The tangential part of the slave node's offset from its master point, at the followed positions.
+Vec3 tangentialOffset(const FollowedSurfaces& followed, const ContactConstraint& c) {
   const SlaveProjection& g = c.geometry;
   if (g.masterNodes.empty()) return Vec3{0, 0, 0};
-  Vec3 d = followed_->position(g.slaveNode);
+  Vec3 d = followed.position(g.slaveNode);
   for (size_t i = 0; i < g.masterNodes.size(); ++i) {
-    const Point3 xm = followed_->position(g.masterNodes[i]);
+    const Point3 xm = followed.position(g.masterNodes[i]);
     for (int k = 0; k < 3; ++k) d[k] -= g.weights[i] * xm[k];
   }
   const double dn = dot(d, g.normal);
@@ -63,21 +62,24 @@ Vec3 ContactManager::tangentialOffset(const ContactConstraint& c) const {
 }
 
 // The mortar pairs' projections on the current configuration, by pair and slave node.
-std::map<int, std::map<int, SlaveProjection>> ContactManager::followMortar() const {
+std::map<int, std::map<int, SlaveProjection>> followMortar(const FollowedSurfaces& followed,
+                                                           const std::vector<PairDefinition>& pairs) {
   std::map<int, std::map<int, SlaveProjection>> out;
-  for (size_t p = 0; p < pairs_.size(); ++p) {
-    if (!followed_->follows(int(p)) || !followed_->mortar(int(p))) continue;
+  for (size_t p = 0; p < pairs.size(); ++p) {
+    if (!followed.follows(int(p)) || !followed.mortar(int(p))) continue;
     const PairingResult r =
-        mortarPairing(followed_->slaveFaces(int(p)), followed_->masterSearch(int(p)), pairs_[p], int(p));
+        mortarPairing(followed.slaveFaces(int(p)), followed.masterSearch(int(p)), pairs[p], int(p));
     for (const SlaveProjection& sp : r.projections)
       if (!sp.masterNodes.empty()) out[int(p)][sp.slaveNode] = sp;
   }
   return out;
 }
 
+}  // namespace
+
 void ContactManager::followSurfaces(const Vector& u) {
-  followed_->place(gather(followed_->dofs(), u), true);
-  const auto mortar = followMortar();
+  followed_->place(gatherReplicated(*map_, followed_->dofs(), u), true);
+  const auto mortar = followMortar(*followed_, pairs_);
   bool topology = false, turned = false;
   for (size_t s = 0; s < constraints_.size(); ++s) {
     ContactConstraint& c = constraints_[s];
@@ -126,7 +128,7 @@ void ContactManager::followSurfaces(const Vector& u) {
     double bu = 0.0;
     for (const auto& [dof, coeff] : c.terms) bu += coeff * followed_->displacement(dof);
     c.geometry.gap0 = gap - bu;
-    slipStart_[s] = tangentialOffset(c);
+    slipStart_[s] = tangentialOffset(*followed_, c);
   }
   paired_ = true;
   if (topology) ++topologyVersion_;
@@ -140,11 +142,11 @@ void ContactManager::commitMotion(const Vector& u) {
   if (friction_)
     friction_->commitMotion([&] { return contactValues(u); }, [&](const std::vector<double>& x) { return gapsAt(x); });
   if (!followed_ || !paired_) return;
-  followed_->place(gather(followed_->dofs(), u), false);
+  followed_->place(gatherReplicated(*map_, followed_->dofs(), u), false);
   for (size_t s = 0; s < constraints_.size(); ++s) {
     const ContactConstraint& c = constraints_[s];
     if (!set_.status[s] || !followed_->follows(c.geometry.pair)) continue;
-    const Vec3 d = tangentialOffset(c);
+    const Vec3 d = tangentialOffset(*followed_, c);
     slip_[s] += norm(Vec3{d[0] - slipStart_[s][0], d[1] - slipStart_[s][1], d[2] - slipStart_[s][2]});
   }
 }

@@ -12,9 +12,41 @@
 
 namespace choc {
 
-std::vector<char> ContactManager::surfaceNodes(const Mesh& mesh) const {
+namespace {
+
+// The terms of every constraint's relative motion u_s - sum_i w_i u_i, per component.
+SlipTerms slipTermsOf(const std::vector<ContactConstraint>& constraints, const DofMap& dofs) {
+  SlipTerms out;
+  std::vector<std::array<std::vector<std::pair<GO, double>>, 3>> rel(constraints.size());
+  for (size_t s = 0; s < constraints.size(); ++s) {
+    const SlaveProjection& g = constraints[s].geometry;
+    for (int d = 0; d < 3; ++d) {
+      const long long ds = dofs.dof(g.slaveNode, d);
+      if (ds >= 0) rel[s][d].push_back({GO(ds), 1.0});
+      for (size_t i = 0; i < g.masterNodes.size(); ++i) {
+        const long long dm = dofs.dof(g.masterNodes[i], d);
+        if (dm >= 0 && g.weights[i] != 0.0) rel[s][d].push_back({GO(dm), -g.weights[i]});
+      }
+      for (const auto& e : rel[s][d]) out.dofs.push_back(e.first);
+    }
+  }
+  std::sort(out.dofs.begin(), out.dofs.end());
+  out.dofs.erase(std::unique(out.dofs.begin(), out.dofs.end()), out.dofs.end());
+  out.terms.resize(constraints.size());
+  for (size_t s = 0; s < constraints.size(); ++s)
+    for (int d = 0; d < 3; ++d)
+      for (const auto& [dof, w] : rel[s][d])
+        out.terms[s][d].push_back(
+            {int(std::lower_bound(out.dofs.begin(), out.dofs.end(), dof) - out.dofs.begin()), w});
+  return out;
+}
+
+}  // namespace
+
+std::vector<char> contactSurfaceNodes(const ContactManager& contact, const Mesh& mesh) {
   std::vector<char> flags(mesh.numNodes(), 0);
-  for (const auto& pair : pairs_) {
+  for (int p = 0; p < contact.numPairs(); ++p) {
+    const PairDefinition& pair = contact.pair(p);
     for (const std::string& set : {pair.slaveNodeSet, pair.masterNodeSet})
       if (const NodeSet* ns = set.empty() ? nullptr : mesh.findNodeSet(set))
         for (int n : ns->nodes) flags[n] = 1;
@@ -89,20 +121,20 @@ ContactManager::ContactManager(const Mesh& mesh, const DofMap& dofs, RCP<const M
       constraints_.push_back(makeContactConstraint(mesh.coords[sp.slaveNode], dofs, sp, allComponents));
   }
   dofs_ = &dofs;
-  if (hasObstacles_) measureSlaveSizes(mesh);
+  if (hasObstacles_) slaveSize_ = slaveFaceSizes(mesh, pairs_, constraints_);
   for (const PairDefinition& pair : pairs_)
     if (pair.friction > 0 && !friction_)
       friction_ = std::make_unique<CoulombFriction>(
           CoulombFriction::Geometry{constraints_, pairs_, contactDofs_, dofs, map_, set_, *method_});
   indexTerms();
-  buildSlipTerms(dofs);
+  slipTerms_ = slipTermsOf(constraints_, dofs);
   set_.status.assign(constraints_.size(), 0);
   set_.lambda.assign(constraints_.size(), 0.0);
   slip_.assign(constraints_.size(), 0.0);
   slipStart_.assign(constraints_.size(), Vec3{0, 0, 0});
   followed_ = std::make_unique<FollowedSurfaces>(mesh, dofs, pairs_);
   if (followed_->empty()) followed_.reset();
-  commit();
+  set_.commit();
 }
 
 // contactDofs_ and localTerms_ from the constraints' terms.
@@ -125,20 +157,19 @@ void ContactManager::indexTerms() {
 }
 
 std::vector<double> ContactManager::contactValues(const Vector& u) const {
-  return gather(contactDofs_, u);
+  return gatherReplicated(*map_, contactDofs_, u);
 }
 
-std::vector<double> ContactManager::gather(const std::vector<GO>& dofs, const Vector& u) const {
+std::vector<double> gatherReplicated(const Map& map, const std::vector<GO>& dofs, const Vector& u) {
   const size_t n = dofs.size();
   std::vector<double> mine(n, 0.0), all(n, 0.0);
   auto data = u.getData();
   for (size_t k = 0; k < n; ++k) {
-    const LO l = map_->getLocalElement(dofs[k]);
+    const LO l = map.getLocalElement(dofs[k]);
     if (l != Teuchos::OrdinalTraits<LO>::invalid()) mine[k] = data[l];
   }
   if (n > 0)
-    Teuchos::reduceAll<int, double>(*map_->getComm(), Teuchos::REDUCE_SUM, int(n), mine.data(),
-                                    all.data());
+    Teuchos::reduceAll<int, double>(*map.getComm(), Teuchos::REDUCE_SUM, int(n), mine.data(), all.data());
   return all;
 }
 
@@ -174,11 +205,7 @@ std::vector<double> ContactManager::forces(const Vector& u) const {
   return f;
 }
 
-double ContactManager::rowResidual(int s, double gap) const {
-  return set_.status[s] ? -set_.scale * gap : set_.lambda[s];
-}
-
-double ContactManager::addForces(const Vector& u, Vector& out) const {
+double ContactManager::addForces(const Vector& u, Vector& out) {
   const std::vector<double> x = contactValues(u);
   const std::vector<double> g = gapsAt(x);
   auto data = out.getDataNonConst();
@@ -192,7 +219,7 @@ double ContactManager::addForces(const Vector& u, Vector& out) const {
         if (l != Teuchos::OrdinalTraits<LO>::invalid()) data[l] -= f * coeff;
       }
     if (method_->hasMultipliers() && constraints_[s].owner == rank) {
-      const double r = rowResidual(int(s), g[s]);
+      const double r = set_.rowResidual(s, g[s]);
       local += r * r;
     }
   }
@@ -202,43 +229,15 @@ double ContactManager::addForces(const Vector& u, Vector& out) const {
   return std::sqrt(global);
 }
 
-void ContactManager::applyCorrection(const std::vector<double>& d) { set_.applyCorrection(d); }
-
-// Per constraint and component d: u_s,d - sum_i w_i u_i,d over every component (not only the
-// normal's), for the tangential slip.
-void ContactManager::buildSlipTerms(const DofMap& dofs) {
-  std::vector<std::array<std::vector<std::pair<GO, double>>, 3>> rel(constraints_.size());
-  for (size_t s = 0; s < constraints_.size(); ++s) {
-    const SlaveProjection& g = constraints_[s].geometry;
-    for (int d = 0; d < 3; ++d) {
-      const long long ds = dofs.dof(g.slaveNode, d);
-      if (ds >= 0) rel[s][d].push_back({GO(ds), 1.0});
-      for (size_t i = 0; i < g.masterNodes.size(); ++i) {
-        const long long dm = dofs.dof(g.masterNodes[i], d);
-        if (dm >= 0 && g.weights[i] != 0.0) rel[s][d].push_back({GO(dm), -g.weights[i]});
-      }
-      for (const auto& e : rel[s][d]) slipDofs_.push_back(e.first);
-    }
-  }
-  std::sort(slipDofs_.begin(), slipDofs_.end());
-  slipDofs_.erase(std::unique(slipDofs_.begin(), slipDofs_.end()), slipDofs_.end());
-  slipTerms_.resize(constraints_.size());
-  for (size_t s = 0; s < constraints_.size(); ++s)
-    for (int d = 0; d < 3; ++d)
-      for (const auto& [dof, w] : rel[s][d])
-        slipTerms_[s][d].push_back(
-            {int(std::lower_bound(slipDofs_.begin(), slipDofs_.end(), dof) - slipDofs_.begin()), w});
-}
-
 std::vector<double> ContactManager::slips(const Vector& u, double t) const {
-  const std::vector<double> x = gather(slipDofs_, u);
+  const std::vector<double> x = gatherReplicated(*map_, slipTerms_.dofs, u);
   std::vector<double> out(constraints_.size(), 0.0);
   for (size_t s = 0; s < constraints_.size(); ++s) {
     const SlaveProjection& g = constraints_[s].geometry;
     const PairDefinition& pair = pairs_[g.pair];
     Vec3 d{0, 0, 0};
     for (int c = 0; c < 3; ++c) {
-      for (const auto& [k, w] : slipTerms_[s][c]) d[c] += w * x[k];
+      for (const auto& [k, w] : slipTerms_.terms[s][c]) d[c] += w * x[k];
       if (pair.hasObstacle) d[c] -= pair.obstacle.velocity[c] * t;  // relative to the obstacle
     }
     const double dn = dot(d, g.normal);
@@ -296,43 +295,6 @@ void ContactManager::placeObstacles(const Vector& u, double t) {
   if (turned) ++geometryVersion_;
 }
 
-void ContactManager::initialize(const Vector& u) {
-  const std::vector<double> g = gaps(u);
-  for (size_t s = 0; s < g.size(); ++s) {
-    set_.lambda[s] = 0.0;
-    set_.status[s] = method_->isActive(g[s], 0.0, false);
-  }
-  ++set_.version;
-  commit();
-}
-
-StatusUpdate ContactManager::updateStatus(const Vector& u) {
-  const std::vector<double> g = gaps(u);
-  StatusUpdate up;
-  int changedLocal = 0;
-  for (size_t s = 0; s < g.size(); ++s) {
-    const bool now = method_->isActive(g[s], set_.lambda[s], set_.status[s]);
-    if (now != bool(set_.status[s])) {
-      changedLocal = 1;
-      (now ? up.entered : up.left)++;
-      const std::string name = "pair '" + pairs_[constraints_[s].geometry.pair].name + "'";
-      if (up.where.find(name) == std::string::npos)
-        up.where += (up.where.empty() ? "" : ", ") + name + " (node " +
-                    std::to_string(constraints_[s].geometry.slaveNode + 1) + ")";
-      set_.status[s] = now;
-      if (!now) set_.lambda[s] = 0.0;
-    }
-  }
-  // Every rank computed the same statuses from the same gaps; agree anyway.
-  int changed = 0;
-  Teuchos::reduceAll<int, int>(*map_->getComm(), Teuchos::REDUCE_MAX, changedLocal,
-                               Teuchos::outArg(changed));
-  up.changed = changed != 0;
-  if (up.changed) ++set_.version;
-  up.active = activeCount();
-  return up;
-}
-
 void ContactManager::archive(StateArchive& a) const {
   set_.archive(a);
   if (followed_) a.putVector("contact/slip", slip_);
@@ -346,12 +308,8 @@ void ContactManager::restore(const StateArchive& a) {
   if (followed_) restorePairing(a);
   if (friction_) friction_->restore(a);
   ++set_.version;
-  commit();
+  set_.commit();
 }
-
-void ContactManager::commit() { set_.commit(); }
-
-void ContactManager::revert() { set_.revert(); }
 
 std::string ContactManager::activeSummary() const {
   std::vector<int> active(pairs_.size(), 0), all(pairs_.size(), 0);
@@ -365,8 +323,6 @@ std::string ContactManager::activeSummary() const {
                                               active[p], all[p]);
   return out;
 }
-
-int ContactManager::activeCount() const { return set_.activeCount(); }
 
 double ContactManager::energy(const Vector& u) const {
   const std::vector<double> g = gaps(u);

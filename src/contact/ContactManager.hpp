@@ -1,11 +1,11 @@
-// The contact manager: an explicit active-set object (STYLE; deal.II step-41/42). It holds
-// the node-to-face pairs of every contact pair, the linearised gaps g_s(u) = g0_s + B_s u,
-// each slave node's status (active or not) and pressure unknown lambda_s [N, compression
-// positive], and the enforcement method. It applies the contact forces, decides statuses by
-// the method's complementarity test after each Newton solve, and reports whether the active
-// set changed on any rank. Every rank holds all the constraints (a few per contact face):
-// values at the contact DOFs are summed across ranks, so every rank sees the same gaps,
-// statuses and pressures whatever the number of ranks.
+// The contact geometry: the node-to-face pairs of every contact pair (followed surfaces,
+// rigid obstacles), the linearised gaps g_s(u) = g0_s + B_s u, the enforcement method, and the
+// active set the contact strategy decides (contact/ContactStrategy.hpp: each slave node's status
+// and pressure lambda_s [N, compression positive], kept here because following a surface opens
+// a constraint and the reports read them). It applies the contact forces of the current statuses.
+// Every rank holds all the constraints (a few per contact face): values at the contact DOFs are
+// summed across ranks, so every rank sees the same gaps, statuses and pressures whatever the
+// number of ranks.
 #pragma once
 #include <array>
 #include <map>
@@ -59,6 +59,16 @@ struct StatusUpdate {
   std::string where;  // the pairs whose nodes switched, e.g. "pair 'wall' (node 12, ...)"
 };
 
+// Per constraint and component d the terms of u_s,d - sum_i w_i u_i,d over every component (not
+// only the normal's), indexing dofs (every component of the slave and master nodes, sorted).
+struct SlipTerms {
+  std::vector<GO> dofs;
+  std::vector<std::array<std::vector<std::pair<int, double>>, 3>> terms;
+};
+
+// u at the given DOFs, summed across ranks (the same array on every rank). Collective.
+std::vector<double> gatherReplicated(const Map& map, const std::vector<GO>& dofs, const Vector& u);
+
 class ContactManager {
  public:
   // Throws PairingError naming the pair and side set.
@@ -72,8 +82,6 @@ class ContactManager {
   int numPairs() const { return static_cast<int>(pairs_.size()); }
   const PairDefinition& pair(int p) const { return pairs_[p]; }
   int unpairedNodes() const { return unpaired_; }
-  // Per mesh node: 1 for the nodes of every pair's master and slave side sets.
-  std::vector<char> surfaceNodes(const Mesh& mesh) const;
 
   // Tangential slip of each slave node at u and time t [m]: the length of the tangential part
   // of its displacement relative to its master point (or to the moving obstacle) since t = 0;
@@ -86,14 +94,15 @@ class ContactManager {
   std::vector<double> gapRates(const Vector& v) const;
   // Normal force of each node at u with the current statuses and pressures.
   std::vector<double> forces(const Vector& u) const;
-  // out -= f_s B_s^T on the rows this rank owns; returns the norm of the constraint
-  // equations' residual (multiplier rows, force units; 0 for penalty).
-  double addForces(const Vector& u, Vector& out) const;
-  // Right-hand side of constraint row s at u (force units): active -scale g_s, else lambda_s.
-  double rowResidual(int s, double gap) const;
-  // lambda += scale * dLambdaScaled (the multiplier unknowns are lambda / scale).
-  void applyCorrection(const std::vector<double>& dLambdaScaled);
-  void scaleLastCorrection(double factor) { set_.scaleLastCorrection(factor); }
+  // out -= f_s B_s^T on the rows this rank owns, and friction's forces (a trial of its law);
+  // returns the norm of the constraint equations' residual (multiplier rows, force units; 0 for
+  // penalty).
+  double addForces(const Vector& u, Vector& out);
+  // u at the contact DOFs (every constraint's terms, sorted; replicated), and the gaps of such values.
+  std::vector<double> contactValues(const Vector& u) const;
+  std::vector<double> gapsAt(const std::vector<double>& x) const;
+  // Per constraint: its terms as (index into the contact DOFs, coefficient).
+  const std::vector<std::vector<std::pair<int, double>>>& localTerms() const { return localTerms_; }
 
   // Before each step (and the initial state): the constraints against rigid obstacles are
   // re-linearised at u (the last accepted state) with the obstacles placed at time t:
@@ -127,63 +136,30 @@ class ContactManager {
   bool hasFriction() const { return friction_ != nullptr; }
   const CoulombFriction* friction() const { return friction_.get(); }
   CoulombFriction* friction() { return friction_.get(); }
-  // Work of the pairs' friction dissipated since the start [J] (0 without friction).
-  double frictionDissipation() const { return friction_ ? friction_->dissipation() : 0.0; }
 
-  // Forward-increment Lagrange multipliers (explicit central differences, Carpenter, Taylor
-  // and Katona 1991): the pressures lambda >= 0 for which the predicted positions uStar +
-  // h2 M^-1 B^T lambda have no negative gap, lambda_s = 0 where the gap is open; projected
-  // Gauss-Seidel on h2 B M^-1 B^T (diagonal against obstacles: one sweep). Sets the statuses
-  // and pressures and adds M^-1 B^T lambda to a on the rows this rank owns. Collective.
-  // Throws NumericalError when the sweeps do not converge. inverseMass must be the same at
-  // every call (its values at the contact DOFs are gathered once per pairing).
-  // With friction (pairs with mu > 0): then each active node's tangential force that stops its
-  // relative tangential motion from u to uStar, capped at mu lambda (CoulombFriction::increment),
-  // h the sub-step (uStar is the position at the time of beginStep plus h). useForwardIncrements
-  // must have been called: the friction of an explicit run is decided here, not by the implicit
-  // law of beginStep and commitMotion.
-  void forwardIncrement(const Vector& u, const Vector& uStar, const Vector& inverseMass, double h, double h2,
-                        Vector& a);
-  void useForwardIncrements(bool on) {
-    if (friction_) friction_->useForwardIncrements(on);
-  }
-  void initialize(const Vector& u);          // statuses from the gaps at u, lambda = 0
-  StatusUpdate updateStatus(const Vector& u);  // complementarity test, all ranks agree
-  void commit();
-  void revert();
   // Statuses, pressures and the multiplier scale in a checkpoint ("contact/*"), and back.
   void archive(StateArchive& a) const;
   void restore(const StateArchive& a);
 
+  // The active set (the strategy's decisions: statuses, pressures, their accepted copies, scale).
+  ContactActiveSet& activeSet() { return set_; }
+  const ContactActiveSet& activeSet() const { return set_; }
   const std::vector<char>& status() const { return set_.status; }
   const std::vector<double>& pressures() const { return set_.lambda; }  // lambda_s [N]
-  int activeCount() const;
+  int activeCount() const { return set_.activeCount(); }
   // Per pair, its slave nodes in contact: "pair 'slide': 28 of 28 nodes in contact, ...".
   std::string activeSummary() const;
   double energy(const Vector& u) const;
-  int statusVersion() const { return set_.version; }  // bumped whenever a status changes
-
-  // Scale of the multiplier rows (a typical diagonal of the effective matrix), so that the
-  // saddle-point system is balanced; set once before the first solve.
-  void setScale(double s) { set_.scale = s; }
-  double scale() const { return set_.scale; }
   RCP<const Comm> comm() const { return map_->getComm(); }
 
  private:
   void indexTerms();
   void followSurfaces(const Vector& u);
-  std::map<int, std::map<int, SlaveProjection>> followMortar() const;
   void placeObstacles(const Vector& u, double t);
-  Vec3 tangentialOffset(const ContactConstraint& c) const;  // at the followed positions
-  std::vector<double> contactValues(const Vector& u) const;  // u at contactDofs_, replicated
-  std::vector<double> gapsAt(const std::vector<double>& x) const;  // gaps from contactValues
-  std::vector<double> gather(const std::vector<GO>& dofs, const Vector& u) const;  // replicated
-  void buildSlipTerms(const DofMap& dofs);
   std::unique_ptr<CoulombFriction> friction_;  // null without friction
   void archivePairing(StateArchive& a) const;
   void restorePairing(const StateArchive& a);
-  std::vector<GO> slipDofs_;  // every component of the slave and master nodes
-  std::vector<std::array<std::vector<std::pair<int, double>>, 3>> slipTerms_;
+  SlipTerms slipTerms_;  // the relative motion of every constraint, for the slips
   std::vector<PairDefinition> pairs_;
   std::unique_ptr<ContactMethod> method_;
   RCP<const Map> map_;
@@ -198,11 +174,19 @@ class ContactManager {
   std::vector<double> slip_;     // followed surfaces: accumulated slip [m]
   std::vector<Vec3> slipStart_;  // tangential offset at the last beginStep
   bool paired_ = false;          // slipStart_ holds the offsets of the current pairing
-  std::vector<double> inverseMassAtContact_;  // forwardIncrement: 1/m at contactDofs_
-  int inverseMassTopology_ = -1;               // the topologyVersion_ it was gathered for
   bool hasObstacles_ = false, hasCurvedObstacles_ = false;
   std::vector<double> slaveSize_;  // per constraint against an obstacle: its slave faces' shortest edge
-  void measureSlaveSizes(const Mesh& mesh);
 };
+
+// Per constraint against an obstacle: the shortest edge of its slave node's faces (0 elsewhere).
+std::vector<double> slaveFaceSizes(const Mesh& mesh, const std::vector<PairDefinition>& pairs,
+                                   const std::vector<ContactConstraint>& constraints);
+
+// Power [W] the moving rigid obstacles give the body at u: the sum over their slave nodes of the
+// normal force times the obstacle's velocity along the normal (0 without obstacles). Collective.
+double obstaclePowerAt(const ContactManager& contact, const Vector& u);
+
+// Per mesh node: 1 for the nodes of every pair's master and slave side sets.
+std::vector<char> contactSurfaceNodes(const ContactManager& contact, const Mesh& mesh);
 
 }  // namespace choc

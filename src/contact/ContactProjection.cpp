@@ -29,14 +29,6 @@ int initialSparseFrom() {
 
 int ContactProjection::sparseFrom = initialSparseFrom();
 
-bool ContactProjection::applies(const ContactManager& contact) {
-  if (!contact.method().hasMultipliers() || contact.method().stiffness() != 0.0 || contact.numPairs() == 0)
-    return false;
-  for (int p = 0; p < contact.numPairs(); ++p)
-    if (!contact.pair(p).hasObstacle) return true;
-  return false;
-}
-
 // C's entries on this rank's rows and G = C^T C from the constraints' terms (the same on every
 // rank), factored.
 void ContactProjection::build() {
@@ -250,7 +242,7 @@ void ContactProjection::rightHandSide(const CrsMatrix& W, const Vector& r, const
   }
   const std::vector<double> g = contact_.gaps(u);
   d0Coef_.assign(active_.size(), 0.0);
-  for (size_t k = 0; k < active_.size(); ++k) d0Coef_[k] = contact_.rowResidual(active_[k], g[active_[k]]) / scale();
+  for (size_t k = 0; k < active_.size(); ++k) d0Coef_[k] = contact_.activeSet().rowResidual(active_[k], g[active_[k]]) / scale();
   solveG(d0Coef_);
   Vector d0(map_);  // C G^-1 t
   {
@@ -286,9 +278,9 @@ void ContactProjection::takeSolution(const CrsMatrix& W, const MultiVector& x, V
   for (size_t k = 0; k < active_.size(); ++k)
     if (contact_.constraints()[active_[k]].owner == rank) mine[active_[k]] = y[k] / S;
   for (int s = 0; s < nS; ++s)  // an inactive node's pressure returns to 0
-    if (!contact_.status()[s] && contact_.constraints()[s].owner == rank) mine[s] = -contact_.rowResidual(s, 0.0) / S;
+    if (!contact_.status()[s] && contact_.constraints()[s].owner == rank) mine[s] = -contact_.activeSet().rowResidual(s, 0.0) / S;
   Teuchos::reduceAll<int, double>(*map_->getComm(), Teuchos::REDUCE_SUM, nS, mine.data(), all.data());
-  contact_.applyCorrection(all);
+  contact_.activeSet().applyCorrection(all);
 }
 
 }  // namespace choc

@@ -26,9 +26,6 @@ namespace choc {
 
 class ContactProjection : public ConstraintProjector {
  public:
-  // Lagrange multipliers (no stiffness in the matrix), some pair between meshed bodies
-  // (otherwise ContactCondensation serves).
-  static bool applies(const ContactManager& contact);
   ContactProjection(ContactManager& contact, RCP<const Map> dofMap) : contact_(contact), map_(std::move(dofMap)) {}
 
   void project(const MultiVector& X, MultiVector& Y) const override;
@@ -36,7 +33,7 @@ class ContactProjection : public ConstraintProjector {
   // The saddle-point matrix's entries in the multipliers' columns besides -sigma C (friction's,
   // global column multiplierBase + s; rows this rank owns), from each fill: V = C - entries / sigma.
   void setMultiplierColumns(std::vector<MatrixEntry> entries, GO multiplierBase);
-  double scale() const override { return contact_.scale(); }
+  double scale() const override { return contact_.activeSet().scale; }
   // b = P (-r - W d0) at u, for the current statuses and coefficients (C and G rebuilt when
   // they changed). Throws NumericalError when the active constraints are linearly dependent.
   void rightHandSide(const CrsMatrix& W, const Vector& r, const Vector& u, MultiVector& b);

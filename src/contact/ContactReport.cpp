@@ -113,12 +113,16 @@ std::vector<ImpactSample> ContactReport::impactSamples() const {
   return out;
 }
 
-double ContactReport::obstaclePower() const {
+double obstaclePowerAt(const ContactManager& contact, const Vector& u) {
+  bool obstacles = false;
+  for (int p = 0; p < contact.numPairs(); ++p) obstacles = obstacles || contact.pair(p).hasObstacle;
+  if (!obstacles) return 0.0;
+  const std::vector<double> f = contact.forces(u);
   double p = 0.0;
-  for (int s = 0; s < contact_.numConstraints(); ++s) {
-    const auto& geo = contact_.constraints()[s].geometry;
-    const PairDefinition& pair = contact_.pair(geo.pair);
-    if (pair.hasObstacle) p += forces_[s] * dot(geo.normal, pair.obstacle.velocity);
+  for (int s = 0; s < contact.numConstraints(); ++s) {
+    const auto& geo = contact.constraints()[s].geometry;
+    const PairDefinition& pair = contact.pair(geo.pair);
+    if (pair.hasObstacle) p += f[s] * dot(geo.normal, pair.obstacle.velocity);
   }
   return p;
 }

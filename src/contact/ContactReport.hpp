@@ -31,9 +31,6 @@ class ContactReport : public InteractionOutput {
   // Per pair: the total normal force, the smallest gap and that node's gap rate.
   std::vector<std::string> impactNames() const override;
   std::vector<ImpactSample> impactSamples() const override;
-  // Power [W] the moving rigid obstacles give the body at the recorded state: sum over their
-  // slave nodes of the normal force times the obstacle's velocity along the normal.
-  double obstaclePower() const;
 
  private:
   const ContactManager& contact_;

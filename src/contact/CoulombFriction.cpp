@@ -84,7 +84,7 @@ Vec3 CoulombFriction::relativeMotion(int s, const std::vector<double>& x, double
 
 // The return mapping of every active node at the values x (gaps g): force, status, and for a
 // sliding node the trial force's direction and size and the normal force.
-void CoulombFriction::evaluate(const std::vector<double>& x, const std::vector<double>& g) const {
+void CoulombFriction::evaluate(const std::vector<double>& x, const std::vector<double>& g) {
     ++evaluations_;
   for (size_t s = 0; s < g_.constraints.size(); ++s) {
     CoulombPoint& p = point_[s];
@@ -112,7 +112,7 @@ void CoulombFriction::evaluate(const std::vector<double>& x, const std::vector<d
 
 
 void CoulombFriction::addForces(const std::vector<double>& x, const std::vector<double>& g,
-                                       Vector& out) const {
+                                       Vector& out) {
   evaluate(x, g);
   auto data = out.getDataNonConst();
   for (size_t s = 0; s < g_.constraints.size(); ++s) {

@@ -52,7 +52,7 @@ class CoulombFriction {
 
   // The implicit law at the contact DOFs' values x (gaps g): out -= the friction forces on the
   // rows this rank owns (a trial: the law's state of this evaluation kept for the tangent).
-  void addForces(const std::vector<double>& x, const std::vector<double>& g, Vector& out) const;
+  void addForces(const std::vector<double>& x, const std::vector<double>& g, Vector& out);
   // Matrix entries of the tangent (d residual / d(u, lambda / scale)) at the last evaluation, on
   // the rows this rank owns; multiplierBase: the global id of constraint 0's multiplier row.
   std::vector<MatrixEntry> tangent(GO multiplierBase) const;
@@ -92,7 +92,7 @@ class CoulombFriction {
     GO dof;
   };
   Vec3 relativeMotion(int s, const std::vector<double>& x, double t) const;
-  void evaluate(const std::vector<double>& x, const std::vector<double>& g) const;
+  void evaluate(const std::vector<double>& x, const std::vector<double>& g);
   std::vector<Vec3> tangentialForces(const std::vector<Vec3>& predicted, const std::vector<Vec3>& d,
                                      const std::vector<char>& acts, const std::vector<double>& w, double h2,
                                      double scale, const std::function<std::string()>& where) const;
@@ -108,11 +108,11 @@ class CoulombFriction {
   double dissipated_ = 0.0;
   std::vector<double> pairWork_;  // per pair: its part of dissipated_
   double time_ = 0.0;             // end of the current step
-  // The last evaluation (a trial of the const residual; the contact strategies will make it an
-  // explicit trial): the law's state per node (CoulombLaw.hpp) and its normal force.
-  mutable std::vector<CoulombPoint> point_;
-  mutable std::vector<double> normalForce_;
-  mutable long long evaluations_ = 0;
+  // The last evaluation (the trial of the residual's addForces): the law's state per node
+  // (CoulombLaw.hpp) and its normal force.
+  std::vector<CoulombPoint> point_;
+  std::vector<double> normalForce_;
+  long long evaluations_ = 0;
   // Within a step: each node's last slip direction and how often an iterate reversed it. An
   // iterate that slides against the node's last slip direction jumped over the stick band
   // 2 mu f_N / k_t (the slip tangent has no stiffness along the slip: Newton crosses the band
@@ -120,8 +120,8 @@ class CoulombFriction {
   // stiffness, a linear law): the next iterate lands where the stick force balances, inside
   // the band if the node sticks. Twice per node and step at most, so that Newton converges on
   // the Coulomb law itself.
-  mutable std::vector<Vec3> lastDirection_;
-  mutable std::vector<int> reversals_;
+  std::vector<Vec3> lastDirection_;
+  std::vector<int> reversals_;
 };
 
 }  // namespace choc

@@ -13,7 +13,8 @@
 
 namespace choc {
 
-void ContactManager::measureSlaveSizes(const Mesh& mesh) {
+std::vector<double> slaveFaceSizes(const Mesh& mesh, const std::vector<PairDefinition>& pairs_,
+                                   const std::vector<ContactConstraint>& constraints_) {
   std::map<std::pair<int, int>, double> shortest;  // (pair, slave node) -> shortest edge of its faces
   for (size_t p = 0; p < pairs_.size(); ++p) {
     // A slave node set (no faces: a shock link's node against an obstacle) has no size to judge by.
@@ -37,12 +38,13 @@ void ContactManager::measureSlaveSizes(const Mesh& mesh) {
       }
     }
   }
-  slaveSize_.assign(constraints_.size(), 0.0);
+  std::vector<double> size(constraints_.size(), 0.0);
   for (size_t s = 0; s < constraints_.size(); ++s) {
     const SlaveProjection& g = constraints_[s].geometry;
     const auto it = shortest.find({g.pair, g.slaveNode});
-    if (g.masterFace < 0 && it != shortest.end()) slaveSize_[s] = it->second;
+    if (g.masterFace < 0 && it != shortest.end()) size[s] = it->second;
   }
+  return size;
 }
 
 void ContactManager::checkPenetration(const Vector& u, ElementValidity& v) const {

@@ -55,7 +55,7 @@ void TransientReport::summarizeCounts(RunSummary& s, const TransientSummary& sum
     s.set("factorizations", figures_.refactorizations);
     s.set("kept_factorizations", figures_.keptFactorizations);
     s.set("krylov_iterations", sum.krylovIterations);
-    s.set("linear_solver/description", op_.solver().description());
+    s.set("linear_solver/description", op_.correction().solver().description());
     s.set("linear_solver/choice", f_.solverChoice);
   }
   if (contact_) {
@@ -69,9 +69,7 @@ namespace {
 // " (+ n contact pressures[, how they leave the Newton system])", or "" without multipliers.
 std::string pressuresClause(const ContactManager* contact, const StructuralOperator& op) {
   if (!contact || !contact->method().hasMultipliers()) return "";
-  const char* how = op.condensedContact()   ? ", condensed out of the Newton system node by node"
-                    : op.projectedContact() ? ", projected out of the Newton system (C^T du = t by P = I - C (C^T C)^-1 C^T)"
-                                            : "";
+  const std::string how = op.contact() ? op.contact()->pressuresNote() : "";
   return " (+ " + std::to_string(contact->numConstraints()) + " contact pressures" + how + ")";
 }
 
@@ -95,7 +93,7 @@ void TransientReport::describe(Model& model, const CrsMatrix& runMass) const {
         << (f_.startTime != 0 ? " from " + shortNumber(f_.startTime) + " s" : std::string()) << " to "
         << f_.endTime << " s; Rayleigh C = "
         << f_.rayleighK << " K + " << f_.rayleighM << " M; "
-        << (f_.explicitScheme ? std::string("no linear solve") : "linear solver " + op_.solver().description())
+        << (f_.explicitScheme ? std::string("no linear solve") : "linear solver " + op_.correction().solver().description())
         << (f_.explicitScheme || f_.solverChoice.empty() ? std::string() : " (" + f_.solverChoice + ")")
         << "\n";
   if (f_.masslessNodes > 0) {
@@ -108,7 +106,7 @@ void TransientReport::describe(Model& model, const CrsMatrix& runMass) const {
     log() << format("  contact mass: redistributed: %lld contact-surface nodes massless (%lld DOFs); "
                     "1^T M 1 over the free DOFs (the mass once per free direction: 3 x the mass in "
                     "3D with every direction free) %.12g -> %.12g kg\n",
-                    f_.masslessNodes, op_.masslessDofs(), before, one.dot(y));
+                    f_.masslessNodes, op_.mass().masslessDofs(), before, one.dot(y));
   }
   if (!f_.massFallback.empty())
     log() << "  contact mass: standard ('auto' could not redistribute it: " << f_.massFallback << ")\n";
@@ -137,12 +135,12 @@ void TransientReport::record(const TransientSummary& sum, const Teuchos::Stacked
                              std::chrono::steady_clock::time_point start) {
   figures_.steps = sum.steps;
   figures_.newtonIterations = sum.newtonIterations;
-  figures_.refactorizations = op_.factorizations();
-  figures_.keptFactorizations = op_.keptFactorizations();
+  figures_.refactorizations = op_.correction().factorizations();
+  figures_.keptFactorizations = op_.correction().keptFactorizations();
   figures_.activeSetIterations = sum.activeSetIterations;
   figures_.maxNewtonPerStep = sum.maxNewtonPerStep;
   figures_.failedSteps = sum.failedSteps;
-  figures_.unknowns = op_.unknowns();
+  figures_.unknowns = op_.correction().unknowns(int(op_.map()->getGlobalNumElements()));
   auto& t = const_cast<Teuchos::StackedTimer&>(timer);  // accumulatedTime is not const
   figures_.assembly = t.accumulatedTime("Transient: assembly");
   figures_.linearSolve = t.accumulatedTime("Transient: linear solve");

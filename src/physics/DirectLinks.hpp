@@ -16,7 +16,7 @@
 #include <array>
 #include <vector>
 
-#include "contact/ContactSystem.hpp"
+#include "contact/MatrixEntry.hpp"
 #include "core/TpetraTypes.hpp"
 #include "physics/ShockLinks.hpp"
 

@@ -16,11 +16,11 @@ namespace choc {
 
 StructuralOperator::StructuralOperator(std::shared_ptr<InternalForce> internal, RCP<const CrsMatrix> M,
                                        double rayleighK, double rayleighM, std::shared_ptr<const Loads> loads,
-                                       ContactManager* contact, DirectLinks* links,
+                                       ContactStrategy* contact, DirectLinks* links,
                                        std::unique_ptr<LinearSolver> solver, Teuchos::StackedTimer* timer)
     : internal_(std::move(internal)), mass_(std::move(M), rayleighK, rayleighM, internal_),
-      loads_(std::move(loads)), contact_(contact), links_(links), solver_(std::move(solver)), timer_(timer),
-      ku_(internal_->map(), 1) {}
+      loads_(std::move(loads)), contact_(contact), links_(links), timer_(timer),
+      newton_(std::move(solver), mass_, contact, links, timer), ku_(internal_->map(), 1), work_(loads_.get()) {}
 
 // The tangent at u = 0: its matrix object, which each correction refills (evaluateTangent).
 const RCP<const CrsMatrix>& StructuralOperator::tangentMatrix() {
@@ -29,29 +29,6 @@ const RCP<const CrsMatrix>& StructuralOperator::tangentMatrix() {
     K_ = internal_->tangent(zero);
   }
   return K_;
-}
-
-// The effective system is built at the first correction (an explicit run never builds it).
-ContactSystem& StructuralOperator::system() {
-  if (system_ && contact_ && contact_->topologyVersion() != systemTopology_) {
-    system_.reset();  // a slave node changed master face: a new graph (and factorisation)
-    factored_.forget();
-  }
-  if (!system_) {
-    systemTopology_ = contact_ ? contact_->topologyVersion() : 0;
-    system_ = std::make_unique<ContactSystem>(tangentMatrix(), mass_.matrix(), contact_,
-                                              links_ ? links_->couplings() : std::vector<std::vector<GO>>(), condense_);
-    rhs_ = rcp(new MultiVector(system_->map(), 1));
-    x_ = rcp(new MultiVector(system_->map(), 1));
-    if (system_->projection() && !solver_->setProjection(system_->projection()))
-      throw std::logic_error("the linear solver cannot project out the contact multipliers (a direct solver)");
-  }
-  return *system_;
-}
-
-int StructuralOperator::unknowns() const {
-  if (system_) return int(system_->map()->getGlobalNumElements());
-  return int(internal_->map()->getGlobalNumElements());
 }
 
 double StructuralOperator::strainEnergy(const Vector& u) const {
@@ -79,84 +56,21 @@ double StructuralOperator::addConstraintForces(const Vector& u, const Vector& v,
   if (!contact_ && !links_) return 0.0;
   TimerScope ts(timer_, "Transient: contact");
   if (links_) links_->addForces(u, v, out);
-  return contact_ && !forwardIncrement_ ? contact_->addForces(u, out) : 0.0;
+  return contact_ ? contact_->addForces(u, out) : 0.0;
 }
 
-// K_'s values at u (a linear model: K, always version 0); the finite-strain elements' tangents
-// count as assembly.
-void StructuralOperator::evaluateTangent(const Vector& u) {
-  TimerScope ts(timer_, "Transient: assembly");
-  internal_->tangent(u);
-}
-
-CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients& c,
-                                                     const Vector& u, const Vector& r, Vector& du) {
-  CorrectionStatus st;
-  if (restoreKept_) restoreKeptFactorization();
-  ContactSystem& sys = system();
-  evaluateTangent(u);
-  std::vector<char> status = sys.statusKey();
-  // The links' tangent, with v following u (dv/du = cv / cd); none for W = M.
-  const bool linkTangent = links_ && c.cd > 0.0;
-  if (linkTangent) {
-    const std::vector<char> lk = links_->tangentKey();
-    status.insert(status.end(), lk.begin(), lk.end());
-  }
-  FactorizationKey key = keyOf(c, std::move(status));
-  const KeyChange change = factored_.compare(key);
-  if (change != KeyChange::None) {
-    {
-      TimerScope ts(timer_, "Transient: assembly");
-      if (key.tangent != filledTangent_) sys.stiffnessChanged();
-      filledTangent_ = key.tangent;
-      sys.fill(mass_.massCoefficient(c), mass_.stiffnessCoefficient(c),
-                    linkTangent ? links_->tangent(c.cv / c.cd) : std::vector<MatrixEntry>());
-    }
-    TimerScope ts(timer_, "Transient: linear solve");
-    // throws NumericalError when singular
-    if (change == KeyChange::StatusOnly)
-      solver_->updateMatrix(sys.matrix());  // a change of status: contact rows only
-    else
-      solver_->setMatrix(sys.matrix());
-    factored_.record(std::move(key));
-    st.refactored = true;
-  }
+// The system prepared (a checkpoint's factorisation rebuilt, the graph after a new pairing), then
+// the tangent at u, then the solve.
+CorrectionStatus StructuralOperator::solveCorrection(const EffectiveCoefficients& c, const Vector& u,
+                                                     const Vector& r, Vector& du) {
+  newton_.prepare(tangentMatrix(), internal_->tangentVersion());
   {
-    TimerScope ts(timer_, "Transient: contact");
-    sys.rightHandSide(r, u, *rhs_);
+    // K_'s values at u (a linear model: K, always version 0); the finite-strain elements'
+    // tangents count as assembly.
+    TimerScope ts(timer_, "Transient: assembly");
+    internal_->tangent(u);
   }
-  x_->putScalar(0.0);
-  LinearSolveStatus ls;
-  {
-    TimerScope ts(timer_, "Transient: linear solve");
-    solver_->relaxTolerance(nextLooser_);
-    ls = solver_->solve(*rhs_, *x_);
-    solver_->relaxTolerance(0.0);
-    nextLooser_ = 0.0;
-  }
-  // A new factorisation (here or inside the solve) is of the current matrix: its entries are
-  // what a checkpoint must rebuild it from while the solver may keep it.
-  if (solver_->factorizations() != recordedFactorizations_ && solver_->mayKeepFactorization()) {
-    kept_.factored = sys.lastEntries();
-    kept_.coefficients = c;
-    recordedFactorizations_ = solver_->factorizations();
-  }
-  st.ok = ls.converged;
-  st.iterations = ls.iterations;
-  st.message = ls.message;
-  if (!st.ok) return st;
-  TimerScope ts(timer_, "Transient: contact");
-  sys.takeSolution(*x_, du);
-  return st;
-}
-
-// The key of W = ca M + cv C + cd K_T with the given statuses, at the tangent's version.
-FactorizationKey StructuralOperator::keyOf(const EffectiveCoefficients& c, std::vector<char> status) const {
-  FactorizationKey k;
-  k.coefficients = {c.ca, c.cv, c.cd};
-  k.tangent = internal_->tangentVersion();
-  k.status = std::move(status);
-  return k;
+  return newton_.solve(c, internal_->tangentVersion(), u, r, du);
 }
 
 // Initial acceleration with massless DOFs (redistributed contact mass): by blocks
@@ -164,8 +78,9 @@ FactorizationKey StructuralOperator::keyOf(const EffectiveCoefficients& c, std::
 CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, const Vector& r,
                                                               Vector& a) {
   if (mass_.masslessDofs() == 0) return SecondOrderOperator::solveInitialAcceleration(u, r, a);
-  factored_.forget();  // the next correction refactors the effective matrix
-  return solveMasslessInitialAcceleration(*tangentMatrix(), *mass_.matrix(), mass_.masslessMask(), *solver_, timer_, r, a);
+  newton_.forget();  // the next correction refactors the effective matrix
+  return solveMasslessInitialAcceleration(*tangentMatrix(), *mass_.matrix(), mass_.masslessMask(), newton_.solver(),
+                                          timer_, r, a);
 }
 
 void StructuralOperator::beginStep(const Vector& u, double t, double dt) {
@@ -180,7 +95,7 @@ double StructuralOperator::elasticTermsNorm(const Vector& u) const { return inte
 void StructuralOperator::addExplicitContact(const Vector& u, const Vector& uStar, const Vector& inverseMass,
                                             double h, double h2, Vector& a) {
   TimerScope ts(timer_, "Transient: contact");
-  contact_->forwardIncrement(u, uStar, inverseMass, h, h2, a);
+  contact_->addExplicitIncrement(u, uStar, inverseMass, h, h2, a);
 }
 
 void StructuralOperator::commitMotion(const Vector& u) {
@@ -191,7 +106,7 @@ void StructuralOperator::commitMotion(const Vector& u) {
 
 ConstraintUpdate StructuralOperator::updateConstraints(const Vector& u) {
   ConstraintUpdate up;
-  if (!contact_ || forwardIncrement_) return up;
+  if (!contact_ || contact_->incrementsExplicitly()) return up;
   TimerScope ts(timer_, "Transient: contact");
   const StatusUpdate s = contact_->updateStatus(u);
   up.changed = s.changed;
@@ -208,7 +123,7 @@ ElementValidity StructuralOperator::validity(const Vector& u) const {
   TimerScope ts(timer_, "Transient: validity");
   ElementValidity v = internal_->validity(u);
   if (domain_) domain_->check(u, v);
-  if (contact_) contact_->checkPenetration(u, v);
+  if (contact_) contact_->geometry().checkPenetration(u, v);
   return v;
 }
 
@@ -226,37 +141,39 @@ void StructuralOperator::archive(StateArchive& a) const {
   internal_->archive(a);
   if (contact_) contact_->archive(a);
   if (links_) links_->archive(a);
-  if (system_ && factored_.valid() && solver_->mayKeepFactorization()) {
-    KeptFactorization k = kept_;
-    k.last = system_->lastEntries();
-    k.keyStatus = factored_.key().status;
-    k.solverState = solver_->keptState();
-    k.archive(a, *internal_->map()->getComm());
-  }
+  newton_.archive(a, *internal_->map()->getComm());
 }
 void StructuralOperator::restore(const StateArchive& a) {
   internal_->restore(a);
   if (contact_) contact_->restore(a);
   if (links_) links_->restore(a);
-  restoreKept_ = kept_.restore(a, *internal_->map()->getComm());
+  newton_.restore(a, *internal_->map()->getComm());
 }
 
-// The checkpoint's factored matrix, factored again, then its last filled matrix on the
-// kept factorisation with the solver's state: the path of the run that wrote it.
-void StructuralOperator::restoreKeptFactorization() {
-  restoreKept_ = false;
-  ContactSystem& sys = system();
-  const EffectiveCoefficients& c = kept_.coefficients;
-  const double aM = mass_.massCoefficient(c), aK = mass_.stiffnessCoefficient(c);
-  TimerScope ts(timer_, "Transient: linear solve");
-  sys.fillEntries(aM, aK, kept_.factored);  // rows another rank owns are skipped
-  solver_->setMatrix(sys.matrix());
-  kept_.factored = sys.lastEntries();
-  recordedFactorizations_ = solver_->factorizations();
-  sys.fillEntries(aM, aK, kept_.last);
-  if (!kept_.solverState.empty() && kept_.solverState[0] != 0) solver_->updateMatrix(sys.matrix());
-  solver_->restoreKeptState(kept_.solverState);
-  factored_.record(keyOf(c, kept_.keyStatus));
+// The damping's and the moving obstacles' work by the trapezoidal rule on their power, the
+// loads' by LoadWork.
+StateEnergies StructuralOperator::energies(const Vector& u, const Vector& v, const Vector& a, double time, double dt,
+                                           double substep) {
+  StateEnergies e;
+  e.kinetic = mass_.kineticEnergy(v);
+  e.strain = strainEnergy(u);
+  e.contact = (contact_ ? contact_->geometry().energy(u) : 0.0) + (links_ ? links_->springEnergy() : 0.0);
+  const double power = mass_.dampingPower(v, e.kinetic);
+  work_.damping += 0.5 * dt * (work_.lastDampingPower + power);
+  work_.lastDampingPower = power;
+  const double friction =
+      contact_ && contact_->geometry().hasFriction() ? contact_->geometry().friction()->dissipation() : 0.0;
+  e.dissipated = work_.damping + (links_ ? links_->dissipatedEnergy() : 0.0) + friction + internal_->dissipatedWork();
+  e.plastic = internal_->dissipatedWork();
+  e.hourglass = internal_->hourglassEnergy(u);
+  const double obstaclePower = contact_ ? obstaclePowerAt(contact_->geometry(), u) : 0.0;
+  work_.obstacles += 0.5 * dt * (work_.lastObstaclePower + obstaclePower);
+  work_.lastObstaclePower = obstaclePower;
+  e.external = work_.loadWork.update(u, time) + work_.obstacles;
+  // Central differences: the part of the energy the scheme's conserved energy leaves out,
+  // (h^2/8) a^T M a = (h^2/4) x "the kinetic energy of a".
+  if (substep > 0) e.shadow = 0.25 * substep * substep * mass_.kineticEnergy(a);
+  return e;
 }
 
 }  // namespace choc

@@ -1,5 +1,5 @@
 // The one lifecycle of every state that follows the steps of a transient: the material points'
-// (InternalForce), the contact statuses, multipliers and friction (ContactManager), the shock
+// (InternalForce), the contact statuses, multipliers and friction (ContactStrategy over ContactManager), the shock
 // links' (DirectLinks, ModalLinks), and the operator and steppers that hold them. Named once:
 //
 //   trial     an evaluation at a trial u (a residual, a Newton iterate) computes the state at u

@@ -18,7 +18,8 @@
 #include <Tpetra_Vector.hpp>
 
 #include "contact/ContactManager.hpp"
-#include "contact/ContactSystem.hpp"
+#include "contact/ContactStrategies.hpp"
+#include "physics/EffectiveSystem.hpp"
 #include "core/Errors.hpp"
 #include "physics/Model.hpp"
 #include "solvers/LinearSolver.hpp"
@@ -71,7 +72,7 @@ double maxOverRanks(const Comm& comm, double v) {
   return all;
 }
 
-void solve(ContactSystem& sys, const Vector& r, const Vector& u, Vector& du) {
+void solve(EffectiveSystem& sys, const Vector& r, const Vector& u, Vector& du) {
   Teuchos::ParameterList p = linearSolverParameters();
   p.set("Method", "Direct");
   p.set("Direct Package", "KLU2");
@@ -89,15 +90,16 @@ void checkCondensation(const std::vector<std::pair<Vec3, Vec3>>& planes, const s
   Model& model = *block.model;
   auto saddle = block.manager(planes), condensed = block.manager(planes);
   Vector u(model.map());
-  saddle->initialize(u);
-  condensed->initialize(u);
+  SaddlePointStrategy saddleRows(*saddle);
+  CondensedStrategy condensedRows(*condensed);
+  saddleRows.initialize(u);
+  condensedRows.initialize(u);
   ASSERT_GT(saddle->numConstraints(), 0);
   ASSERT_EQ(saddle->activeCount(), saddle->numConstraints()) << "every node pressed into every plane";
-  ContactSystem ext(model.stiffness(), model.mass(), saddle.get());
-  ContactSystem con(model.stiffness(), model.mass(), condensed.get(), {}, true);
-  ASSERT_TRUE(ext.extended());
-  ASSERT_TRUE(con.condensed());
-  ASSERT_FALSE(con.extended());
+  EffectiveSystem ext(model.stiffness(), model.mass(), &saddleRows);
+  EffectiveSystem con(model.stiffness(), model.mass(), &condensedRows);
+  ASSERT_GT(ext.map()->getGlobalNumElements(), model.map()->getGlobalNumElements()) << "multiplier rows";
+  ASSERT_EQ(con.map()->getGlobalNumElements(), model.map()->getGlobalNumElements()) << "condensed";
   ext.fill(kAM, kAK);
   con.fill(kAM, kAK);
 
@@ -156,15 +158,17 @@ TEST(MpiContactCondensation, SlidingFrictionGivesTheSaddlePointsCorrectionAndPre
   const std::vector<std::pair<Vec3, Vec3>> plane{{{0.1, 0.05, 1.0}, {0, 0, 0.02}}};
   auto saddle = block.manager(plane, 0.3), condensed = block.manager(plane, 0.3);
   Vector u(model.map()), r(model.map()), du(model.map());
-  for (ContactManager* cm : {saddle.get(), condensed.get()}) {
-    cm->friction()->setTangentialStiffness(1e12);
-    cm->beginStep(u, 1e-6, 1e-6);
-    cm->initialize(u);
+  SaddlePointStrategy saddleRows(*saddle);
+  CondensedStrategy condensedRows(*condensed);
+  for (ContactStrategy* cs : {static_cast<ContactStrategy*>(&saddleRows), static_cast<ContactStrategy*>(&condensedRows)}) {
+    cs->geometry().friction()->setTangentialStiffness(1e12);
+    cs->beginStep(u, 1e-6, 1e-6);
+    cs->initialize(u);
   }
   r.randomize();
   r.scale(1e3);
-  ContactSystem ext(model.stiffness(), model.mass(), saddle.get());
-  ContactSystem con(model.stiffness(), model.mass(), condensed.get(), {}, true);
+  EffectiveSystem ext(model.stiffness(), model.mass(), &saddleRows);
+  EffectiveSystem con(model.stiffness(), model.mass(), &condensedRows);
   ext.fill(kAM, kAK);
   con.fill(kAM, kAK);
   solve(ext, r, u, du);  // the pressures (no friction force yet: lambda was 0)
@@ -181,7 +185,6 @@ TEST(MpiContactCondensation, SlidingFrictionGivesTheSaddlePointsCorrectionAndPre
   ASSERT_GT(sliding, 0) << "nodes sliding";
   ext.fill(kAM, kAK);
   con.fill(kAM, kAK);
-  ASSERT_TRUE(con.condensed());
   Vector due(model.map()), duc(model.map());
   solve(ext, r, push, due);
   solve(con, r, push, duc);
@@ -203,8 +206,9 @@ TEST(MpiContactCondensation, ParallelPlanesAtANodeAreANumericalError) {
   Block block("condensation_parallel");
   auto cm = block.manager({{{0, 0, 1}, {0, 0, 0.02}}, {{0, 0, 2}, {0, 0, 0.03}}});
   Vector u(block.model->map());
-  cm->initialize(u);
-  ContactSystem con(block.model->stiffness(), block.model->mass(), cm.get(), {}, true);
+  CondensedStrategy rows(*cm);
+  rows.initialize(u);
+  EffectiveSystem con(block.model->stiffness(), block.model->mass(), &rows);
   EXPECT_THROW(con.fill(kAM, kAK), NumericalError);
 }
 

@@ -1,4 +1,4 @@
-// The effective matrix of an implicit step with contact (ContactSystem): its graph is built
+// The effective matrix of an implicit step with contact (EffectiveSystem with a contact strategy): its graph is built
 // from K's and M's local arrays and its bulk values written through them, so the product
 // A x is checked against aM M x + aK K x plus the contact block computed term by term, on
 // non-matching faces (slave nodes coupled to master nodes of another body, on another rank
@@ -15,7 +15,8 @@
 #include <Tpetra_Vector.hpp>
 
 #include "contact/ContactManager.hpp"
-#include "contact/ContactSystem.hpp"
+#include "contact/ContactStrategies.hpp"
+#include "physics/EffectiveSystem.hpp"
 #include "physics/Model.hpp"
 #include "test_analysis_contact_helpers.hpp"
 
@@ -34,6 +35,7 @@ struct Scene {
   RCP<const Comm> comm = Tpetra::getDefaultComm();
   std::unique_ptr<Model> model;
   std::unique_ptr<ContactManager> cm;
+  std::unique_ptr<ContactStrategy> strategy;  // penalty springs, or the multipliers' saddle point
   Scene(const std::string& name, const std::string& method) {
     const std::string dir = test::scratchDir(name + "_" + method + std::to_string(comm->getSize()));
     const std::string mesh = test::writeScene(dir, 0.1, 4, 2, 0.1, 4, 3, -1e-7, comm);
@@ -42,6 +44,10 @@ struct Scene {
     cm = std::make_unique<ContactManager>(
         model->mesh(), model->dofs(), model->map(), std::vector<PairDefinition>{{"ifc", "CNT_POU1", "CNT_POU2", 1e-3}},
         method == "Penalty" ? makePenaltyContact(1e10, 1e-12) : makeLagrangeContact(1e-12));
+    if (method == "Penalty")
+      strategy = std::make_unique<PenaltyStrategy>(*cm);
+    else
+      strategy = std::make_unique<SaddlePointStrategy>(*cm);
   }
 };
 
@@ -54,21 +60,22 @@ void checkFill(const std::string& method) {
   Scene scene("system", method);
   Model& model = *scene.model;
   ContactManager& cm = *scene.cm;
+  ContactStrategy& st = *scene.strategy;
   auto comm = scene.comm;
   Vector zero(model.map());
-  cm.initialize(zero);
+  st.initialize(zero);
   ASSERT_EQ(cm.activeCount(), cm.numConstraints());
   ASSERT_GT(cm.numConstraints(), 0);
-  ContactSystem sys(model.stiffness(), model.mass(), &cm);
+  EffectiveSystem sys(model.stiffness(), model.mass(), &st);
   const double aM = kAM, aK = kAK;
   sys.fill(aM, aK);
-  ASSERT_EQ(sys.extended(), method != "Penalty");
+  ASSERT_EQ(st.extendsSystem(), method != "Penalty");
 
   Vector X(sys.map()), Y(sys.map());
   X.randomize();
   {
     auto x = X.getDataNonConst();
-    for (size_t i = sys.numLocalDofs(); i < size_t(x.size()); ++i) x[i] = 0.0;
+    for (size_t i = model.map()->getNodeNumElements(); i < size_t(x.size()); ++i) x[i] = 0.0;
   }
   sys.matrix()->apply(X, Y);
 
@@ -76,7 +83,7 @@ void checkFill(const std::string& method) {
   {
     auto xs = X.getData();
     auto xd = x.getDataNonConst();
-    for (size_t i = 0; i < sys.numLocalDofs(); ++i) xd[i] = xs[i];
+    for (size_t i = 0; i < model.map()->getNodeNumElements(); ++i) xd[i] = xs[i];
   }
   model.mass()->apply(x, expected);
   model.stiffness()->apply(x, t);
@@ -105,10 +112,10 @@ void checkFill(const std::string& method) {
   {
     auto y = Y.getData();
     auto e = expected.getData();
-    for (size_t i = 0; i < sys.numLocalDofs(); ++i) worst = std::max(worst, std::abs(y[i] - e[i]));
+    for (size_t i = 0; i < model.map()->getNodeNumElements(); ++i) worst = std::max(worst, std::abs(y[i] - e[i]));
     for (int s = 0; s < nS; ++s) {
-      const LO row = sys.multiplierRow(s);
-      if (row >= 0) EXPECT_NEAR(y[row], -cm.scale() * bx[s], 1e-12 * cm.scale() * std::abs(bx[s]) + 1e-300)
+      const LO row = st.multiplierRow(s);
+      if (row >= 0) EXPECT_NEAR(y[row], -cm.activeSet().scale * bx[s], 1e-12 * cm.activeSet().scale * std::abs(bx[s]) + 1e-300)
                         << method << ": multiplier row of slave " << s;
     }
   }
@@ -123,10 +130,11 @@ void checkRefill(const std::string& method) {
   Scene scene("refill", method);
   Model& model = *scene.model;
   ContactManager& cm = *scene.cm;
+  ContactStrategy& st = *scene.strategy;
   Vector u(model.map());
-  cm.initialize(u);  // all in contact
+  st.initialize(u);  // all in contact
   const double aM = kAM, aK = kAK;
-  ContactSystem kept(model.stiffness(), model.mass(), &cm);
+  EffectiveSystem kept(model.stiffness(), model.mass(), &st);
   kept.fill(aM, aK);
   // Bar 1 pulled back by 1e-6 m on its half x > 0 (across 2 elements): the slave nodes
   // facing it open, the others stay closed.
@@ -136,13 +144,13 @@ void checkRefill(const std::string& method) {
       if (model.dofs().ownsNode(n) && model.mesh().coords[n][0] > 1e-9)
         u.replaceGlobalValue(GO(model.dof(n, 2)), 1e-6);
   }
-  cm.initialize(u);
+  st.initialize(u);
   const int open = cm.numConstraints() - cm.activeCount();
   ASSERT_GT(open, 0);
   ASSERT_GT(cm.activeCount(), 0);
   for (int pass = 0; pass < 2; ++pass) {  // opened, then closed again
     kept.fill(aM, aK);
-    ContactSystem fresh(model.stiffness(), model.mass(), &cm);
+    EffectiveSystem fresh(model.stiffness(), model.mass(), &st);
     fresh.fill(aM, aK);
     Vector X(kept.map()), Y1(kept.map()), Y2(kept.map());
     X.randomize();
@@ -151,15 +159,15 @@ void checkRefill(const std::string& method) {
     Y1.update(-1.0, Y2, 1.0);
     EXPECT_EQ(Y1.normInf(), 0.0) << method << ": pass " << pass;
     u.putScalar(0.0);
-    cm.initialize(u);
+    st.initialize(u);
   }
 }
 
-TEST(MpiContactSystem, PenaltyRefillRewritesTheContactRowsOnly) { checkRefill("Penalty"); }
-TEST(MpiContactSystem, LagrangeRefillRewritesTheContactRowsOnly) { checkRefill("Lagrange"); }
+TEST(MpiEffectiveSystem, PenaltyRefillRewritesTheContactRowsOnly) { checkRefill("Penalty"); }
+TEST(MpiEffectiveSystem, LagrangeRefillRewritesTheContactRowsOnly) { checkRefill("Lagrange"); }
 
-TEST(MpiContactSystem, PenaltyFillIsTheMatricesPlusTheActiveCouplings) { checkFill("Penalty"); }
-TEST(MpiContactSystem, LagrangeFillIsTheMatricesPlusTheMultiplierBlock) { checkFill("Lagrange"); }
+TEST(MpiEffectiveSystem, PenaltyFillIsTheMatricesPlusTheActiveCouplings) { checkFill("Penalty"); }
+TEST(MpiEffectiveSystem, LagrangeFillIsTheMatricesPlusTheMultiplierBlock) { checkFill("Lagrange"); }
 
 }  // namespace
 }  // namespace choc

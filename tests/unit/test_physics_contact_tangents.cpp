@@ -4,8 +4,8 @@
 //
 // The residual of a contact scene is the one the Newton system solves: at x = [u; lambda / S]
 // the contact forces' share of the DOF rows (ContactManager::addForces: normal forces and
-// Coulomb friction) and, with multipliers, the constraint rows (ContactManager::rowResidual,
-// which ContactSystem::rightHandSide negates). The tangent is the matrix ContactSystem::fill
+// Coulomb friction) and, with multipliers, the constraint rows (ContactActiveSet::rowResidual,
+// which SaddlePointStrategy::rightHandSide negates). The tangent is the matrix EffectiveSystem::fill
 // assembles (the contact block, k B^T B, -S B, the friction tangent) less aM M. Within a step
 // the gaps are linear in u (g = g0 + B u, re-linearised before each step): the normal
 // residuals are then piecewise linear and their differences exact; friction's slip is not.
@@ -39,7 +39,8 @@
 #include "contact/ContactFaces.hpp"
 #include "contact/ContactManager.hpp"
 #include "contact/ContactPairing.hpp"
-#include "contact/ContactSystem.hpp"
+#include "contact/ContactStrategies.hpp"
+#include "physics/EffectiveSystem.hpp"
 #include "contact/RigidObstacle.hpp"
 #include "fd_tangent.hpp"
 #include "test_contact_helpers.hpp"
@@ -142,7 +143,11 @@ class Scene {
     contact_ = std::make_unique<ContactManager>(mesh_, *dofs_, map_, pairs, std::move(method));
     K_ = diagonal(map_, 1.0);
     M_ = diagonal(map_, kMass);
-    system_ = std::make_unique<ContactSystem>(K_, M_, contact_.get());
+    if (contact_->method().hasMultipliers())
+      strategy_ = std::make_unique<SaddlePointStrategy>(*contact_);
+    else
+      strategy_ = std::make_unique<PenaltyStrategy>(*contact_);
+    system_ = std::make_unique<EffectiveSystem>(K_, M_, strategy_.get());
     system_->fill(1.0, 0.0);  // S = kMass
   }
   Scene(const Scene&) = delete;
@@ -154,7 +159,7 @@ class Scene {
   const DofMap& dofs() const { return *dofs_; }
   int nU() const { return int(dofs_->numGlobal()); }
   int nS() const { return contact_->numConstraints(); }
-  bool multipliers() const { return system_->extended(); }
+  bool multipliers() const { return strategy_->extendsSystem(); }
   int n() const { return nU() + (multipliers() ? nS() : 0); }
 
   // u from a displacement given per node in the local (unplaced) frame, turned into place.
@@ -169,22 +174,22 @@ class Scene {
   RCP<Vector> vec(const std::vector<double>& u) const { return test::tpetraOf(u, map_); }
 
   // Statuses from the gaps at u, pressures zero (the saved state every evaluation starts from).
-  void initialize(const std::vector<double>& u) { contact_->initialize(*vec(u)); }
+  void initialize(const std::vector<double>& u) { strategy_->initialize(*vec(u)); }
   void beginStep(const std::vector<double>& u, double t, double dt) { contact_->beginStep(*vec(u), t, dt); }
 
   // x = [u; lambda / S] (lambda of the saved state is zero).
   std::vector<double> state(const std::vector<double>& u, const std::vector<double>& lambda) const {
     std::vector<double> x = u;
     if (multipliers())
-      for (double l : lambda) x.push_back(l / contact_->scale());
+      for (double l : lambda) x.push_back(l / contact_->activeSet().scale);
     return x;
   }
 
   std::vector<double> residual(const std::vector<double>& x) {
     const auto u = vec(std::vector<double>(x.begin(), x.begin() + nU()));
     if (multipliers()) {
-      contact_->revert();
-      contact_->applyCorrection(std::vector<double>(x.begin() + nU(), x.end()));
+      strategy_->revert();
+      contact_->activeSet().applyCorrection(std::vector<double>(x.begin() + nU(), x.end()));
     }
     Vector out(map_);
     out.putScalar(0.0);
@@ -192,7 +197,7 @@ class Scene {
     std::vector<double> r = test::valuesOf(out);
     if (multipliers()) {
       const std::vector<double> g = contact_->gaps(*u);
-      for (int s = 0; s < nS(); ++s) r.push_back(contact_->rowResidual(s, g[size_t(s)]));
+      for (int s = 0; s < nS(); ++s) r.push_back(contact_->activeSet().rowResidual(size_t(s), g[size_t(s)]));
     }
     return r;
   }
@@ -213,7 +218,7 @@ class Scene {
   test::TangentCheckOptions options() const {
     test::TangentCheckOptions o;
     o.scales.assign(size_t(n()), kDisplacementScale);
-    for (int s = nU(); s < n(); ++s) o.scales[size_t(s)] = kForceScale / contact_->scale();
+    for (int s = nU(); s < n(); ++s) o.scales[size_t(s)] = kForceScale / contact_->activeSet().scale;
     return o;
   }
 
@@ -229,7 +234,8 @@ class Scene {
   RCP<const Map> map_;
   std::unique_ptr<ContactManager> contact_;
   RCP<CrsMatrix> K_, M_;
-  std::unique_ptr<ContactSystem> system_;
+  std::unique_ptr<ContactStrategy> strategy_;
+  std::unique_ptr<EffectiveSystem> system_;
 };
 
 int count(const std::vector<int>& v, int value) { return int(std::count(v.begin(), v.end(), value)); }

@@ -1,4 +1,4 @@
-#include "contact/SystemGraph.hpp"
+#include "physics/SystemGraph.hpp"
 
 #include <algorithm>
 #include <utility>
