@@ -68,6 +68,7 @@ void DirectStepView::differenceMassless(const Vector& u, const Vector& v, const 
 void DirectStepView::archive(StateArchive& a, const StateVectors& vectors) const {
   const WorkIntegrals& work = op_.work();
   a.putVector("view/integrals", work.state());
+  a.putVector("view/velocityUpdate", std::vector<double>{work.velocityUpdate});
   a.putVector("view/loadWork", work.loadWork.state());
   if (const Vector* uf = work.loadWork.followerDisplacement()) vectors.put(a, "view/followerDisplacement", *uf);
   if (uPrev_) {
@@ -79,6 +80,7 @@ void DirectStepView::archive(StateArchive& a, const StateVectors& vectors) const
 void DirectStepView::restore(const StateArchive& a, const StateVectors& vectors, RCP<const Map> map) {
   WorkIntegrals& work = op_.work();
   work.restore(a.getVector<double>("view/integrals", 4));
+  if (a.has("view/velocityUpdate")) work.velocityUpdate = a.getVector<double>("view/velocityUpdate", 1)[0];
   work.loadWork.restore(a.getVector<double>("view/loadWork", work.loadWork.stateSize()));
   if (work.loadWork.hasFollowers() && a.has("view/followerDisplacement")) {
     Vector uf(map);

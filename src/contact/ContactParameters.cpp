@@ -116,7 +116,7 @@ void declarePairParameters(ParameterList& ct) {
 }
 
 void declareContactMassParameter(ParameterList& p) {
-  declareChoice(p, "Contact Mass", "auto", {"auto", "standard", "redistributed"},
+  declareChoice(p, "Contact Mass", "auto", {"auto", "standard", "redistributed", "velocity update"},
                 "standard: the blocks' mass matrices as they are; redistributed: the nodes of the "
                 "contact pairs' master and slave side sets carry no mass, each element touching "
                 "them has its mass moved onto its other nodes (element mass kept in every "
@@ -125,7 +125,10 @@ void declareContactMassParameter(ParameterList& p) {
                 "found statically each step, their velocities reported as displacement "
                 "differences; auto: redistributed with the implicit schemes, whatever the contact "
                 "method (standard when an element has every node on a contact surface), standard "
-                "with central differences");
+                "with central differences; velocity update (implicit schemes): the standard mass, and "
+                "after each step the velocity of the contact nodes projected with the lumped mass so "
+                "that no active constraint approaches (Laursen and Love 2002; the kinetic energy it "
+                "takes is counted in energy:dissipated)");
 }
 
 }  // namespace
@@ -233,6 +236,7 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::
   const std::string mass = p.get<std::string>("Contact Mass");
   s.massIsAutomatic = mass == "auto";
   s.redistributeMass = mass == "redistributed" || (s.massIsAutomatic && s.enabled());
+  s.velocityUpdate = mass == "velocity update";
   if (s.enabled()) {
     const ParameterList& pairs = ct.sublist("Pairs");
     if (pairs.numParams() == 0)
@@ -242,8 +246,8 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::
       s.pairs.push_back(readPair(pairs.sublist(pairs.name(it)), pairs.name(it), file,
                                  path + "/Contact/Pairs/" + pairs.name(it)));
   }
-  if (mass == "redistributed" && !s.enabled())
-    throwInput(file, path + "/Contact Mass", "redistributed", "there are no contact surfaces",
+  if ((s.redistributeMass || s.velocityUpdate) && !s.massIsAutomatic && !s.enabled())
+    throwInput(file, path + "/Contact Mass", mass, "there are no contact surfaces",
                "set 'Contact/Method' and 'Contact/Pairs', or use 'standard'");
   return s;
 }

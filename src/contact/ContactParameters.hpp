@@ -28,6 +28,7 @@ struct ContactSettings {
   std::vector<PairDefinition> pairs;
   bool redistributeMass = false;  // 'Contact Mass' = redistributed, or auto (implicit schemes)
   bool massIsAutomatic = false;   // 'Contact Mass' = auto: may fall back to standard
+  bool velocityUpdate = false;    // 'Contact Mass' = velocity update: standard mass, v projected after each step
   std::string path;               // "Analyses/<name>", for messages
   bool enabled() const { return method != ContactMethodKind::None; }
   bool hasMultipliers() const {

@@ -12,6 +12,10 @@ namespace {
 bool saddlePoint(const ContactSettings& s) { return s.hasMultipliers() && !s.condensable(); }
 
 void checkExplicit(const ContactSettings& s, const std::string& file) {
+  if (s.velocityUpdate)
+    throwInput(file, s.path + "/Contact Mass", "velocity update",
+               "is an implicit scheme's treatment (central differences enforce contact on the lumped mass)",
+               "use 'standard' or 'auto' with central differences");
   if (s.hasPressureUnknowns())
     throwInput(file, s.path + "/Contact/Method", s.methodName(),
                "has pressure unknowns, which the explicit scheme (central differences) cannot solve for",
@@ -41,6 +45,9 @@ void checkImplicit(const ContactSettings& s, const ContactSolveChoice& c, const 
                "use the Penalty method with Multigrid, or Method = Direct or auto");
 }
 
+std::unique_ptr<ContactStrategy> makeStrategy(const ContactSettings& s, ContactManager& geometry,
+                                              const ContactSolveChoice& c);
+
 }  // namespace
 
 void checkContactChoice(const ContactSettings& s, const ContactSolveChoice& c, const std::string& file) {
@@ -52,6 +59,15 @@ void checkContactChoice(const ContactSettings& s, const ContactSolveChoice& c, c
 
 std::unique_ptr<ContactStrategy> makeContactStrategy(const ContactSettings& s, ContactManager& geometry,
                                                      const ContactSolveChoice& c) {
+  std::unique_ptr<ContactStrategy> strategy = makeStrategy(s, geometry, c);
+  strategy->useVelocityUpdate(s.velocityUpdate);
+  return strategy;
+}
+
+namespace {
+
+std::unique_ptr<ContactStrategy> makeStrategy(const ContactSettings& s, ContactManager& geometry,
+                                              const ContactSolveChoice& c) {
   if (!s.hasMultipliers()) return std::make_unique<PenaltyStrategy>(geometry);
   if (c.explicitScheme) return std::make_unique<ForwardIncrementStrategy>(geometry);  // Lagrange (checked)
   if (!s.condensable() || c.linearMethod == "Direct") return std::make_unique<SaddlePointStrategy>(geometry);
@@ -60,5 +76,7 @@ std::unique_ptr<ContactStrategy> makeContactStrategy(const ContactSettings& s, C
   if (obstacles) return std::make_unique<CondensedStrategy>(geometry);
   return std::make_unique<ProjectedStrategy>(geometry);  // Lagrange with a pair between meshed bodies
 }
+
+}  // namespace
 
 }  // namespace choc

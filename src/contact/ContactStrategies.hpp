@@ -111,10 +111,6 @@ class ForwardIncrementStrategy : public ContactStrategy {
   void addExplicitIncrement(const Vector& u, const Vector& uStar, const Vector& inverseMass, double h, double h2,
                             Vector& a) override;
   double springStiffness() const override { return 0.0; }
-
- private:
-  std::vector<double> inverseMassAtContact_;  // 1/m at the contact DOFs
-  int inverseMassTopology_ = -1;              // the geometry's topologyVersion() it was gathered for
 };
 
 }  // namespace choc

@@ -90,6 +90,16 @@ class ContactStrategy {
   // k_s of an active node, for the critical step: a spring's stiffness, 0 for forward increments.
   virtual double springStiffness() const { return geometry_.method().stiffness(); }
 
+  // ---- The velocity update of an implicit step (Laursen and Love 2002; contact/VelocityUpdate.cpp)
+  // After an accepted step: the lumped-mass projection of v (and of a) that brings every active
+  // constraint's gap rate (and gap acceleration) to 0: v += W B^T lambda with W the lumped inverse
+  // masses (the same at every call). A projection in the lumped mass's norm: it lowers the kinetic
+  // energy 1/2 v^T W^-1 v and never raises it. Collective. Throws NumericalError when the
+  // impulses do not converge.
+  void correctVelocity(Vector& v, Vector& a, const Vector& inverseMass);
+  void useVelocityUpdate(bool on) { velocityUpdate_ = on; }
+  bool updatesVelocity() const { return velocityUpdate_; }
+
   // ---- The state lifecycle (restart/SteppedState.hpp)
   void beginStep(const Vector& u, double t, double dt) { geometry_.beginStep(u, t, dt); }
   void commitMotion(const Vector& u) { geometry_.commitMotion(u); }
@@ -103,6 +113,9 @@ class ContactStrategy {
   // spring k B_s^T B_s (none for k = 0); the saddle point adds its multiplier's row and column.
   virtual void addConstraintEntries(int s, const Map& dofMap, GO nU, std::vector<MatrixEntry>& out) const;
   ContactManager& geometry_;
+  std::vector<double> inverseMassAtContact_;  // 1/m at the contact DOFs (forward increments, velocity update)
+  int inverseMassTopology_ = -1;              // the geometry's topologyVersion() it was gathered for
+  bool velocityUpdate_ = false;               // 'Contact Mass' = velocity update
 };
 
 }  // namespace choc

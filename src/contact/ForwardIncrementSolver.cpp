@@ -8,7 +8,7 @@ namespace choc {
 ForwardIncrementResult solveForwardIncrement(const std::vector<std::vector<std::pair<int, double>>>& terms,
                                              const std::vector<double>& gaps,
                                              const std::vector<double>& inverseMass, double h2,
-                                             int maxSweeps) {
+                                             int maxSweeps, bool unilateral) {
   const std::vector<double>& w = inverseMass;
   const size_t nS = terms.size();
   ForwardIncrementResult out;
@@ -27,7 +27,7 @@ ForwardIncrementResult solveForwardIncrement(const std::vector<std::vector<std::
       if (!(diag[s] > 0)) continue;
       double r = gaps[s];
       for (const auto& [k, c] : terms[s]) r += c * shift[k];
-      const double next = std::max(0.0, lam[s] - r / diag[s]);
+      const double next = unilateral ? std::max(0.0, lam[s] - r / diag[s]) : lam[s] - r / diag[s];
       const double d = next - lam[s];
       if (d == 0.0) continue;
       for (const auto& [k, c] : terms[s]) shift[k] += h2 * w[k] * c * d;

@@ -6,7 +6,8 @@
 //   g_s + sum_k c_sk h2 w_k sum_r c_rk lambda_r >= 0,   lambda_s >= 0,   complementary,
 // by projected Gauss-Seidel on h2 B M^-1 B^T (one sweep when no two constraints share a DOF:
 // against obstacles). Converged when no sweep changes a gap by more than 1e-12 of the largest
-// |g_s|.
+// |g_s|. Bilateral (unilateral = false): lambda of either sign with every g_s brought to 0
+// (Gauss-Seidel on the same matrix).
 #pragma once
 #include <utility>
 #include <vector>
@@ -23,6 +24,6 @@ struct ForwardIncrementResult {
 ForwardIncrementResult solveForwardIncrement(const std::vector<std::vector<std::pair<int, double>>>& terms,
                                              const std::vector<double>& gaps,
                                              const std::vector<double>& inverseMass, double h2,
-                                             int maxSweeps = 1000);
+                                             int maxSweeps = 1000, bool unilateral = true);
 
 }  // namespace choc

@@ -23,6 +23,7 @@ struct WorkIntegrals {
   LoadWork loadWork;
   double damping = 0.0, lastDampingPower = 0.0;
   double obstacles = 0.0, lastObstaclePower = 0.0;
+  double velocityUpdate = 0.0;  // the kinetic energy the contact velocity update took [J]
   // For a checkpoint (with loadWork's own state), and back.
   std::vector<double> state() const { return {damping, lastDampingPower, obstacles, lastObstaclePower}; }
   void restore(const std::vector<double>& s) {

@@ -98,6 +98,22 @@ void StructuralOperator::addExplicitContact(const Vector& u, const Vector& uStar
   contact_->addExplicitIncrement(u, uStar, inverseMass, h, h2, a);
 }
 
+bool StructuralOperator::correctVelocity(Vector& v, Vector& a) {
+  if (!contact_ || !contact_->updatesVelocity()) return false;
+  TimerScope ts(timer_, "Transient: contact");
+  if (lumpedInverse_.is_null()) {
+    Vector one(map());
+    one.putScalar(1.0);
+    lumpedInverse_ = rcp(new Vector(map()));
+    mass_.applyMass(one, *lumpedInverse_);
+    lumpedInverse_->reciprocal(*lumpedInverse_);
+  }
+  const double before = mass_.kineticEnergy(v);
+  contact_->correctVelocity(v, a, *lumpedInverse_);
+  work_.velocityUpdate += before - mass_.kineticEnergy(v);
+  return true;
+}
+
 void StructuralOperator::commitMotion(const Vector& u) {
   if (!contact_) return;
   TimerScope ts(timer_, "Transient: contact search");
@@ -163,7 +179,8 @@ StateEnergies StructuralOperator::energies(const Vector& u, const Vector& v, con
   work_.lastDampingPower = power;
   const double friction =
       contact_ && contact_->geometry().hasFriction() ? contact_->geometry().friction()->dissipation() : 0.0;
-  e.dissipated = work_.damping + (links_ ? links_->dissipatedEnergy() : 0.0) + friction + internal_->dissipatedWork();
+  e.dissipated = work_.damping + (links_ ? links_->dissipatedEnergy() : 0.0) + friction + internal_->dissipatedWork() +
+                 work_.velocityUpdate;
   e.plastic = internal_->dissipatedWork();
   e.hourglass = internal_->hourglassEnergy(u);
   const double obstaclePower = contact_ ? obstaclePowerAt(contact_->geometry(), u) : 0.0;

@@ -64,6 +64,9 @@ class StructuralOperator : public ExplicitOperator {
   }
   void beginStep(const Vector& u, double t, double dt) override;
   void commitMotion(const Vector& u) override;
+  // The contact strategy's velocity update ('Contact Mass' = velocity update), its kinetic
+  // energy taken counted in the work integrals (energy:dissipated).
+  bool correctVelocity(Vector& v, Vector& a) override;
   // The elements' validity, the assembled small-strain blocks' domain, then the slave nodes'
   // penetration of rigid obstacles.
   ElementValidity validity(const Vector& u) const override;
@@ -123,6 +126,7 @@ class StructuralOperator : public ExplicitOperator {
   ProductCache ku_;
   bool keepProducts_ = true;
   WorkIntegrals work_;
+  RCP<Vector> lumpedInverse_;  // 1 / (M 1): the velocity update's lumped inverse mass, built at its first use
 };
 
 }  // namespace choc

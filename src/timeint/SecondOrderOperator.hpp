@@ -85,6 +85,9 @@ class SecondOrderOperator : public SteppedState {
   virtual ElementValidity validity(const Vector& /*u*/) const { return {}; }
   // The motion up to u is accepted (before commit): state that accumulates over accepted steps.
   virtual void commitMotion(const Vector& /*u*/) {}
+  // An accepted implicit step's velocity and acceleration corrected by the constraints' impact
+  // treatment (the contact velocity update); true if they changed.
+  virtual bool correctVelocity(Vector& /*v*/, Vector& /*a*/) { return false; }
   // Is R(u) affine in u while the constraint status is frozen (linear elasticity, contact
   // without friction, no shock links)? Then one exact correction solves an active-set pass.
   // false (the default) is always safe.
