@@ -136,17 +136,7 @@ std::vector<double> DirectStepView::probeValues() const {
 
 // The operator's energies of the reported state, from the scheme's own velocity.
 EnergyTerms DirectStepView::energies() {
-  const StateEnergies s = op_.energies(*u_, *vScheme_, *a_, info_.time, info_.dt, info_.substep);
-  EnergyTerms e;
-  e.kinetic = s.kinetic;
-  e.strain = s.strain;
-  e.contact = s.contact;
-  e.dissipated = s.dissipated;
-  e.external = s.external;
-  e.plastic = s.plastic;
-  e.hourglass = s.hourglass;
-  e.shadow = s.shadow;
-  return e;
+  return EnergyTerms(op_.energies(*u_, *vScheme_, *a_, info_.time, info_.dt, info_.substep));
 }
 
 void DirectStepView::fields(Vector& u, Vector& v, Vector& a) const {

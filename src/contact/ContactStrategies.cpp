@@ -45,9 +45,6 @@ void checkImplicit(const ContactSettings& s, const ContactSolveChoice& c, const 
                "use the Penalty method with Multigrid, or Method = Direct or auto");
 }
 
-std::unique_ptr<ContactStrategy> makeStrategy(const ContactSettings& s, ContactManager& geometry,
-                                              const ContactSolveChoice& c);
-
 }  // namespace
 
 void checkContactChoice(const ContactSettings& s, const ContactSolveChoice& c, const std::string& file) {
@@ -59,24 +56,21 @@ void checkContactChoice(const ContactSettings& s, const ContactSolveChoice& c, c
 
 std::unique_ptr<ContactStrategy> makeContactStrategy(const ContactSettings& s, ContactManager& geometry,
                                                      const ContactSolveChoice& c) {
-  std::unique_ptr<ContactStrategy> strategy = makeStrategy(s, geometry, c);
+  std::unique_ptr<ContactStrategy> strategy;
+  bool obstacles = true;
+  for (const PairDefinition& p : s.pairs) obstacles = obstacles && p.hasObstacle;
+  if (!s.hasMultipliers())
+    strategy = std::make_unique<PenaltyStrategy>(geometry);
+  else if (c.explicitScheme)
+    strategy = std::make_unique<ForwardIncrementStrategy>(geometry);  // Lagrange (checked)
+  else if (!s.condensable() || c.linearMethod == "Direct")
+    strategy = std::make_unique<SaddlePointStrategy>(geometry);
+  else if (obstacles)
+    strategy = std::make_unique<CondensedStrategy>(geometry);
+  else
+    strategy = std::make_unique<ProjectedStrategy>(geometry);  // Lagrange with a pair between meshed bodies
   strategy->useVelocityUpdate(s.velocityUpdate);
   return strategy;
 }
-
-namespace {
-
-std::unique_ptr<ContactStrategy> makeStrategy(const ContactSettings& s, ContactManager& geometry,
-                                              const ContactSolveChoice& c) {
-  if (!s.hasMultipliers()) return std::make_unique<PenaltyStrategy>(geometry);
-  if (c.explicitScheme) return std::make_unique<ForwardIncrementStrategy>(geometry);  // Lagrange (checked)
-  if (!s.condensable() || c.linearMethod == "Direct") return std::make_unique<SaddlePointStrategy>(geometry);
-  bool obstacles = true;
-  for (const PairDefinition& p : s.pairs) obstacles = obstacles && p.hasObstacle;
-  if (obstacles) return std::make_unique<CondensedStrategy>(geometry);
-  return std::make_unique<ProjectedStrategy>(geometry);  // Lagrange with a pair between meshed bodies
-}
-
-}  // namespace
 
 }  // namespace choc

@@ -94,9 +94,9 @@ class ContactStrategy {
   // After an accepted step: the lumped-mass projection of v (and of a) that brings every active
   // constraint's gap rate (and gap acceleration) to 0: v += W B^T lambda with W the lumped inverse
   // masses (the same at every call). A projection in the lumped mass's norm: it lowers the kinetic
-  // energy 1/2 v^T W^-1 v and never raises it. Collective. Throws NumericalError when the
-  // impulses do not converge.
-  void correctVelocity(Vector& v, Vector& a, const Vector& inverseMass);
+  // energy 1/2 v^T W^-1 v and never raises it. False when no constraint is active (v and a
+  // unchanged). Collective. Throws NumericalError when the impulses do not converge.
+  bool correctVelocity(Vector& v, Vector& a, const Vector& inverseMass);
   void useVelocityUpdate(bool on) { velocityUpdate_ = on; }
   bool updatesVelocity() const { return velocityUpdate_; }
 

@@ -43,13 +43,13 @@ void project(const ContactManager& g, const std::vector<int>& active, const std:
 // Every constraint active at the end of the step keeps its surface: its gap rate and gap
 // acceleration are brought to 0 (the obstacles move at constant velocity) by the lumped-mass
 // projection, v and a moved only along the constraints' rows.
-void ContactStrategy::correctVelocity(Vector& v, Vector& a, const Vector& inverseMass) {
+bool ContactStrategy::correctVelocity(Vector& v, Vector& a, const Vector& inverseMass) {
   const ContactManager& g = geometry_;
   const ContactActiveSet& set = g.activeSet();
   std::vector<int> active;
   for (int s = 0; s < g.numConstraints(); ++s)
     if (set.status[size_t(s)]) active.push_back(s);
-  if (active.empty()) return;
+  if (active.empty()) return false;
   if (inverseMassTopology_ != g.topologyVersion()) {
     inverseMassAtContact_ = g.contactValues(inverseMass);
     inverseMassTopology_ = g.topologyVersion();
@@ -60,6 +60,7 @@ void ContactStrategy::correctVelocity(Vector& v, Vector& a, const Vector& invers
   for (int s : active)
     for (const auto& [k, c] : g.localTerms()[size_t(s)]) accelerations[size_t(s)] += c * x[size_t(k)];
   project(g, active, accelerations, inverseMassAtContact_, inverseMass, a, "acceleration");
+  return true;
 }
 
 }  // namespace choc

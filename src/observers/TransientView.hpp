@@ -7,6 +7,7 @@
 
 #include "core/TpetraTypes.hpp"
 #include "output/InteractionOutput.hpp"
+#include "physics/StateEnergies.hpp"
 
 namespace choc {
 
@@ -19,16 +20,15 @@ struct StepPoint {
   long long nominal = 0;   // nominal steps completed (the step index without cuts)
 };
 
-// Energies of the state [J]; dissipated and external are the work done since the start.
-struct EnergyTerms {
-  double kinetic = 0, strain = 0, contact = 0, dissipated = 0, external = 0;
-  double plastic = 0;  // the plastic work, a part of `dissipated` (its own column with plastic blocks)
-  double hourglass = 0;  // the one-point elements' hourglass energy, a part of `strain` (its own column)
-  // Explicit schemes (central differences, symplectic Euler): (h^2/8) a^T M a, h the sub-step.
-  // Velocity Verlet conserves E_total - shadow exactly on a linear system (E_total itself,
-  // measured with the integer-step velocity, swings by up to r^2 / (1 - r^2) of the energy at
-  // omega_max, r = h omega_max / 2): the energy balance measures that conserved energy.
-  double shadow = 0;
+// Energies of the state [J] (physics/StateEnergies.hpp: dissipated and external are the work
+// done since the start, plastic a part of dissipated, hourglass a part of strain). Explicit
+// schemes (central differences, symplectic Euler) give shadow = (h^2/8) a^T M a, h the sub-step:
+// velocity Verlet conserves E_total - shadow exactly on a linear system (E_total itself, measured
+// with the integer-step velocity, swings by up to r^2 / (1 - r^2) of the energy at omega_max,
+// r = h omega_max / 2): the energy balance measures that conserved energy.
+struct EnergyTerms : StateEnergies {
+  EnergyTerms() = default;
+  explicit EnergyTerms(const StateEnergies& e) : StateEnergies(e) {}
   double total() const { return kinetic + strain + contact; }
 };
 

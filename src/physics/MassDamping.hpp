@@ -27,6 +27,7 @@ class MassDamping {
   // out += C v; with `keep`, K0 v and M v are kept for the energies of v.
   void addDampingForces(const Vector& v, Vector& out, bool keep);
   double kineticEnergy(const Vector& v) const;                // 1/2 v.M v
+  bool damps() const { return aK_ != 0.0 || aM_ != 0.0; }      // Rayleigh damping: C v depends on v
   double dampingPower(const Vector& v, double kinetic) const;  // v.C v, given 1/2 v.M v
   // W = ca M + cv C + cd K = (ca + cv aM) M + (cd + cv aK) K: its coefficients of M and K.
   double massCoefficient(const EffectiveCoefficients& c) const { return c.ca + c.cv * aM_; }

@@ -15,7 +15,7 @@ struct StateEnergies {
   double external = 0;    // the loads' and the moving obstacles' work
   double plastic = 0;     // the plastic work (a part of dissipated)
   double hourglass = 0;   // the one-point elements' hourglass energy (a part of strain)
-  double shadow = 0;      // explicit sub-steps: (h^2/8) a^T M a (observers/TransientView.hpp)
+  double shadow = 0;      // explicit sub-steps: (h^2/8) a^T M a (observers/TransientView.hpp, EnergyTerms)
 };
 
 struct WorkIntegrals {

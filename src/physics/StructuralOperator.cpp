@@ -22,7 +22,7 @@ StructuralOperator::StructuralOperator(std::shared_ptr<InternalForce> internal, 
       loads_(std::move(loads)), contact_(contact), links_(links), timer_(timer),
       newton_(std::move(solver), mass_, contact, links, timer), ku_(internal_->map(), 1), work_(loads_.get()) {}
 
-// The tangent at u = 0: its matrix object, which each correction refills (evaluateTangent).
+// The tangent at u = 0: its matrix object, which each correction refills (solveCorrection).
 const RCP<const CrsMatrix>& StructuralOperator::tangentMatrix() {
   if (K_.is_null()) {
     const Vector zero(internal_->map());
@@ -98,8 +98,9 @@ void StructuralOperator::addExplicitContact(const Vector& u, const Vector& uStar
   contact_->addExplicitIncrement(u, uStar, inverseMass, h, h2, a);
 }
 
-bool StructuralOperator::correctVelocity(Vector& v, Vector& a) {
-  if (!contact_ || !contact_->updatesVelocity()) return false;
+SecondOrderOperator::CorrectedFields StructuralOperator::correctVelocity(Vector& v, Vector& a) {
+  CorrectedFields out;
+  if (!contact_ || !contact_->updatesVelocity()) return out;
   TimerScope ts(timer_, "Transient: contact");
   if (lumpedInverse_.is_null()) {
     Vector one(map());
@@ -109,9 +110,11 @@ bool StructuralOperator::correctVelocity(Vector& v, Vector& a) {
     lumpedInverse_->reciprocal(*lumpedInverse_);
   }
   const double before = mass_.kineticEnergy(v);
-  contact_->correctVelocity(v, a, *lumpedInverse_);
+  if (!contact_->correctVelocity(v, a, *lumpedInverse_)) return out;
   work_.velocityUpdate += before - mass_.kineticEnergy(v);
-  return true;
+  out.acceleration = true;
+  out.forces = mass_.damps() || links_;
+  return out;
 }
 
 void StructuralOperator::commitMotion(const Vector& u) {
@@ -122,7 +125,7 @@ void StructuralOperator::commitMotion(const Vector& u) {
 
 ConstraintUpdate StructuralOperator::updateConstraints(const Vector& u) {
   ConstraintUpdate up;
-  if (!contact_ || contact_->incrementsExplicitly()) return up;
+  if (!contact_) return up;
   TimerScope ts(timer_, "Transient: contact");
   const StatusUpdate s = contact_->updateStatus(u);
   up.changed = s.changed;

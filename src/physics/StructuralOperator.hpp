@@ -66,7 +66,7 @@ class StructuralOperator : public ExplicitOperator {
   void commitMotion(const Vector& u) override;
   // The contact strategy's velocity update ('Contact Mass' = velocity update), its kinetic
   // energy taken counted in the work integrals (energy:dissipated).
-  bool correctVelocity(Vector& v, Vector& a) override;
+  CorrectedFields correctVelocity(Vector& v, Vector& a) override;
   // The elements' validity, the assembled small-strain blocks' domain, then the slave nodes'
   // penetration of rigid obstacles.
   ElementValidity validity(const Vector& u) const override;

@@ -144,12 +144,12 @@ void NewmarkStepper::acceptAttempt(double t) {
   std::swap(u_, u1_);
   std::swap(v_, v1_);
   std::swap(a_, a1_);
-  const bool corrected = op_.correctVelocity(*v_, *a_);
+  const SecondOrderOperator::CorrectedFields corrected = op_.correctVelocity(*v_, *a_);
   op_.commitMotion(*u_);
   op_.commit();
   std::swap(Ma0_, Ma1_);  // M a and F of the converged u (zero-weighted when alpha is 0)
-  if (corrected && scheme_.alphaM() != 0.0) op_.applyMass(*a_, *Ma0_);
-  if (scheme_.alphaF() != 0.0 && (op_.forcesVaryInTime() || corrected))
+  if (corrected.acceleration && scheme_.alphaM() != 0.0) op_.applyMass(*a_, *Ma0_);
+  if (scheme_.alphaF() != 0.0 && (op_.forcesVaryInTime() || corrected.forces))
     op_.applyForces(*u_, *v_, t, *F0_);  // at t itself (t + h can differ by round-off)
   else
     std::swap(F0_, F1_);

@@ -86,8 +86,12 @@ class SecondOrderOperator : public SteppedState {
   // The motion up to u is accepted (before commit): state that accumulates over accepted steps.
   virtual void commitMotion(const Vector& /*u*/) {}
   // An accepted implicit step's velocity and acceleration corrected by the constraints' impact
-  // treatment (the contact velocity update); true if they changed.
-  virtual bool correctVelocity(Vector& /*v*/, Vector& /*a*/) { return false; }
+  // treatment (the contact velocity update): whether a changed, and whether the forces F(u, v)
+  // did (v changed where damping or links act on it).
+  struct CorrectedFields {
+    bool forces = false, acceleration = false;
+  };
+  virtual CorrectedFields correctVelocity(Vector& /*v*/, Vector& /*a*/) { return {}; }
   // Is R(u) affine in u while the constraint status is frozen (linear elasticity, contact
   // without friction, no shock links)? Then one exact correction solves an active-set pass.
   // false (the default) is always safe.

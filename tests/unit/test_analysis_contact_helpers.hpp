@@ -72,6 +72,12 @@ inline std::string deck(const std::string& mesh, const std::string& dirichlet,
   return x.str();
 }
 
+// An analysis for a deck read only for its model (a test that builds the model, not a run).
+inline const char* const kModelOnlyAnalysis =
+    "<ParameterList name=\"t\"><Parameter name=\"Type\" type=\"string\" value=\"Transient\"/>"
+    "<Parameter name=\"Time Step\" type=\"double\" value=\"1e-6\"/>"
+    "<Parameter name=\"End Time\" type=\"double\" value=\"1e-6\"/></ParameterList>";
+
 struct Deck {
   std::string file;
   Teuchos::RCP<Teuchos::ParameterList> input;

@@ -23,12 +23,6 @@
 namespace choc {
 namespace {
 
-// The deck needs an analysis; this test only builds the model from it.
-const char* kAnalysis =
-    "<ParameterList name=\"t\"><Parameter name=\"Type\" type=\"string\" value=\"Transient\"/>"
-    "<Parameter name=\"Time Step\" type=\"double\" value=\"1e-6\"/>"
-    "<Parameter name=\"End Time\" type=\"double\" value=\"1e-6\"/></ParameterList>";
-
 // The two bars overlapping by 1e-7 m, 2 x 2 against 3 x 3 elements across (non-matching
 // faces), and their contact pair by `method` (penalty 1e10 N/m per node, or Lagrange).
 struct Scene {
@@ -39,7 +33,7 @@ struct Scene {
   Scene(const std::string& name, const std::string& method) {
     const std::string dir = test::scratchDir(name + "_" + method + std::to_string(comm->getSize()));
     const std::string mesh = test::writeScene(dir, 0.1, 4, 2, 0.1, 4, 3, -1e-7, comm);
-    auto d = test::readDeck(dir, test::deck(mesh, "CL_POU2", kAnalysis), comm);
+    auto d = test::readDeck(dir, test::deck(mesh, "CL_POU2", test::kModelOnlyAnalysis), comm);
     model = std::make_unique<Model>(*d.input, d.file, comm);
     cm = std::make_unique<ContactManager>(
         model->mesh(), model->dofs(), model->map(), std::vector<PairDefinition>{{"ifc", "CNT_POU1", "CNT_POU2", 1e-3}},
