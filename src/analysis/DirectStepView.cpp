@@ -35,20 +35,28 @@ void DirectStepView::substepTaken(double time, const Vector& u, const Vector& v)
   outputs_.substep(*this, time);
 }
 
+// The massless DOFs' velocity and acceleration as differences of their displacement; with a
+// normal contact mass, in the rotated DOFs where the normals are DOFs (physics/MasslessBasis.hpp).
 void DirectStepView::differenceMassless(const Vector& u, const Vector& v, const Vector& a) {
   if (op_.mass().masslessDofs() == 0) return;
-  if (!vOut_) {
-    vOut_ = rcp(new Vector(v, Teuchos::Copy));
-    aOut_ = rcp(new Vector(a, Teuchos::Copy));
-    uPrev_ = rcp(new Vector(u, Teuchos::Copy));
-    vPrev_ = rcp(new Vector(v, Teuchos::Copy));
-  } else {
-    vOut_->assign(v);
-    aOut_->assign(a);
+  const CrsMatrix* Q = op_.mass().masslessRotation().get();
+  const bool first = !uPrev_;
+  for (RCP<Vector>* x : {&vOut_, &aOut_, &uPrev_, &vPrev_, &work_})
+    if (!*x) *x = rcp(new Vector(u.getMap()));
+  auto toMassless = [&](const Vector& x, Vector& out) {
+    if (Q) rotate(*Q, x, out, true);
+    else out.assign(x);
+  };
+  toMassless(u, *work_);
+  toMassless(v, *vOut_);
+  toMassless(a, *aOut_);
+  if (first) {
+    uPrev_->assign(*work_);
+    vPrev_->assign(*vOut_);
   }
   if (info_.step > 0 && info_.dt > 0) {
     const std::vector<char>& mask = op_.mass().masslessMask();
-    auto ud = u.getData();
+    auto ud = work_->getData();
     auto up = uPrev_->getData();
     auto vp = vPrev_->getData();
     auto vo = vOut_->getDataNonConst();
@@ -59,8 +67,14 @@ void DirectStepView::differenceMassless(const Vector& u, const Vector& v, const 
         ao[i] = (vo[i] - vp[i]) / info_.dt;
       }
   }
-  uPrev_->assign(u);
+  uPrev_->assign(*work_);
   vPrev_->assign(*vOut_);
+  if (Q) {
+    work_->assign(*vOut_);
+    rotate(*Q, *work_, *vOut_, false);
+    work_->assign(*aOut_);
+    rotate(*Q, *work_, *aOut_, false);
+  }
   v_ = vOut_.get();
   a_ = aOut_.get();
 }

@@ -57,7 +57,9 @@ class DirectStepView : public TransientView, public StepObserver {
   void differenceMassless(const Vector& u, const Vector& v, const Vector& a);
   const Vector *u_ = nullptr, *v_ = nullptr, *a_ = nullptr;  // the reported fields
   const Vector* vScheme_ = nullptr;                           // the scheme's velocity
-  RCP<Vector> vOut_, aOut_, uPrev_, vPrev_;  // reported fields and the previous step's
+  // Reported fields and the previous step's (uPrev_, vPrev_ in the massless DOFs' rotated
+  // coordinates with a normal contact mass), and a work vector.
+  RCP<Vector> vOut_, aOut_, uPrev_, vPrev_, work_;
 };
 
 }  // namespace choc

@@ -9,6 +9,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "analysis/DirectStepView.hpp"
+#include "contact/ContactNormalDirections.hpp"
 #include "contact/ContactReport.hpp"
 #include "core/Errors.hpp"
 #include "timeint/TimeGrid.hpp"
@@ -169,6 +170,7 @@ void DirectTransient::buildContact(Model& model) {
     throwInput(inputFile_, path("Contact Mass"), "velocity update",
                "needs a lumped (diagonal, positive) mass, in whose norm it projects the velocity",
                "set 'Mass' = 'lumped' in every block of Model/Blocks, or use 'auto'");
+  if (s_.contact.normalMass) return buildNormalMass(model);
   if (!s_.contact.redistributeMass) return;
   const std::vector<char> massless = contactSurfaceNodes(*b_->contact, model.mesh());
   for (char c : massless) b_->masslessNodes += c;
@@ -179,6 +181,19 @@ void DirectTransient::buildContact(Model& model) {
     b_->masslessNodes = 0;
     b_->massFallback = e.what();
   }
+}
+
+// 'Contact Mass' = normal: the contact nodes massless along their normals, and the rotation
+// onto those directions (physics/MasslessBasis.hpp).
+void DirectTransient::buildNormalMass(const Model& model) {
+  const std::vector<std::vector<Point3>> directions = contactNormalDirections(*b_->contact, model.mesh(), model.dofs());
+  try {
+    b_->M = model.mass(directions);
+  } catch (const std::invalid_argument& e) {
+    throwInput(inputFile_, path("Contact Mass"), "normal", e.what());
+  }
+  for (const auto& d : directions) b_->masslessNodes += !d.empty();
+  b_->massless = masslessBasis(directions, model.dofs(), model.map());
 }
 
 // Central differences: the lumped mass's inverse and the critical step, refused or sub-stepped.
@@ -318,10 +333,12 @@ void DirectTransient::run(RunContext& ctx) {
   reportRun(ctx, sum, report, *timer, wallStart, history);
 }
 
-// The domain of the operator's assembled small-strain blocks (checked with the elements' validity).
+// The domain of the operator's assembled small-strain blocks (checked with the elements' validity),
+// and a normal contact mass's massless directions.
 void DirectTransient::configure(StructuralOperator& op, Model& model) const {
   auto domain = std::make_shared<SmallStrainDomain>(model);
   if (!domain->empty()) op.setSmallStrainDomain(domain);
+  if (!b_->massless.rotation.is_null()) op.useMasslessBasis(b_->massless);
 }
 
 // The view's records of a checkpoint's state, before the loop continues from it.

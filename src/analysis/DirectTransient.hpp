@@ -20,6 +20,7 @@
 #include "observers/TransientOutputs.hpp"
 #include "observers/TransientReport.hpp"
 #include "physics/InitialConditions.hpp"
+#include "physics/MasslessBasis.hpp"
 #include "physics/CriticalStep.hpp"
 #include "physics/DirectLinks.hpp"
 #include "physics/StructuralOperator.hpp"
@@ -68,6 +69,7 @@ class DirectTransient : public Analysis {
     std::unique_ptr<DirectLinks> links;  // null: no shock links
     long long masslessNodes = 0;
     std::string massFallback;  // why Contact Mass = auto kept the standard mass (empty: it did not)
+    MasslessBasis massless;    // 'Contact Mass' = normal: the rotation onto the normals
     std::unique_ptr<LinearSolver> solver;
     std::vector<Probe> probes;
     std::vector<std::string> columns;
@@ -78,6 +80,7 @@ class DirectTransient : public Analysis {
   void readScheme();
   void readTimeSettings();
   void buildContact(Model& model);
+  void buildNormalMass(const Model& model);
   void buildSolver(const Model& model);
   void setupExplicit(const Model& model);
   std::shared_ptr<InternalForce> internalForce(Model& model) const;

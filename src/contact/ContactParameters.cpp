@@ -116,7 +116,7 @@ void declarePairParameters(ParameterList& ct) {
 }
 
 void declareContactMassParameter(ParameterList& p) {
-  declareChoice(p, "Contact Mass", "auto", {"auto", "standard", "redistributed", "velocity update"},
+  declareChoice(p, "Contact Mass", "auto", {"auto", "standard", "redistributed", "normal", "velocity update"},
                 "standard: the blocks' mass matrices as they are; redistributed: the nodes of the "
                 "contact pairs' master and slave side sets carry no mass, each element touching "
                 "them has its mass moved onto its other nodes (element mass kept in every "
@@ -125,7 +125,10 @@ void declareContactMassParameter(ParameterList& p) {
                 "found statically each step, their velocities reported as displacement "
                 "differences; auto: redistributed with the implicit schemes, whatever the contact "
                 "method (standard when an element has every node on a contact surface), standard "
-                "with central differences; velocity update (implicit schemes): the standard mass, and "
+                "with central differences; normal (implicit schemes): as redistributed, but only along "
+                "the contact surfaces' normals (their nodes keep their inertia along the surface: the "
+                "element mass moved along the normal onto the nearest nodes off the surface); velocity "
+                "update (implicit schemes): the standard mass, and "
                 "after each step the velocity of the contact nodes projected with the lumped mass so "
                 "that no active constraint approaches (Laursen and Love 2002; the kinetic energy it "
                 "takes is counted in energy:dissipated)");
@@ -237,6 +240,7 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::
   s.massIsAutomatic = mass == "auto";
   s.redistributeMass = mass == "redistributed" || (s.massIsAutomatic && s.enabled());
   s.velocityUpdate = mass == "velocity update";
+  s.normalMass = mass == "normal";
   if (s.enabled()) {
     const ParameterList& pairs = ct.sublist("Pairs");
     if (pairs.numParams() == 0)
@@ -246,7 +250,7 @@ ContactSettings readContactSettings(const Teuchos::ParameterList& p, const std::
       s.pairs.push_back(readPair(pairs.sublist(pairs.name(it)), pairs.name(it), file,
                                  path + "/Contact/Pairs/" + pairs.name(it)));
   }
-  if ((s.redistributeMass || s.velocityUpdate) && !s.massIsAutomatic && !s.enabled())
+  if ((s.redistributeMass || s.velocityUpdate || s.normalMass) && !s.massIsAutomatic && !s.enabled())
     throwInput(file, path + "/Contact Mass", mass, "there are no contact surfaces",
                "set 'Contact/Method' and 'Contact/Pairs', or use 'standard'");
   return s;

@@ -29,6 +29,7 @@ struct ContactSettings {
   bool redistributeMass = false;  // 'Contact Mass' = redistributed, or auto (implicit schemes)
   bool massIsAutomatic = false;   // 'Contact Mass' = auto: may fall back to standard
   bool velocityUpdate = false;    // 'Contact Mass' = velocity update: standard mass, v projected after each step
+  bool normalMass = false;        // 'Contact Mass' = normal: the contact nodes massless along their normals
   std::string path;               // "Analyses/<name>", for messages
   bool enabled() const { return method != ContactMethodKind::None; }
   bool hasMultipliers() const {

@@ -12,8 +12,8 @@ namespace {
 bool saddlePoint(const ContactSettings& s) { return s.hasMultipliers() && !s.condensable(); }
 
 void checkExplicit(const ContactSettings& s, const std::string& file) {
-  if (s.velocityUpdate)
-    throwInput(file, s.path + "/Contact Mass", "velocity update",
+  if (s.velocityUpdate || s.normalMass)
+    throwInput(file, s.path + "/Contact Mass", s.velocityUpdate ? "velocity update" : "normal",
                "is an implicit scheme's treatment (central differences enforce contact on the lumped mass)",
                "use 'standard' or 'auto' with central differences");
   if (s.hasPressureUnknowns())

@@ -1,4 +1,5 @@
 #include "fem/Assembler.hpp"
+#include "fem/NormalMassRemoval.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -272,6 +273,20 @@ RCP<CrsMatrix> Assembler::mass(const std::vector<char>& massless) const {
     local.resize(x.size());
     for (size_t a = 0; a < x.size(); ++a) local[a] = massless[conn[a]];
     redistributeElementMass(x, local, static_cast<int>(k.components().size()), m, Me);
+  });
+}
+
+RCP<CrsMatrix> Assembler::mass(const std::vector<std::vector<Point3>>& directions) const {
+  if (directions.size() != static_cast<size_t>(mesh_.numNodes()))
+    throw std::invalid_argument("normal contact mass: the directions cover " + std::to_string(directions.size()) +
+                                " nodes of " + std::to_string(mesh_.numNodes()));
+  std::vector<const std::vector<Point3>*> local;
+  return assemble([&](const ElementKernel& k, MassKind m, const std::vector<Point3>& x, const int* conn,
+                      DenseMatrix& Me) {
+    k.mass(x, m, Me);
+    local.resize(x.size());
+    for (size_t a = 0; a < x.size(); ++a) local[a] = &directions[size_t(conn[a])];
+    removeNormalMass(x, local, k.components(), m, Me);
   });
 }
 

@@ -67,6 +67,10 @@ class Assembler {
   // any number of ranks. Throws std::invalid_argument for a wrong-sized mask or an element
   // whose nodes are all massless.
   RCP<CrsMatrix> mass(const std::vector<char>& massless) const;
+  // The mass with the nodes' listed directions (one list per mesh node, empty for most) carrying
+  // none: 'Contact Mass' = normal (removeNormalMass, fem/NormalMassRemoval.hpp). Throws
+  // std::invalid_argument for a wrong-sized list or an element whose nodes all have directions.
+  RCP<CrsMatrix> mass(const std::vector<std::vector<Point3>>& directions) const;
   // An upper bound of the highest eigenvalue of K x = lambda M x (the stiffness with `springs`,
   // the lumped mass): the largest element eigenvalue (elementEigenvalue, Irons and Treharne)
   // plus Gershgorin's bound of the springs alone on the nodes' lumped masses. +inf when a block

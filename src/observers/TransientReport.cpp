@@ -103,10 +103,12 @@ void TransientReport::describe(Model& model, const CrsMatrix& runMass) const {
     model.mass()->apply(one, y);
     const double before = one.dot(y);
     runMass.apply(one, y);
-    log() << format("  contact mass: redistributed: %lld contact-surface nodes massless (%lld DOFs); "
+    const bool normal = !op_.mass().masslessRotation().is_null();
+    log() << format("  contact mass: %s: %lld contact-surface nodes massless%s (%lld DOFs); "
                     "1^T M 1 over the free DOFs (the mass once per free direction: 3 x the mass in "
                     "3D with every direction free) %.12g -> %.12g kg\n",
-                    f_.masslessNodes, op_.mass().masslessDofs(), before, one.dot(y));
+                    normal ? "normal" : "redistributed", f_.masslessNodes,
+                    normal ? " along their normals" : "", op_.mass().masslessDofs(), before, one.dot(y));
   }
   if (!f_.massFallback.empty())
     log() << "  contact mass: standard ('auto' could not redistribute it: " << f_.massFallback << ")\n";

@@ -17,6 +17,12 @@ MassDamping::MassDamping(RCP<const CrsMatrix> M, double aK, double aM, std::shar
   masslessGlobal_ = rows.global;
 }
 
+void MassDamping::useMasslessBasis(MasslessBasis b) {
+  rotation_ = std::move(b.rotation);
+  massless_ = std::move(b.mask);
+  masslessGlobal_ = b.global;
+}
+
 void MassDamping::applyMass(const Vector& x, Vector& out) const {
   if (diagonal_.is_null()) M_->apply(x, out);
   else out.elementWiseMultiply(1.0, *diagonal_, x, 0.0);

@@ -12,6 +12,7 @@
 
 #include "core/TpetraTypes.hpp"
 #include "physics/InternalForce.hpp"
+#include "physics/MasslessBasis.hpp"
 #include "physics/ProductCache.hpp"
 #include "timeint/SecondOrderOperator.hpp"
 
@@ -32,8 +33,12 @@ class MassDamping {
   // W = ca M + cv C + cd K = (ca + cv aM) M + (cd + cv aK) K: its coefficients of M and K.
   double massCoefficient(const EffectiveCoefficients& c) const { return c.ca + c.cv * aM_; }
   double stiffnessCoefficient(const EffectiveCoefficients& c) const { return c.cd + c.cv * aK_; }
-  const std::vector<char>& masslessMask() const { return massless_; }  // per local DOF
+  // The DOFs without inertia: M's zero rows, or, after useMasslessBasis, the massless rotated
+  // DOFs of Q^T M Q ('Contact Mass' = normal: physics/MasslessBasis.hpp).
+  void useMasslessBasis(MasslessBasis b);
+  const std::vector<char>& masslessMask() const { return massless_; }  // per local (rotated) DOF
   long long masslessDofs() const { return masslessGlobal_; }
+  const RCP<const CrsMatrix>& masslessRotation() const { return rotation_; }  // Q; null: the axes
 
  private:
   std::shared_ptr<InternalForce> internal_;
@@ -44,6 +49,7 @@ class MassDamping {
   static constexpr int kKv = 0, kMv = 1;
   RCP<Vector> tmp_, energyTmp_;
   std::vector<char> massless_;
+  RCP<const CrsMatrix> rotation_;
   long long masslessGlobal_ = 0;
 };
 

@@ -324,4 +324,8 @@ RCP<const CrsMatrix> Model::mass(const std::vector<char>& massless) const {
   return assembler_->mass(massless);
 }
 
+RCP<const CrsMatrix> Model::mass(const std::vector<std::vector<Point3>>& directions) const {
+  return assembler_->mass(directions);
+}
+
 }  // namespace choc

@@ -60,6 +60,9 @@ class Model {
   // redistributed onto the other nodes (Assembler::mass(massless)); not cached. Throws
   // std::invalid_argument when an element has every node flagged.
   RCP<const CrsMatrix> mass(const std::vector<char>& massless) const;
+  // The mass with each node's listed directions massless ('Contact Mass' = normal:
+  // Assembler::mass(directions)); not cached.
+  RCP<const CrsMatrix> mass(const std::vector<std::vector<Point3>>& directions) const;
   // An upper bound of the highest eigenvalue of the stiffness() against the lumped mass():
   // Assembler::eigenvalueBound (+inf with a consistent mass). Collective.
   double eigenvalueBound() const { return assembler_->eigenvalueBound(springs_); }

@@ -79,8 +79,20 @@ CorrectionStatus StructuralOperator::solveInitialAcceleration(const Vector& u, c
                                                               Vector& a) {
   if (mass_.masslessDofs() == 0) return SecondOrderOperator::solveInitialAcceleration(u, r, a);
   newton_.forget();  // the next correction refactors the effective matrix
-  return solveMasslessInitialAcceleration(*tangentMatrix(), *mass_.matrix(), mass_.masslessMask(), newton_.solver(),
-                                          timer_, r, a);
+  const RCP<const CrsMatrix>& Q = mass_.masslessRotation();
+  if (Q.is_null())
+    return solveMasslessInitialAcceleration(*tangentMatrix(), *mass_.matrix(), mass_.masslessMask(),
+                                            newton_.solver(), timer_, r, a);
+  // Normal contact mass: the same blocks in the rotated DOFs, where the normals are DOFs.
+  const RCP<CrsMatrix> Kr = rotatedMatrix(*Q, *tangentMatrix());
+  const RCP<CrsMatrix> Mr = rotatedMatrix(*Q, *mass_.matrix());
+  zeroMasslessEntries(*Mr, mass_.masslessMask());
+  Vector rr(r.getMap()), ar(a.getMap());
+  rotate(*Q, r, rr, true);
+  const CorrectionStatus st =
+      solveMasslessInitialAcceleration(*Kr, *Mr, mass_.masslessMask(), newton_.solver(), timer_, rr, ar);
+  rotate(*Q, ar, a, false);
+  return st;
 }
 
 void StructuralOperator::beginStep(const Vector& u, double t, double dt) {
