@@ -17,6 +17,7 @@ class NewmarkStepper : public StructuralStepper {
 
   void start(double t0, double firstStep, TransientSummary& sum, StepInfo& info) override;
   Advance advance(const NominalStep& s, StepControl& c, TransientSummary& sum) override;
+  void archiveState(StateArchive& a, const StateVectors& vectors) const override;
   void restoreState(const StateArchive& a, const StateVectors& vectors) override;
 
  private:
