@@ -10,7 +10,7 @@ PYTHON ?= /usr/bin/python3
 # 93 s; 4.3 s yielding; no cost alone). Every mpirun under make (tests, studies, benchmarks).
 export OMPI_MCA_mpi_yield_when_idle = 1
 
-.PHONY: all deps configure build run test verify study study-plastic bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-plastic bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
+.PHONY: all deps configure build run test verify study study-contact-mass study-plastic bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-plastic bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
 
 all: build
 
@@ -101,6 +101,12 @@ bench-multigrid: build
 bench-kept: build
 	$(PYTHON) tools/bench/bench_kept_factorization.py --build $(BUILD)
 
+# The implicit contact mass's trade (issue 73): every 'Contact Mass' treatment on the Taylor bars,
+# the copper bar, example 03, SDNV100 and SDNL111 E2, each against its reference, with its cost
+# (docs/verification/contact-mass.md).
+study-contact-mass: build
+	$(PYTHON) tools/study/contact_mass_study.py --build $(BUILD) --out results/study/contact-mass
+
 # SDND100's friction: stick stiffness and dt against the rows and the exact motion.
 study-friction: build
 	$(PYTHON) tools/study/sdnd100_study.py --build $(BUILD)
@@ -139,6 +145,7 @@ study: build
 	$(PYTHON) tools/study/taylor_bar_study.py --build $(BUILD) --out results/study/taylor-bar
 	$(PYTHON) tools/study/taylor_bar_study.py --build $(BUILD) --law johnson-cook --out results/study/taylor-bar-jc
 	$(PYTHON) tools/study/plastic_impact_study.py --build $(BUILD) --out results/study/plastic-impact
+	$(PYTHON) tools/study/contact_mass_study.py --build $(BUILD) --out results/study/contact-mass
 
 # The Taylor bar's mesh convergence, QUAD4 F-bar against standard QUAD4 and QUAD8
 # (docs/verification/taylor-bar.md; about 15 minutes), and the elastic-plastic sphere's restitution

@@ -15,6 +15,7 @@
 // contact/ContactStrategies.hpp chooses one for a scheme, a method and a linear solver, and
 // refuses the combinations that cannot work.
 #pragma once
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -91,12 +92,15 @@ class ContactStrategy {
   virtual double springStiffness() const { return geometry_.method().stiffness(); }
 
   // ---- The velocity update of an implicit step (Laursen and Love 2002; contact/VelocityUpdate.cpp)
-  // After an accepted step: the lumped-mass projection of v (and of a) that brings every active
-  // constraint's gap rate (and gap acceleration) to 0: v += W B^T lambda with W the lumped inverse
-  // masses (the same at every call). A projection in the lumped mass's norm: it lowers the kinetic
-  // energy 1/2 v^T W^-1 v and never raises it. False when no constraint is active (v and a
-  // unchanged). Collective. Throws NumericalError when the impulses do not converge.
-  bool correctVelocity(Vector& v, Vector& a, const Vector& inverseMass);
+  // After an accepted step: the projection of v (and of a) in the mass's norm that brings every
+  // active constraint's gap rate (and gap acceleration) to 0. With a lumped mass (no solveMass):
+  // v += W B^T lambda, W the lumped inverse masses (the same at every call). With a consistent
+  // mass: v += M^-1 B^T lambda, (B M^-1 B^T) lambda by conjugate gradients preconditioned by the
+  // lumped B W B^T, each M^-1 by solveMass. It lowers the kinetic energy 1/2 v^T M v and never
+  // raises it. False when no constraint is active (v and a unchanged). Collective. Throws
+  // NumericalError when the impulses do not converge.
+  using MassInverse = std::function<void(const Vector& b, Vector& x)>;
+  bool correctVelocity(Vector& v, Vector& a, const Vector& inverseMass, const MassInverse& solveMass = {});
   void useVelocityUpdate(bool on) { velocityUpdate_ = on; }
   bool updatesVelocity() const { return velocityUpdate_; }
 

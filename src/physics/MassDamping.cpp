@@ -4,6 +4,8 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "core/Errors.hpp"
+#include "core/Format.hpp"
 #include "physics/MasslessInitialAcceleration.hpp"
 
 namespace choc {
@@ -43,6 +45,35 @@ void MassDamping::addDampingForces(const Vector& v, Vector& out, bool keep) {
     applyMass(v, Mv);
     out.update(aM_, Mv, 1.0);
   }
+}
+
+void MassDamping::solveMass(const Vector& b, Vector& x) const {
+  const auto map = M_->getRowMap();
+  Vector d(map), r(b, Teuchos::Copy), z(map), p(map), q(map);
+  M_->getLocalDiagCopy(d);
+  d.reciprocal(d);
+  x.putScalar(0.0);
+  const double bnorm = b.norm2();
+  if (bnorm == 0.0) return;
+  z.elementWiseMultiply(1.0, d, r, 0.0);
+  p.assign(z);
+  double rz = r.dot(z);
+  for (int k = 0; k < 1000; ++k) {
+    M_->apply(p, q);
+    const double pq = p.dot(q);
+    if (!(pq > 0)) break;
+    const double alpha = rz / pq;
+    x.update(alpha, p, 1.0);
+    r.update(-alpha, q, 1.0);
+    if (r.norm2() <= 1e-13 * bnorm) return;
+    z.elementWiseMultiply(1.0, d, r, 0.0);
+    const double rzNew = r.dot(z);
+    p.update(1.0, z, rzNew / rz);
+    rz = rzNew;
+  }
+  throw NumericalError(format("the mass matrix's solve (conjugate gradients, Jacobi) did not converge: residual %.3e "
+                              "of the right-hand side's norm",
+                              r.norm2() / bnorm));
 }
 
 double MassDamping::kineticEnergy(const Vector& v) const {

@@ -28,6 +28,10 @@ class MassDamping {
   // out += C v; with `keep`, K0 v and M v are kept for the energies of v.
   void addDampingForces(const Vector& v, Vector& out, bool keep);
   double kineticEnergy(const Vector& v) const;                // 1/2 v.M v
+  // x = M^-1 b by conjugate gradients preconditioned by M's diagonal, to 1e-13 of |b| (a mass
+  // matrix's condition number does not grow with the mesh: tens of iterations). Throws
+  // NumericalError when it does not converge (a singular M: massless DOFs). Collective.
+  void solveMass(const Vector& b, Vector& x) const;
   bool damps() const { return aK_ != 0.0 || aM_ != 0.0; }      // Rayleigh damping: C v depends on v
   double dampingPower(const Vector& v, double kinetic) const;  // v.C v, given 1/2 v.M v
   // W = ca M + cv C + cd K = (ca + cv aM) M + (cd + cv aK) K: its coefficients of M and K.

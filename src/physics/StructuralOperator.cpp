@@ -1,5 +1,6 @@
 #include "physics/StructuralOperator.hpp"
 
+#include "physics/CriticalStep.hpp"
 #include "physics/MasslessInitialAcceleration.hpp"
 
 #include <algorithm>
@@ -115,14 +116,23 @@ SecondOrderOperator::CorrectedFields StructuralOperator::correctVelocity(Vector&
   if (!contact_ || !contact_->updatesVelocity()) return out;
   TimerScope ts(timer_, "Transient: contact");
   if (lumpedInverse_.is_null()) {
-    Vector one(map());
-    one.putScalar(1.0);
+    // A lumped mass: its own inverse. A consistent one: its diagonal's, the preconditioner of
+    // the projection in M's norm (a row sum can be negative: TET10's corners).
+    consistentMass_ = lumpedMassDiagonal(*mass_.matrix()).is_null();
     lumpedInverse_ = rcp(new Vector(map()));
-    mass_.applyMass(one, *lumpedInverse_);
+    if (consistentMass_) {
+      mass_.matrix()->getLocalDiagCopy(*lumpedInverse_);
+    } else {
+      Vector one(map());
+      one.putScalar(1.0);
+      mass_.applyMass(one, *lumpedInverse_);
+    }
     lumpedInverse_->reciprocal(*lumpedInverse_);
   }
   const double before = mass_.kineticEnergy(v);
-  if (!contact_->correctVelocity(v, a, *lumpedInverse_)) return out;
+  const ContactStrategy::MassInverse solve = [this](const Vector& b, Vector& x) { mass_.solveMass(b, x); };
+  if (!contact_->correctVelocity(v, a, *lumpedInverse_, consistentMass_ ? solve : ContactStrategy::MassInverse()))
+    return out;
   work_.velocityUpdate += before - mass_.kineticEnergy(v);
   out.acceleration = true;
   out.forces = mass_.damps() || links_;

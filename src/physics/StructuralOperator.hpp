@@ -128,7 +128,8 @@ class StructuralOperator : public ExplicitOperator {
   ProductCache ku_;
   bool keepProducts_ = true;
   WorkIntegrals work_;
-  RCP<Vector> lumpedInverse_;  // 1 / (M 1): the velocity update's lumped inverse mass, built at its first use
+  RCP<Vector> lumpedInverse_;  // the velocity update's 1 / (M 1), or 1 / diag(M) for a consistent M; at its first use
+  bool consistentMass_ = false;  // the velocity update projects in a consistent M's norm
 };
 
 }  // namespace choc

@@ -384,10 +384,8 @@ choc_cli_input_error(kinematic_finite check bad_kinematic_finite.xml
   "parameter 'Model/Materials/steel/Kinematic Hardening Modulus' = '1e.10': kinematic hardening is small-strain only. block 'BEAM' has 'Strain' = 'finite'. set the block's 'Strain' = 'small', or 'Kinematic Hardening Modulus' = 0")
 choc_cli_input_error(kinematic_negative check bad_kinematic_negative.xml
   "parameter 'Model/Materials/steel/Kinematic Hardening Modulus' = '-1e.09': out of range. valid: a number in .0, inf.")
-# The contact velocity update is an implicit scheme's treatment, projected in a lumped mass's norm.
+# The contact velocity update and the normal contact mass are implicit schemes' treatments.
 choc_cli_input_error(velocity_update_explicit check bad_velocity_update_explicit.xml
   "parameter 'Analyses/impact/Contact Mass' = 'velocity update': is an implicit scheme's treatment .central differences enforce contact on the lumped mass.. use 'standard' or 'auto' with central differences")
 choc_cli_input_error(normal_mass_explicit check bad_normal_mass_explicit.xml
   "parameter 'Analyses/impact/Contact Mass' = 'normal': is an implicit scheme's treatment .central differences enforce contact on the lumped mass.. use 'standard' or 'auto' with central differences")
-choc_cli_reference_error(velocity_update_consistent_mass bad_velocity_update_consistent.xml
-  "parameter 'Analyses/impact/Contact Mass' = 'velocity update': needs a lumped .diagonal, positive. mass, in whose norm it projects the velocity. set 'Mass' = 'lumped' in every block of Model/Blocks, or use 'auto'")

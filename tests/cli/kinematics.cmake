@@ -107,3 +107,8 @@ choc_cli_script(plastic_impact 600)
 # equal 1 rank to 1e-6 of the peaks over its first 4 us; at the default Newton iterations
 # a numerical failure naming them (scripts/plastic_impact_implicit.py).
 choc_cli_script(plastic_impact_implicit 300)
+
+# The contact velocity update on a consistent mass (the projection in M's norm): example 03 with
+# one impact, no energy created, the kinetic energy taken within its bound
+# (scripts/velocity_update_consistent.py).
+choc_cli_script(velocity_update_consistent 120)

@@ -1,0 +1,242 @@
+#!/usr/bin/python3
+"""The contact mass's trade (make study-contact-mass; issue 73): every implicit contact
+treatment of 'Contact Mass' on the scenes where it matters, each against its reference,
+with its cost.
+
+Treatments: redistributed (today's 'auto' in the implicit schemes), normal, velocity update
+(projected in the scene's own mass's norm, lumped or consistent) and standard. Scenes and references:
+  - taylor3d: input/taylor_bar_3d_implicit.xml (HHT -0.3 at 0.1 us, J2, lumped) against
+    input/taylor_bar_3d.xml (central differences on the same mesh): face radius and length;
+  - taylor_axi: input/taylor_bar_axisymmetric_implicit.xml against
+    input/taylor_bar_axisymmetric.xml: the same;
+  - copper: input/copper_bar.xml with Lagrange contact and the lumped mass (average acceleration
+    at 0.2 us) against central differences at 20 ns on the same mesh: rebound velocity (the
+    bar's momentum over its mass at 80 us) and contact time (the first step with a force to the
+    first without, each end placed where the force crosses zero by linear interpolation);
+  - bar03: examples/03-bar-on-wall (average acceleration, consistent mass) against d'Alembert:
+    the top face's largest error over the history (the input's exact-solution row);
+  - sdnv100: input/sdnv100.xml's 'lagrange' analysis against its deck's rows (the largest
+    relative error of its checks);
+  - sdnl111e2: input/sdnl111e.xml's 'e2_alpha01' (HHT alpha = -0.1) with its deck's rows.
+For every run: impacts (closings of the pair), the largest energy balance over E0 (energy
+created), Newton corrections per step, wall seconds, exit code.
+
+usage: tools/study/contact_mass_study.py [--build build] [--out results/contact-mass]
+       [--scenes taylor3d,copper,...] [--treatments normal,...]
+Writes OUT/contact_mass.csv and OUT/README.md (the tables of docs/verification/contact-mass.md).
+"""
+import argparse
+import csv
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "lib"))
+import chocrun  # noqa: E402
+
+TREATMENTS = ["redistributed", "normal", "velocity update", "standard"]
+R0, L0 = 3.2e-3, 32.4e-3          # the Taylor bars (meshes/taylor_bar*.geo)
+COPPER_MASS = 9.0704e-3           # the copper bar's mass [kg] (docs/verification/copper-bar.md)
+
+
+def deck(path, analysis, values, drop_checks=False):
+    d = chocrun.load_deck(path)
+    chocrun.keep_analyses(d, [analysis])
+    chocrun.set_params(d, values, create=True)
+    if drop_checks and chocrun.has(d, f"Analyses/{analysis}/Checks"):
+        chocrun.remove_sublist(d, f"Analyses/{analysis}/Checks")
+    return d
+
+
+def run(build, work, tag, d, analysis, cwd=None):
+    """Runs the deck (any exit code); returns (summary or None, history or None, the Run)."""
+    out = os.path.join(work, tag)
+    path = chocrun.write_deck(d, os.path.join(work, tag + ".xml"))
+    r = chocrun.run(chocrun.choc_path(build), path, out, ok=None, cwd=cwd)
+    try:
+        return chocrun.read_summary(out, analysis), chocrun.read_history(out, analysis), r
+    except (OSError, ValueError, KeyError):
+        return None, None, r
+
+
+def common(summary, history, r):
+    """The figures every row has (the wall time of the whole process, from chocrun.run)."""
+    row = {"exit": r.returncode, "wall_s": r.wall}
+    if not summary:
+        return row
+    steps = max(1, summary.get("steps", 0))
+    row["newton_per_step"] = summary.get("newton", {}).get("iterations", 0) / steps
+    row["impacts"] = sum(v.get("number_of_impacts", 0) for v in summary.get("impacts", {}).values())
+    if history and "energy:balance" in history:
+        e0 = float(history["energy:total"][0])
+        row["energy_created_E0"] = max(float(b) for b in history["energy:balance"]) / e0
+    return row
+
+
+def taylor(build, work, implicit, explicit, tag, treatments):
+    ref_s, ref_h, _ = run(build, work, tag + "_reference", deck(chocrun.input_path(explicit), "impact",
+                                                                 {"Analyses/impact/Exodus Interval": 0}), "impact")
+    ref = shape(ref_h)
+    rows = []
+    for t in treatments:
+        d = deck(chocrun.input_path(implicit), "impact",
+                 {"Analyses/impact/Exodus Interval": 0, "Analyses/impact/Contact Mass": t})
+        s, h, proc = run(build, work, f"{tag}_{t.replace(' ', '_')}", d, "impact")
+        row = dict(common(s, h, proc), scene=tag, treatment=t)
+        if h:
+            r, length = shape(h)
+            row["error_1"] = f"radius {(r / ref[0] - 1) * 100:+.2f} %"
+            row["error_2"] = f"length {(length / ref[1] - 1) * 100:+.2f} %"
+        rows.append(row)
+    return rows, f"central differences: radius {ref[0] * 1e3:.4f} mm, length {ref[1] * 1e3:.4f} mm"
+
+
+def shape(h):
+    return R0 + float(h["EDGE:DX"][-1]), L0 + float(h["REAR:DY"][-1]) - float(h["CENTRE:DY"][-1])
+
+
+def contact_span(h, column):
+    """Contact time: the force rises from 0 within the step before its first non-zero sample and
+    falls to 0 within the step after its last: each end placed at the middle of that step (the
+    sampling's error is then at most half a step at each end)."""
+    t = [float(x) for x in h["time"]]
+    on = [k for k, x in enumerate(h[column]) if abs(float(x)) > 0]
+    if not on:
+        return 0.0
+    first, last = on[0], on[-1]
+    start = t[first] - 0.5 * (t[first] - t[first - 1]) if first > 0 else t[first]
+    end = t[last] + 0.5 * (t[last + 1] - t[last]) if last + 1 < len(t) else t[last]
+    return end - start
+
+
+def copper(build, work, treatments):
+    base = {"Analyses/impact/Exodus Interval": 0, "Analyses/impact/Contact/Method": "Lagrange",
+            "Analyses/impact/History": "centre:DZ centre:VZ top:DZ top:VZ bar:PZ", "Model/Blocks/bar/Mass": "lumped"}
+    path = chocrun.input_path("copper_bar.xml")
+    ref_d = deck(path, "impact", dict(base, **{"Analyses/impact/Scheme": "central differences",
+                                               "Analyses/impact/Time Step": 2e-8}), drop_checks=True)
+    _, ref_h, _ = run(build, work, "copper_reference", ref_d, "impact")
+    v_ref, span_ref = float(ref_h["bar:PZ"][-1]) / COPPER_MASS, contact_span(ref_h, "plane:force")
+    rows = []
+    for t in treatments:
+        s, h, proc = run(build, work, f"copper_{t.replace(' ', '_')}",
+                         deck(path, "impact", dict(base, **{"Analyses/impact/Contact Mass": t}), drop_checks=True), "impact")
+        row = dict(common(s, h, proc), scene="copper", treatment=t)
+        if h:
+            v = float(h["bar:PZ"][-1]) / COPPER_MASS
+            row["error_1"] = f"rebound {(v / v_ref - 1) * 100:+.2f} %"
+            row["error_2"] = f"contact time {(contact_span(h, 'plane:force') / span_ref - 1) * 100:+.2f} %"
+        rows.append(row)
+    return rows, f"central differences at 20 ns: rebound {v_ref:.2f} m/s, contact time {span_ref * 1e6:.2f} us"
+
+
+def worst_check(summary, kind=None):
+    """The check row (of reference kind `kind`, or any) with the largest error over its tolerance:
+    (quantity, error, tolerance, status), and the number of rows that failed."""
+    worst, failed = None, 0
+    rows = (summary or {}).get("checks", {}).get("rows", {})
+    for c in rows.values():
+        if kind and c.get("reference_kind") != kind:
+            continue
+        e, tol = c.get("error"), c.get("tolerance")
+        failed += c.get("status") != "OK"
+        if not isinstance(e, (int, float)) or not tol:
+            continue
+        if worst is None or abs(e) / tol > abs(worst[1]) / worst[2]:
+            worst = (c.get("quantity", "?"), e, tol, c.get("status", "?"))
+    return worst, failed
+
+
+def deck_rows(build, work, tag, path, analysis, treatments, kind=None, cwd=None):
+    rows = []
+    for t in treatments:
+        d = deck(path, analysis, {f"Analyses/{analysis}/Exodus Interval": 0, f"Analyses/{analysis}/Contact Mass": t})
+        s, h, proc = run(build, work, f"{tag}_{t.replace(' ', '_')}", d, analysis, cwd=cwd)
+        row = dict(common(s, h, proc), scene=tag, treatment=t)
+        w, failed = worst_check(s, kind)
+        if w:
+            row["error_1"] = f"{w[0]}: {w[1]:.3g} ({abs(w[1]) / w[2]:.2f} of its tolerance)"
+            row["error_2"] = f"{failed} rows failed"
+        rows.append(row)
+    return rows
+
+
+SCENES = ["taylor3d", "taylor_axi", "copper", "bar03", "sdnv100", "sdnl111e2"]
+
+
+def study(build, work, scenes, treatments):
+    rows, refs = [], {}
+    if "taylor3d" in scenes:
+        r, refs["taylor3d"] = taylor(build, work, "taylor_bar_3d_implicit.xml", "taylor_bar_3d.xml", "taylor3d", treatments)
+        rows += r
+    if "taylor_axi" in scenes:
+        r, refs["taylor_axi"] = taylor(build, work, "taylor_bar_axisymmetric_implicit.xml", "taylor_bar_axisymmetric.xml",
+                                       "taylor_axi", treatments)
+        rows += r
+    if "copper" in scenes:
+        r, refs["copper"] = copper(build, work, treatments)
+        rows += r
+    if "bar03" in scenes:
+        ex = os.path.join(chocrun.TOP, "examples", "03-bar-on-wall")
+        rows += deck_rows(build, work, "bar03", os.path.join(ex, "input.xml"), "drop", treatments, kind="exact", cwd=ex)
+        refs["bar03"] = "d'Alembert (the input's exact-solution rows)"
+    if "sdnv100" in scenes:
+        rows += deck_rows(build, work, "sdnv100", chocrun.input_path("sdnv100.xml"), "lagrange", treatments)
+        refs["sdnv100"] = "the deck's rows"
+    if "sdnl111e2" in scenes:
+        rows += deck_rows(build, work, "sdnl111e2", chocrun.input_path("sdnl111e.xml"), "e2_alpha01", treatments)
+        refs["sdnl111e2"] = "the deck's rows"
+    return rows, refs
+
+
+FIELDS = ["scene", "treatment", "error_1", "error_2", "impacts", "energy_created_E0", "newton_per_step", "wall_s", "exit"]
+
+
+def fmt(v):
+    if v is None or v == "":
+        return "-"
+    if isinstance(v, float):
+        return f"{v:.3g}"
+    return str(v)
+
+
+def write(out, rows, refs):
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, "contact_mass.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, FIELDS, extrasaction="ignore")
+        w.writeheader()
+        w.writerows(rows)
+    lines = ["# The contact mass's trade (tools/study/contact_mass_study.py)", ""]
+    for scene in dict.fromkeys(r["scene"] for r in rows):
+        lines += [f"## {scene}: reference {refs.get(scene, '')}", "",
+                  "| treatment | error | | impacts | energy created / E0 | Newton / step | wall [s] | exit |",
+                  "|---|---|---|---|---|---|---|---|"]
+        for r in rows:
+            if r["scene"] == scene:
+                lines.append("| " + " | ".join(fmt(r.get(k)) for k in FIELDS[1:]) + " |")
+        lines.append("")
+    text = "\n".join(lines)
+    with open(os.path.join(out, "README.md"), "w") as f:
+        f.write(text)
+    print(text)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--out", default="results/contact-mass")
+    ap.add_argument("--scenes", default=",".join(SCENES))
+    ap.add_argument("--treatments", default=",".join(TREATMENTS))
+    a = ap.parse_args()
+    scenes = [s for s in a.scenes.split(",") if s]
+    unknown = [s for s in scenes if s not in SCENES]
+    if unknown:
+        sys.exit(f"contact_mass_study: --scenes: unknown {', '.join(unknown)} (valid: {', '.join(SCENES)})")
+    treatments = [t for t in a.treatments.split(",") if t]
+    work = os.path.join(a.out, "runs")
+    os.makedirs(work, exist_ok=True)
+    rows, refs = study(a.build, work, scenes, treatments)
+    write(a.out, rows, refs)
+
+
+if __name__ == "__main__":
+    main()
