@@ -17,7 +17,13 @@ Treatments: redistributed (today's 'auto' in the implicit schemes), normal, velo
     the top face's largest error over the history (the input's exact-solution row);
   - sdnv100: input/sdnv100.xml's 'lagrange' analysis against its deck's rows (the largest
     relative error of its checks);
-  - sdnl111e2: input/sdnl111e.xml's 'e2_alpha01' (HHT alpha = -0.1) with its deck's rows.
+  - sdnl111e2: input/sdnl111e.xml's 'e2_alpha01' (HHT alpha = -0.1) with its deck's rows;
+  - hertz, hertz2: input/hertz.xml (a steel sphere on a rigid plane, axisymmetric) and
+    input/hertz_two_spheres.xml (two meshed spheres head on: each moves as the one on the plane)
+    against Hertz (tools/oracles/hertz.py): the restitution (rebound velocity from the impulse
+    over the impact velocity; 1 for Hertz's elastic impact) and the contact duration;
+  - oblique, block: input/oblique_sphere.xml (mu = 0.1) and input/compact_block.xml: impacts,
+    energy and cost only (their references are in their own tests).
 For every run: impacts (closings of the pair), the largest energy balance over E0 (energy
 created), Newton corrections per step, wall seconds, exit code.
 
@@ -160,7 +166,29 @@ def deck_rows(build, work, tag, path, analysis, treatments, kind=None, cwd=None)
     return rows
 
 
-SCENES = ["taylor3d", "taylor_axi", "copper", "bar03", "sdnv100", "sdnl111e2"]
+SCENES = ["taylor3d", "taylor_axi", "copper", "bar03", "sdnv100", "sdnl111e2", "hertz", "hertz2", "oblique", "block"]
+# The scenes compared with their inputs' own rows (or only counted): input, analysis.
+DECK_SCENES = {"sdnv100": ("sdnv100.xml", "lagrange"), "sdnl111e2": ("sdnl111e.xml", "e2_alpha01"),
+               "oblique": ("oblique_sphere.xml", "oblique"), "block": ("compact_block.xml", "drop")}
+HERTZ_SCENES = {"hertz": "hertz.xml", "hertz2": "hertz_two_spheres.xml"}
+
+
+def hertz_scene(build, work, tag, name, treatments):
+    chocrun.add_tool_path("oracles")
+    import hertz as oracle  # noqa: E402  (tools/oracles/hertz.py)
+    ref = oracle.hertz()
+    rows = []
+    for t in treatments:
+        d = deck(chocrun.input_path(name), "axisymmetric",
+                 {"Analyses/axisymmetric/Exodus Interval": 0, "Analyses/axisymmetric/Contact Mass": t})
+        s, h, proc = run(build, work, f"{tag}_{t.replace(' ', '_')}", d, "axisymmetric")
+        row = dict(common(s, h, proc), scene=tag, treatment=t)
+        if h:
+            m = oracle.measure(chocrun.history_path(os.path.join(work, f"{tag}_{t.replace(' ', '_')}"), "axisymmetric"), ref)
+            row["error_1"] = f"restitution {m['rebound velocity'][0] / ref['v']:.4f}"
+            row["error_2"] = f"duration {(m['contact duration'][0] / ref['tc'] - 1) * 100:+.2f} %"
+        rows.append(row)
+    return rows, f"Hertz: restitution 1, duration {ref['tc'] * 1e6:.2f} us"
 
 
 def study(build, work, scenes, treatments):
@@ -179,12 +207,14 @@ def study(build, work, scenes, treatments):
         ex = os.path.join(chocrun.TOP, "examples", "03-bar-on-wall")
         rows += deck_rows(build, work, "bar03", os.path.join(ex, "input.xml"), "drop", treatments, kind="exact", cwd=ex)
         refs["bar03"] = "d'Alembert (the input's exact-solution rows)"
-    if "sdnv100" in scenes:
-        rows += deck_rows(build, work, "sdnv100", chocrun.input_path("sdnv100.xml"), "lagrange", treatments)
-        refs["sdnv100"] = "the deck's rows"
-    if "sdnl111e2" in scenes:
-        rows += deck_rows(build, work, "sdnl111e2", chocrun.input_path("sdnl111e.xml"), "e2_alpha01", treatments)
-        refs["sdnl111e2"] = "the deck's rows"
+    for tag, name in HERTZ_SCENES.items():
+        if tag in scenes:
+            r, refs[tag] = hertz_scene(build, work, tag, name, treatments)
+            rows += r
+    for tag, (name, analysis) in DECK_SCENES.items():
+        if tag in scenes:
+            rows += deck_rows(build, work, tag, chocrun.input_path(name), analysis, treatments)
+            refs[tag] = f"the rows of input/{name}"
     return rows, refs
 
 
