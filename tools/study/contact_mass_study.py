@@ -22,6 +22,10 @@ Treatments: redistributed (today's 'auto' in the implicit schemes), normal, velo
     input/hertz_two_spheres.xml (two meshed spheres head on: each moves as the one on the plane)
     against Hertz (tools/oracles/hertz.py): the restitution (rebound velocity from the impulse
     over the impact velocity; 1 for Hertz's elastic impact) and the contact duration;
+  - bracket: input/bracket_drop.xml (TET10, h = 3.7 mm, lumped, mu = 0.2) as
+    tools/bench/bench_bracket.py's implicit reference at 0.2 us, against the same run with the
+    standard mass (central differences are within 0.15 % of it): the motion as a share of each
+    peak and the friction work (bench_bracket.compare);
   - oblique, block: input/oblique_sphere.xml (mu = 0.1) and input/compact_block.xml: impacts,
     energy and cost only (their references are in their own tests).
 For every run: impacts (closings of the pair), the largest energy balance over E0 (energy
@@ -166,11 +170,28 @@ def deck_rows(build, work, tag, path, analysis, treatments, kind=None, cwd=None)
     return rows
 
 
-SCENES = ["taylor3d", "taylor_axi", "copper", "bar03", "sdnv100", "sdnl111e2", "hertz", "hertz2", "oblique", "block"]
+SCENES = ["taylor3d", "taylor_axi", "copper", "bar03", "sdnv100", "sdnl111e2", "hertz", "hertz2", "bracket", "oblique",
+          "block"]
 # The scenes compared with their inputs' own rows (or only counted): input, analysis.
 DECK_SCENES = {"sdnv100": ("sdnv100.xml", "lagrange"), "sdnl111e2": ("sdnl111e.xml", "e2_alpha01"),
                "oblique": ("oblique_sphere.xml", "oblique"), "block": ("compact_block.xml", "drop")}
 HERTZ_SCENES = {"hertz": "hertz.xml", "hertz2": "hertz_two_spheres.xml"}
+
+
+def bracket(build, work, treatments):
+    chocrun.add_tool_path("bench")
+    import bench_bracket  # noqa: E402  (tools/bench/bench_bracket.py)
+    _, ref, _ = run(build, work, "bracket_reference", bench_bracket.deck(None, "reference", 2e-7, "standard"), "drop")
+    rows = []
+    for t in treatments:
+        s, h, proc = run(build, work, f"bracket_{t.replace(' ', '_')}", bench_bracket.deck(None, "reference", 2e-7, t), "drop")
+        row = dict(common(s, h, proc), scene="bracket", treatment=t)
+        if h and ref:
+            motion, friction, _ = bench_bracket.compare(ref, h)
+            row["error_1"] = f"motion {motion:.2e} of the peaks"
+            row["error_2"] = f"friction work {friction:.2e}"
+        rows.append(row)
+    return rows, "the same run with the standard mass"
 
 
 def hertz_scene(build, work, tag, name, treatments):
@@ -207,6 +228,9 @@ def study(build, work, scenes, treatments):
         ex = os.path.join(chocrun.TOP, "examples", "03-bar-on-wall")
         rows += deck_rows(build, work, "bar03", os.path.join(ex, "input.xml"), "drop", treatments, kind="exact", cwd=ex)
         refs["bar03"] = "d'Alembert (the input's exact-solution rows)"
+    if "bracket" in scenes:
+        r, refs["bracket"] = bracket(build, work, treatments)
+        rows += r
     for tag, name in HERTZ_SCENES.items():
         if tag in scenes:
             r, refs[tag] = hertz_scene(build, work, tag, name, treatments)
