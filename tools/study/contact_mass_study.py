@@ -26,6 +26,8 @@ Treatments: redistributed (today's 'auto' in the implicit schemes), normal, velo
     tools/bench/bench_bracket.py's implicit reference at 0.2 us, against the same run with the
     standard mass (central differences are within 0.15 % of it): the motion as a share of each
     peak and the friction work (bench_bracket.compare);
+  - copper_dt: the copper scene at 0.4, 0.2, 0.1 and 0.05 us against central differences at
+    10 ns: the rebound's and the contact time's convergence in dt (normal and velocity update);
   - release: input/copper_bar.xml as it is (average acceleration, consistent mass) with Penalty
     and Lagrange contact at 0.1 to 2 us: the largest energy balance (the release term, the energy
     an opening constraint returns; docs/verification/copper-bar.md);
@@ -121,25 +123,34 @@ def contact_span(h, column):
     return end - start
 
 
-def copper(build, work, treatments):
+def copper(build, work, treatments, steps=None):
+    """The copper bar against central differences (at 20 ns, or 10 ns when `steps` lists the
+    implicit steps of a convergence series)."""
     base = {"Analyses/impact/Exodus Interval": 0, "Analyses/impact/Contact/Method": "Lagrange",
             "Analyses/impact/History": "centre:DZ centre:VZ top:DZ top:VZ bar:PZ", "Model/Blocks/bar/Mass": "lumped"}
     path = chocrun.input_path("copper_bar.xml")
+    cd_dt = 1e-8 if steps else 2e-8
     ref_d = deck(path, "impact", dict(base, **{"Analyses/impact/Scheme": "central differences",
-                                               "Analyses/impact/Time Step": 2e-8}), drop_checks=True)
-    _, ref_h, _ = run(build, work, "copper_reference", ref_d, "impact")
+                                               "Analyses/impact/Time Step": cd_dt}), drop_checks=True)
+    _, ref_h, _ = run(build, work, f"copper_reference_{cd_dt:g}", ref_d, "impact")
     v_ref, span_ref = float(ref_h["bar:PZ"][-1]) / COPPER_MASS, contact_span(ref_h, "plane:force")
     rows = []
-    for t in treatments:
-        s, h, proc = run(build, work, f"copper_{t.replace(' ', '_')}",
-                         deck(path, "impact", dict(base, **{"Analyses/impact/Contact Mass": t}), drop_checks=True), "impact")
-        row = dict(common(s, h, proc), scene="copper", treatment=t)
+    runs = [(t, dt) for t in treatments for dt in steps] if steps else [(t, None) for t in treatments]
+    for t, dt in runs:
+        values = dict(base, **{"Analyses/impact/Contact Mass": t})
+        if dt:
+            values["Analyses/impact/Time Step"] = dt
+        tag = f"copper_{t.replace(' ', '_')}" + (f"_{dt:g}" if dt else "")
+        s, h, proc = run(build, work, tag, deck(path, "impact", values, drop_checks=True), "impact")
+        row = dict(common(s, h, proc), scene="copper_dt" if dt else "copper",
+                   treatment=t + (f", dt = {dt * 1e6:g} us" if dt else ""))
         if h:
             v = float(h["bar:PZ"][-1]) / COPPER_MASS
             row["error_1"] = f"rebound {(v / v_ref - 1) * 100:+.2f} %"
             row["error_2"] = f"contact time {(contact_span(h, 'plane:force') / span_ref - 1) * 100:+.2f} %"
         rows.append(row)
-    return rows, f"central differences at 20 ns: rebound {v_ref:.2f} m/s, contact time {span_ref * 1e6:.2f} us"
+    return rows, (f"central differences at {cd_dt * 1e9:g} ns: rebound {v_ref:.2f} m/s, "
+                  f"contact time {span_ref * 1e6:.2f} us")
 
 
 def worst_check(summary, kind=None):
@@ -174,7 +185,8 @@ def deck_rows(build, work, tag, path, analysis, treatments, kind=None, cwd=None)
 
 
 SCENES = ["taylor3d", "taylor_axi", "copper", "bar03", "sdnv100", "sdnl111e2", "hertz", "hertz2", "bracket", "oblique",
-          "block", "release"]
+          "block", "release", "copper_dt"]
+CONVERGENCE_STEPS = (4e-7, 2e-7, 1e-7, 5e-8)
 RELEASE_STEPS = (1e-7, 2e-7, 5e-7, 1e-6, 2e-6)
 # The scenes compared with their inputs' own rows (or only counted): input, analysis.
 DECK_SCENES = {"sdnv100": ("sdnv100.xml", "lagrange"), "sdnl111e2": ("sdnl111e.xml", "e2_alpha01"),
@@ -246,6 +258,10 @@ def study(build, work, scenes, treatments):
         rows += r
     if "copper" in scenes:
         r, refs["copper"] = copper(build, work, treatments)
+        rows += r
+    if "copper_dt" in scenes:
+        r, refs["copper_dt"] = copper(build, work, [t for t in treatments if t in ("normal", "velocity update")],
+                                      CONVERGENCE_STEPS)
         rows += r
     if "bar03" in scenes:
         ex = os.path.join(chocrun.TOP, "examples", "03-bar-on-wall")
