@@ -69,6 +69,7 @@ class DirectTransient : public Analysis {
     std::unique_ptr<DirectLinks> links;  // null: no shock links
     long long masslessNodes = 0;
     std::string massFallback;  // why Contact Mass = auto kept the standard mass (empty: it did not)
+    std::string massChoice;    // what 'auto' chose when it is not the redistributed mass (empty)
     MasslessBasis massless;    // 'Contact Mass' = normal: the rotation onto the normals
     std::unique_ptr<LinearSolver> solver;
     std::vector<Probe> probes;

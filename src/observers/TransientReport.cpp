@@ -110,6 +110,7 @@ void TransientReport::describe(Model& model, const CrsMatrix& runMass) const {
                     normal ? "normal" : "redistributed", f_.masslessNodes,
                     normal ? " along their normals" : "", op_.mass().masslessDofs(), before, one.dot(y));
   }
+  if (!f_.massChoice.empty()) log() << "  contact mass: " << f_.massChoice << "\n";
   if (!f_.massFallback.empty())
     log() << "  contact mass: standard ('auto' could not redistribute it: " << f_.massFallback << ")\n";
   if (contact) {
