@@ -3,7 +3,7 @@
 treatment of 'Contact Mass' on the scenes where it matters, each against its reference,
 with its cost.
 
-Treatments: redistributed (today's 'auto' in the implicit schemes), normal, velocity update
+Treatments: redistributed ('auto' with a consistent mass), normal, velocity update ('auto' with a lumped one)
 (projected in the scene's own mass's norm, lumped or consistent) and standard. Scenes and references:
   - taylor3d: input/taylor_bar_3d_implicit.xml (HHT -0.3 at 0.1 us, J2, lumped) against
     input/taylor_bar_3d.xml (central differences on the same mesh): face radius and length;
