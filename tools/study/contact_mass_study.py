@@ -87,16 +87,22 @@ def common(summary, history, r):
     return row
 
 
+def treatment_run(build, work, tag, path, analysis, t, cwd=None):
+    """The input at `path` with 'Contact Mass' = t and no Exodus output, run into WORK/<tag>_<t>:
+    (its row's common figures, summary, history, output directory)."""
+    d = deck(path, analysis, {f"Analyses/{analysis}/Exodus Interval": 0, f"Analyses/{analysis}/Contact Mass": t})
+    out_tag = f"{tag}_{t.replace(' ', '_')}"
+    s, h, proc = run(build, work, out_tag, d, analysis, cwd=cwd)
+    return dict(common(s, h, proc), scene=tag, treatment=t), s, h, os.path.join(work, out_tag)
+
+
 def taylor(build, work, implicit, explicit, tag, treatments):
-    ref_s, ref_h, _ = run(build, work, tag + "_reference", deck(chocrun.input_path(explicit), "impact",
+    _, ref_h, _ = run(build, work, tag + "_reference", deck(chocrun.input_path(explicit), "impact",
                                                                  {"Analyses/impact/Exodus Interval": 0}), "impact")
     ref = shape(ref_h)
     rows = []
     for t in treatments:
-        d = deck(chocrun.input_path(implicit), "impact",
-                 {"Analyses/impact/Exodus Interval": 0, "Analyses/impact/Contact Mass": t})
-        s, h, proc = run(build, work, f"{tag}_{t.replace(' ', '_')}", d, "impact")
-        row = dict(common(s, h, proc), scene=tag, treatment=t)
+        row, _, h, _ = treatment_run(build, work, tag, chocrun.input_path(implicit), "impact", t)
         if h:
             r, length = shape(h)
             row["error_1"] = f"radius {(r / ref[0] - 1) * 100:+.2f} %"
@@ -173,9 +179,7 @@ def worst_check(summary, kind=None):
 def deck_rows(build, work, tag, path, analysis, treatments, kind=None, cwd=None):
     rows = []
     for t in treatments:
-        d = deck(path, analysis, {f"Analyses/{analysis}/Exodus Interval": 0, f"Analyses/{analysis}/Contact Mass": t})
-        s, h, proc = run(build, work, f"{tag}_{t.replace(' ', '_')}", d, analysis, cwd=cwd)
-        row = dict(common(s, h, proc), scene=tag, treatment=t)
+        row, s, _, _ = treatment_run(build, work, tag, path, analysis, t, cwd=cwd)
         w, failed = worst_check(s, kind)
         if w:
             row["error_1"] = f"{w[0]}: {w[1]:.3g} ({abs(w[1]) / w[2]:.2f} of its tolerance)"
@@ -235,12 +239,9 @@ def hertz_scene(build, work, tag, name, treatments):
     ref = oracle.hertz()
     rows = []
     for t in treatments:
-        d = deck(chocrun.input_path(name), "axisymmetric",
-                 {"Analyses/axisymmetric/Exodus Interval": 0, "Analyses/axisymmetric/Contact Mass": t})
-        s, h, proc = run(build, work, f"{tag}_{t.replace(' ', '_')}", d, "axisymmetric")
-        row = dict(common(s, h, proc), scene=tag, treatment=t)
+        row, _, h, out = treatment_run(build, work, tag, chocrun.input_path(name), "axisymmetric", t)
         if h:
-            m = oracle.measure(chocrun.history_path(os.path.join(work, f"{tag}_{t.replace(' ', '_')}"), "axisymmetric"), ref)
+            m = oracle.measure(chocrun.history_path(out, "axisymmetric"), ref)
             row["error_1"] = f"restitution {m['rebound velocity'][0] / ref['v']:.4f}"
             row["error_2"] = f"duration {(m['contact duration'][0] / ref['tc'] - 1) * 100:+.2f} %"
         rows.append(row)
