@@ -117,6 +117,8 @@ void checkFrame(MassKind kind) {
   for (const auto& p : x) xr.push_back(apply(R, p));
   const DenseMatrix M1 = normalMass(x, bottom({{0, 0, 1}}), kind);
   const DenseMatrix Mr = normalMass(xr, bottom({apply(R, {0, 0, 1})}), kind);
+  // Both sides are sums of the n^2 = 576 products of T^T M T (the turned one also of R's 9 per
+  // entry): Higham's gamma_{n^2}, about 600 u of the largest entry, rounded up to 1e3 u.
   const double tol = 1e3 * kU * maxAbs(M1);
   for (int a = 0; a < 8; ++a)
     for (int b = 0; b < 8; ++b)
