@@ -17,17 +17,22 @@ bool faceShape(size_t nodes, const std::string& sideTopology, SolidShape& shape)
   return true;
 }
 
-// An edge at xi in [-1, 1]: LINE2 linear; LINE3 quadratic with its mid node third (Exodus).
+// The shape functions of an edge at xi in [-1, 1] and their derivatives: LINE2 linear; LINE3
+// quadratic with its mid node third (Exodus).
+void edgeShapes(const Face& f, double xi, std::vector<double>& N, std::vector<double>& dN) {
+  if (f.edgeNodes == 2) {
+    N = {0.5 * (1 - xi), 0.5 * (1 + xi)};
+    dN = {-0.5, 0.5};
+  } else {
+    N = {0.5 * xi * (xi - 1), 0.5 * xi * (xi + 1), 1 - xi * xi};
+    dN = {xi - 0.5, xi + 0.5, -2 * xi};
+  }
+}
+
 FacePoint evaluateEdge(const Face& f, double xi) {
   FacePoint p;
   std::vector<double> dN;
-  if (f.edgeNodes == 2) {
-    p.N = {0.5 * (1 - xi), 0.5 * (1 + xi)};
-    dN = {-0.5, 0.5};
-  } else {
-    p.N = {0.5 * xi * (xi - 1), 0.5 * xi * (xi + 1), 1 - xi * xi};
-    dN = {xi - 0.5, xi + 0.5, -2 * xi};
-  }
+  edgeShapes(f, xi, p.N, dN);
   for (size_t a = 0; a < f.x.size(); ++a)
     for (int d = 0; d < 3; ++d) {
       p.x[d] += p.N[a] * f.x[a][d];
@@ -107,6 +112,20 @@ FacePoint evaluateFace(const Face& f, double xi, double eta) {
       p.deta[d] += dN[a][1] * f.x[a][d];
     }
   return p;
+}
+
+void faceShapes(const Face& f, double xi, double eta, std::vector<double>& N, std::vector<std::array<double, 2>>& dN) {
+  if (f.edgeNodes) {
+    std::vector<double> d;
+    edgeShapes(f, xi, N, d);
+    dN.resize(d.size());
+    for (size_t a = 0; a < d.size(); ++a) dN[a] = {d[a], 0.0};
+    return;
+  }
+  std::vector<Point3> d;
+  shapeFunctions(f.shape, Point3{xi, eta, 0.0}, N, d);
+  dN.resize(d.size());
+  for (size_t a = 0; a < d.size(); ++a) dN[a] = {d[a][0], d[a][1]};
 }
 
 bool isTriangle(const Face& f) {

@@ -40,6 +40,9 @@ struct FacePoint {
 // solids or edges of planar elements.
 std::vector<Face> facesOf(const Mesh& mesh, const std::string& name);
 FacePoint evaluateFace(const Face& f, double xi, double eta);
+// The face's shape functions at (xi, eta) with their first derivatives, dN[a] = {d/dxi, d/deta}
+// (an edge: d/deta = 0).
+void faceShapes(const Face& f, double xi, double eta, std::vector<double>& N, std::vector<std::array<double, 2>>& dN);
 // Closest point of x on the face by Gauss-Newton from the face's centre; false when it does
 // not converge.
 bool projectOnFace(const Face& f, const Point3& x, double& xi, double& eta);

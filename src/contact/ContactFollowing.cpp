@@ -32,13 +32,18 @@ bool sameDofs(const std::vector<std::pair<GO, double>>& a, const std::vector<std
 // on the frame the scene is drawn in: SDNL111's bars turned as a whole moved by 6e-7 of their
 // peak). +inf when the master nodes differ.
 double coefficientChange(const SlaveProjection& a, const SlaveProjection& b) {
-  if (a.masterNodes != b.masterNodes || a.weights.size() != b.weights.size())
+  if (a.masterNodes != b.masterNodes || a.weights.size() != b.weights.size() ||
+      a.gapGradient.size() != b.gapGradient.size())
     return std::numeric_limits<double>::infinity();
   const auto distance = [](const Point3& p, const Point3& q) {
     const Point3 d{p[0] - q[0], p[1] - q[1], p[2] - q[2]};
     return std::sqrt(dot(d, d));
   };
   double m = distance(a.normal, b.normal);
+  for (size_t i = 0; i < a.gapGradient.size(); ++i) {  // a mortar row: each node's coefficients
+    if (a.gapGradient[i].first != b.gapGradient[i].first) return std::numeric_limits<double>::infinity();
+    m = std::max(m, distance(a.gapGradient[i].second, b.gapGradient[i].second));
+  }
   for (size_t i = 0; i < a.weights.size(); ++i) {
     const Point3 wa{a.weights[i] * a.normal[0], a.weights[i] * a.normal[1], a.weights[i] * a.normal[2]};
     const Point3 wb{b.weights[i] * b.normal[0], b.weights[i] * b.normal[1], b.weights[i] * b.normal[2]};
@@ -159,7 +164,8 @@ namespace choc {
 // while they move by less than kCoefficientTolerance, so the pairing in use depends on the
 // steps before; a restarted run takes it from the checkpoint, not from a fresh search.
 // Per constraint: master face (-1: none), xi, eta, the normal, the number of weights and them;
-// for a mortar pair then its master nodes and its area.
+// for a mortar pair then its master nodes, its area, and its row (gapGradient: the number of
+// nodes, then node and derivative by each).
 void ContactManager::archivePairing(StateArchive& a) const {
   std::vector<double> g;
   for (const ContactConstraint& c : constraints_) {
@@ -171,6 +177,8 @@ void ContactManager::archivePairing(StateArchive& a) const {
     if (followed_->mortar(sp.pair)) {  // the master nodes span several faces; the area moves
       for (int n : sp.masterNodes) g.push_back(double(n));
       g.push_back(sp.area);
+      g.push_back(double(sp.gapGradient.size()));
+      for (const auto& [node, d] : sp.gapGradient) g.insert(g.end(), {double(node), d[0], d[1], d[2]});
     }
   }
   a.putVector("contact/pairing", g);
@@ -199,6 +207,12 @@ void ContactManager::restorePairing(const StateArchive& a) {
       for (size_t i = 0; i < nw; ++i) sp.masterNodes[i] = int(g[k + i]);
       sp.area = g[k + nw];
       k += nw + 1;
+      const size_t ng = k < g.size() ? size_t(g[k]) : g.size();
+      if (k + 1 + 4 * ng > g.size()) throw StateRecordError("record 'contact/pairing' is shorter than the followed constraints");
+      sp.gapGradient.resize(ng);
+      for (size_t i = 0; i < ng; ++i)
+        sp.gapGradient[i] = {int(g[k + 1 + 4 * i]), Point3{g[k + 2 + 4 * i], g[k + 3 + 4 * i], g[k + 4 + 4 * i]}};
+      k += 1 + 4 * ng;
     }
     const ContactConstraint next = makeContactConstraint(c.reference, *dofs_, sp, true);
     c.geometry = sp;

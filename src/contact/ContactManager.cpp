@@ -60,7 +60,7 @@ std::vector<char> contactSurfaceNodes(const ContactManager& contact, const Mesh&
 }
 
 // Constraint s: B_s u = n . (u_s - sum_i w_i u_i) over the slave node and the master face's
-// nodes. allComponents keeps every component of the slave node even where n is zero (curved
+// nodes, or a mortar gap's derivative (SlaveProjection::gapGradient). allComponents keeps every component of the slave node even where n is zero (curved
 // obstacles, whose normal turns: the matrix graph must hold every coupling).
 ContactConstraint makeContactConstraint(const Point3& reference, const DofMap& dofs,
                                  const SlaveProjection& sp, bool allComponents) {
@@ -69,7 +69,12 @@ ContactConstraint makeContactConstraint(const Point3& reference, const DofMap& d
   c.owner = dofs.ownerOfNode(sp.slaveNode);
   c.reference = reference;
   std::vector<std::pair<GO, double>> t;
-  for (int d = 0; d < 3; ++d) {
+  for (const auto& [node, g] : sp.gapGradient)
+    for (int d = 0; d < 3; ++d) {
+      const long long dof = dofs.dof(node, d);
+      if (dof >= 0 && (g[d] != 0.0 || allComponents)) t.push_back({GO(dof), g[d]});
+    }
+  for (int d = 0; d < 3 && sp.gapGradient.empty(); ++d) {
     const double n = sp.normal[d];
     if (std::abs(n) < 1e-14 && !allComponents) continue;
     const long long ds = dofs.dof(sp.slaveNode, d);

@@ -51,6 +51,9 @@ struct SlaveProjection {
   Point3 normal{};                  // master outward unit normal at the projection
   double gap0 = 0;                  // reference gap [m]
   double area = 0;                  // slave tributary area [m^2]
+  // Mortar: the gap's derivative by the positions of the nodes it depends on (node, dg/dx);
+  // the constraint's row. Empty: the row is normal . (u_s - sum_i weights_i u_i).
+  std::vector<std::pair<int, Point3>> gapGradient;
 };
 
 struct PairingResult {

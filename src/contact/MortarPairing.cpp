@@ -4,6 +4,7 @@
 #include <map>
 
 #include "contact/ContactPairing.hpp"
+#include "contact/MortarLinearization.hpp"
 #include "contact/MortarSegments.hpp"
 #include "contact/SurfaceSearch.hpp"
 #include "fem/Quadrature.hpp"
@@ -51,7 +52,59 @@ struct NodeSums {
   int firstFace = -1;
   Point3 normal{0, 0, 0};          // sum of its faces' outward normals there
   Point3 nu{};                     // the contact normal: that sum normalised, turned to the slave
+  // The derivatives (MortarLinearization.hpp): of D, of G with nu held, of G through nu; and
+  // int Phi_j (x_s - x_m).
+  NodeGradient dD, dG, dNu;
+  Point3 Gv{0, 0, 0};
 };
+
+void addTo(NodeGradient& to, const NodeGradient& from) {
+  for (const auto& [node, g] : from)
+    for (int c = 0; c < 3; ++c) to[node][c] += g[c];
+}
+
+// The derivatives of slave face f's overlap with master face m added to its nodes' sums.
+void addOverlapDerivatives(const Face& f, const Face& m, bool axisymmetric, std::map<int, NodeSums>& sums) {
+  std::vector<Point3> nu;
+  for (int n : f.nodes) nu.push_back(sums[n].nu);
+  const OverlapDerivatives d = overlapDerivatives(f, m, nu, axisymmetric);
+  for (size_t a = 0; a < d.dD.size(); ++a) {
+    NodeSums& s = sums[f.nodes[a]];
+    addTo(s.dD, d.dD[a]);
+    addTo(s.dG, d.dG[a]);
+    for (int c = 0; c < 3; ++c) s.Gv[c] += d.Gv[a][c];
+  }
+}
+
+// dnu_j . Gv_j = w_j . dS_j over the faces of every slave node (MortarLinearization.hpp).
+void addNormalDerivatives(const std::vector<Face>& slave, std::map<int, NodeSums>& sums) {
+  for (const Face& f : slave)
+    for (size_t a = 0; a < f.nodes.size(); ++a) {
+      NodeSums& s = sums[f.nodes[a]];
+      const double l = norm(s.normal);
+      const Point3 u{s.normal[0] / l, s.normal[1] / l, s.normal[2] / l};
+      const double along = dot(u, s.Gv);
+      const Point3 w{-(s.Gv[0] - along * u[0]) / l, -(s.Gv[1] - along * u[1]) / l, -(s.Gv[2] - along * u[2]) / l};
+      addNormalDerivative(f, int(a), w, s.dNu);
+    }
+}
+
+// dg_j = (dG_j + dNu_j) / D_j - g_j dD_j / D_j per node; a node whose derivative is below
+// 1e-13 (the coefficients are of order 1: round-off of terms that cancel) is left out.
+std::vector<std::pair<int, Point3>> gapGradient(const NodeSums& s) {
+  NodeGradient sum = s.dG;
+  addTo(sum, s.dNu);
+  for (const auto& [node, g] : s.dD) sum[node];
+  std::vector<std::pair<int, Point3>> out;
+  const double gap = s.G / s.D;
+  for (const auto& [node, g] : sum) {
+    Point3 d = g;
+    const auto it = s.dD.find(node);
+    for (int c = 0; c < 3; ++c) d[c] = d[c] / s.D - (it == s.dD.end() ? 0.0 : gap * it->second[c] / s.D);
+    if (norm(d) > 1e-13) out.push_back({node, d});
+  }
+  return out;
+}
 
 // Per slave node: int N_j over its faces and the contact normal from its faces' normals.
 std::map<int, NodeSums> slaveNodeNormals(const std::vector<Face>& slave, bool axisymmetric) {
@@ -95,6 +148,7 @@ void integrateOverlaps(const Face& f, const SurfaceSearch& search, const PairDef
         if (s.firstFace < 0) s.firstFace = int(mf);
       }
     }
+    addOverlapDerivatives(f, master[mf], def.axisymmetric, sums);
   }
 }
 
@@ -120,6 +174,7 @@ PairingResult projectionsOf(const std::map<int, NodeSums>& sums, const PairDefin
     sp.normal = s.nu;
     sp.gap0 = s.G / s.D;
     sp.area = s.D;
+    sp.gapGradient = gapGradient(s);
     for (const auto& [m, v] : s.M)
       if (std::abs(v) > 1e-14 * s.D) sp.masterNodes.push_back(m), sp.weights.push_back(v / s.D);
     res.projections.push_back(sp);
@@ -143,6 +198,7 @@ PairingResult mortarPairing(const std::vector<Face>& slave, const SurfaceSearch&
                             const PairDefinition& def, int pairIndex) {
   std::map<int, NodeSums> sums = slaveNodeNormals(slave, def.axisymmetric);
   for (const Face& f : slave) integrateOverlaps(f, search, def, sums);
+  addNormalDerivatives(slave, sums);
   return projectionsOf(sums, def, pairIndex);
 }
 

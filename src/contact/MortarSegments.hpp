@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "contact/ContactFaces.hpp"
+#include "contact/MortarIntegration.hpp"
 #include "fem/DenseMatrix.hpp"
 
 namespace choc {
@@ -32,11 +33,7 @@ DenseMatrix dualBasis(const Face& slave, bool axisymmetric);
 // Phi at a point where the face's shape functions are N.
 std::vector<double> dualShapes(const DenseMatrix& A, const std::vector<double>& N);
 
-struct MortarPoint {
-  std::vector<double> Ns, Nm;  // the slave and master faces' shape functions at the point
-  Point3 xs{}, xm{};           // the point on the slave face, its projection on the master face
-  double weight = 0;           // area of the slave surface it stands for [m^2] (rings: 2 pi r)
-};
+using MortarPoint = mortar::MortarPointOf<double>;
 
 // The integration points of the overlap; empty when the faces do not overlap, when the master
 // face does not face the slave (normals not opposed), or when a projection fails.
