@@ -163,19 +163,15 @@ void DirectTransient::setup(SetupContext& ctx) {
 // The contact pairs, and the mass with the contact surfaces massless when redistributed.
 // 'auto' in an implicit scheme with every block's mass lumped: the velocity update (the 3D
 // Taylor quarter within 0.02 % of central differences, the bracket within 4e-5 of the
-// standard-mass run, where the redistributed mass is 6.8 % and 1.7 % off); with a consistent
-// mass, the normal mass (the redistributed mass's answer where the motion is normal, half its
-// error on the Taylor bar, a tenth on the bracket; the velocity update's projection in M's norm
-// costs up to 5.5 times the run and misses an SDNV100 row: docs/verification/contact-mass.md).
+// standard-mass run, where the redistributed mass is 6.8 % and 1.7 % off:
+// docs/verification/contact-mass.md); with a consistent mass, the redistributed mass.
 void DirectTransient::buildContact(Model& model) {
   b_->contact = makeContactManager(s_.contact, model.mesh(), model.dofs(), model.map(), inputFile_,
                                    model.kinematics() == Kinematics::Axisymmetric);
-  if (s_.contact.massIsAutomatic && s_.contact.redistributeMass) {
+  if (s_.contact.massIsAutomatic && s_.contact.redistributeMass && !lumpedMassDiagonal(*b_->M).is_null()) {
     s_.contact.redistributeMass = false;
-    const bool lumped = !lumpedMassDiagonal(*b_->M).is_null();
-    (lumped ? s_.contact.velocityUpdate : s_.contact.normalMass) = true;
-    b_->massChoice = lumped ? "the velocity update ('auto' with every block's mass lumped)"
-                            : "normal ('auto' with a consistent mass)";
+    s_.contact.velocityUpdate = true;
+    b_->massChoice = "the velocity update ('auto' with every block's mass lumped)";
   }
   if (s_.contact.normalMass) return buildNormalMass(model);
   if (!s_.contact.redistributeMass) return;
@@ -197,11 +193,7 @@ void DirectTransient::buildNormalMass(const Model& model) {
   try {
     b_->M = model.mass(directions);
   } catch (const std::invalid_argument& e) {
-    if (!s_.contact.massIsAutomatic) throwInput(inputFile_, path("Contact Mass"), "normal", e.what());
-    s_.contact.normalMass = false;  // 'auto' keeps the standard mass, and the log says why
-    b_->massChoice.clear();
-    b_->massFallback = e.what();
-    return;
+    throwInput(inputFile_, path("Contact Mass"), "normal", e.what());
   }
   for (const auto& d : directions) b_->masslessNodes += !d.empty();
   b_->massless = masslessBasis(directions, model.dofs(), model.map());

@@ -124,7 +124,7 @@ void declareContactMassParameter(ParameterList& p) {
                 "energy created by it with any contact method, the contact surfaces' displacements "
                 "found statically each step, their velocities reported as displacement "
                 "differences; auto: with the implicit schemes, the velocity update when every block's "
-                "mass is lumped, otherwise normal, whatever the contact method (standard when "
+                "mass is lumped, otherwise redistributed, whatever the contact method (standard when "
                 "an element has every node on a contact surface), standard with central "
                 "differences; normal (implicit schemes): as redistributed, but only along "
                 "the contact surfaces' normals (their nodes keep their inertia along the surface: the "
