@@ -10,7 +10,7 @@ PYTHON ?= /usr/bin/python3
 # 93 s; 4.3 s yielding; no cost alone). Every mpirun under make (tests, studies, benchmarks).
 export OMPI_MCA_mpi_yield_when_idle = 1
 
-.PHONY: all deps configure build run test verify study study-contact-mass study-plastic bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-plastic bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
+.PHONY: all deps configure build run test verify study study-contact-mass bench-block-on-slab study-plastic bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-plastic bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
 
 all: build
 
@@ -106,6 +106,12 @@ bench-kept: build
 # (docs/verification/contact-mass.md).
 study-contact-mass: build
 	$(PYTHON) tools/study/contact_mass_study.py --build $(BUILD) --out results/study/contact-mass
+
+# Issue 73's friction scene: a compact block dropped flat on a meshed slab (63,084 unknowns), with
+# and without friction, at the contact masses auto, normal and velocity update: Newton corrections
+# per step and the time against the frictionless run (docs/verification/contact-mass.md).
+bench-block-on-slab: build
+	$(PYTHON) tools/bench/bench_block_on_slab.py --build $(BUILD) --repeat 1 --masses auto normal "velocity update"
 
 # SDND100's friction: stick stiffness and dt against the rows and the exact motion.
 study-friction: build

@@ -56,6 +56,7 @@ DirectTransient::DirectTransient(const std::string& name, const Teuchos::Paramet
   s_.time.newton.maxActiveSetIterations = s_.contact.maxActiveSetIterations;
   s_.time.newton.statusTiming = statusTimingOf(s_.contact.statusUpdate);
   s_.output = readTransientOutput(params_);
+  if (!s_.explicitScheme) s_.output.energy.createdNotice = 1e-3;  // the contact release term, noticed
   checkStepCount(nominalSteps(s_.time.startTime, s_.time.endTime, s_.time.timeStep), 1, s_.output.limits, inputFile_,
                  "Analyses/" + name_, s_.time.timeStep);
   const ParameterList& lp = params_.sublist("Linear Solver");
