@@ -207,8 +207,9 @@ void ContactManager::restorePairing(const StateArchive& a) {
       for (size_t i = 0; i < nw; ++i) sp.masterNodes[i] = int(g[k + i]);
       sp.area = g[k + nw];
       k += nw + 1;
-      const size_t ng = k < g.size() ? size_t(g[k]) : g.size();
-      if (k + 1 + 4 * ng > g.size()) throw StateRecordError("record 'contact/pairing' is shorter than the followed constraints");
+      if (k >= g.size() || k + 1 + 4 * size_t(g[k]) > g.size())
+        throw StateRecordError("record 'contact/pairing' is shorter than the followed constraints");
+      const size_t ng = size_t(g[k]);
       sp.gapGradient.resize(ng);
       for (size_t i = 0; i < ng; ++i)
         sp.gapGradient[i] = {int(g[k + 1 + 4 * i]), Point3{g[k + 2 + 4 * i], g[k + 3 + 4 * i], g[k + 4 + 4 * i]}};
