@@ -63,6 +63,7 @@ class DirectTransient : public Analysis {
     RCP<const CrsMatrix> meshMass;  // the mesh's lumped mass (M before any redistribution)
     bool finiteStrain = false;      // some block has 'Strain' = 'finite'
     std::string solverChoice;  // the 'auto' linear solver's reason, for the log
+    std::string massPackage;   // a direct linear solver's package: the velocity update's M^-1 by it
     std::shared_ptr<const Loads> loads;
     std::unique_ptr<ContactManager> contact;
     std::unique_ptr<ContactStrategy> strategy;  // how the run enforces contact (over contact)

@@ -34,7 +34,7 @@ struct TransientFacts {
   bool givenTangentialStiffness = false;
   long long masslessNodes = 0;
   std::string massFallback;
-  std::string massChoice;  // what 'auto' chose when not the redistributed mass ("")
+  std::string massChoice;  // what 'auto' chose, and its trade ("": not auto)
 };
 
 // Figures of the last run (for tests and the benchmark).

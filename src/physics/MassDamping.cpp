@@ -7,6 +7,7 @@
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
 #include "physics/MasslessInitialAcceleration.hpp"
+#include "solvers/DirectSolver.hpp"
 
 namespace choc {
 
@@ -48,6 +49,16 @@ void MassDamping::addDampingForces(const Vector& v, Vector& out, bool keep) {
 }
 
 void MassDamping::solveMass(const Vector& b, Vector& x) const {
+  if (!massPackage_.empty()) {
+    if (!massSolver_) {
+      massSolver_ = makeDirectSolver(massPackage_, 1e-12, 0, true, false);
+      massSolver_->setMatrix(M_);
+    }
+    const LinearSolveStatus st = massSolver_->solve(b, x);
+    if (!st.converged)
+      throw NumericalError(format("the mass matrix's solve (%s) failed: %s", massPackage_.c_str(), st.message.c_str()));
+    return;
+  }
   const auto map = M_->getRowMap();
   Vector d(map), r(b, Teuchos::Copy), z(map), p(map), q(map);
   M_->getLocalDiagCopy(d);

@@ -8,12 +8,14 @@
 // ended at cost no second product).
 #pragma once
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/TpetraTypes.hpp"
 #include "physics/InternalForce.hpp"
 #include "physics/MasslessBasis.hpp"
 #include "physics/ProductCache.hpp"
+#include "solvers/LinearSolver.hpp"
 #include "timeint/SecondOrderOperator.hpp"
 
 namespace choc {
@@ -28,10 +30,13 @@ class MassDamping {
   // out += C v; with `keep`, K0 v and M v are kept for the energies of v.
   void addDampingForces(const Vector& v, Vector& out, bool keep);
   double kineticEnergy(const Vector& v) const;                // 1/2 v.M v
-  // x = M^-1 b by conjugate gradients preconditioned by M's diagonal, to 1e-13 of |b| (a mass
-  // matrix's condition number does not grow with the mesh: tens of iterations). Throws
-  // NumericalError when it does not converge (a singular M: massless DOFs). Collective.
+  // x = M^-1 b: by the direct package given to solveMassBy (M factored at the first solve and
+  // kept: M does not change in a run), else by conjugate gradients preconditioned by M's
+  // diagonal, to 1e-13 of |b| (a mass matrix's condition number does not grow with the mesh:
+  // tens of iterations). Throws NumericalError when it fails (a singular M: massless DOFs).
+  // Collective.
   void solveMass(const Vector& b, Vector& x) const;
+  void solveMassBy(std::string directPackage) { massPackage_ = std::move(directPackage); }
   bool damps() const { return aK_ != 0.0 || aM_ != 0.0; }      // Rayleigh damping: C v depends on v
   double dampingPower(const Vector& v, double kinetic) const;  // v.C v, given 1/2 v.M v
   // W = ca M + cv C + cd K = (ca + cv aM) M + (cd + cv aK) K: its coefficients of M and K.
@@ -54,6 +59,8 @@ class MassDamping {
   RCP<Vector> tmp_, energyTmp_;
   std::vector<char> massless_;
   RCP<const CrsMatrix> rotation_;
+  std::string massPackage_;                         // solveMassBy; empty: conjugate gradients
+  mutable std::unique_ptr<LinearSolver> massSolver_;  // M's factorisation, at the first solve
   long long masslessGlobal_ = 0;
 };
 

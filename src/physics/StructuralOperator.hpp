@@ -95,8 +95,9 @@ class StructuralOperator : public ExplicitOperator {
   // The internal force (its element variables, state-dependent eigenvalue bound, dissipation).
   const InternalForce& internalForce() const { return *internal_; }
   const MassDamping& mass() const { return mass_; }  // M, C, the massless DOFs
-  // 'Contact Mass' = normal: M is singular along the contact normals (physics/MasslessBasis.hpp).
-  void useMasslessBasis(MasslessBasis b) { mass_.useMasslessBasis(std::move(b)); }
+  // The run's mass model before the first step: its massless basis ('Contact Mass' = normal: M
+  // singular along the contact normals, physics/MasslessBasis.hpp), the direct package of the velocity update's consistent-mass solves (physics/MassDamping.hpp).
+  MassDamping& inertia() { return mass_; }
   // The energies of a recorded state (u, the scheme's v and a at time, dt after the last
   // recorded state; substep: an explicit run's sub-step h, else 0) and the work since the start:
   // the damping, obstacles' and loads' work integrated from the last recorded state. Called once
