@@ -8,7 +8,7 @@
 // 4,275 unknowns, 1,152 HEX8; elements 0.72 mm in the core, 0.6 to 0.9 mm radially, 1.26 mm
 // along the circle, 1.35 mm along z. 'centre' is the centre of the impact face, 'top' the
 // centre of the far face. The circle is a 16-gon of straight faces: the mesh's section is
-// (8 nc / pi) sin(pi / (4 nc)) = 97.45 % of pi R^2 at nc = 2 (its mass 9.070 g, not 9.308 g).
+// (4 nc / pi) sin(pi / (4 nc)) = 97.45 % of pi R^2 at nc = 2 (its mass 9.070 g, not 9.308 g).
 // meshes/make-meshes.sh:
 //   gmsh -3 -format msh41 meshes/copper_bar.geo -o meshes/copper_bar.msh
 If (!Exists(nc))
