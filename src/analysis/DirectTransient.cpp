@@ -117,6 +117,7 @@ void DirectTransient::readTimeSettings() {
   ts.newton.adaptiveLinearTolerance = nw.get<std::string>("Linear Tolerance") == "adaptive";
   const std::string search = nw.get<std::string>("Line Search");
   ts.newton.lineSearch = search == "on" ? LineSearch::On : search == "off" ? LineSearch::Off : LineSearch::Auto;
+  ts.newton.extrapolateMassless = nw.get<std::string>("Massless Start") == "extrapolated";
   ts.maxCuts = params_.sublist("Step Control").get<int>("Maximum Step Cuts");
   ts.cutFactor = params_.sublist("Step Control").get<double>("Cut Factor");
 }
@@ -287,7 +288,12 @@ std::unique_ptr<StructuralStepper> DirectTransient::stepper(StructuralOperator& 
     return cd;
   }
   op.tangentMatrix();
-  return std::make_unique<NewmarkStepper>(op, s_.scheme, s_.time);
+  auto newmark = std::make_unique<NewmarkStepper>(op, s_.scheme, s_.time);
+  // The redistributed contact mass's massless DOFs start Newton from their last increments
+  // extrapolated (with 'normal' they are rotated DOFs: those keep the predictor).
+  if (s_.time.newton.extrapolateMassless && op.mass().masslessDofs() > 0 && op.mass().masslessRotation().is_null())
+    newmark->extrapolateMassless(op.mass().masslessMask());
+  return newmark;
 }
 
 // The model's internal force: element by element when some block is finite-strain, else K u.

@@ -14,7 +14,7 @@ NewmarkStepper::NewmarkStepper(SecondOrderOperator& op, NewmarkFamily scheme, Tr
     : StructuralStepper(op, std::move(settings)), scheme_(std::move(scheme)) {
   auto map = op_.map();
   for (RCP<Vector>* v : {&Ma0_, &F0_, &Ma1_, &F1_, &u1_, &v1_, &a1_, &uTilde_, &vTilde_, &inertia_, &forces_,
-                         &fc_, &change_})
+                         &fc_, &change_, &lastIncrement_, &previousIncrement_})
     *v = rcp(new Vector(map));
 }
 
@@ -37,8 +37,7 @@ NewtonOutcome NewmarkStepper::attemptWithin(double t, double dt) {
   uTilde_->update(1.0, *u_, dt, *v_, 0.0);
   uTilde_->update(dt * dt * (0.5 - beta), *a_, 1.0);
   vTilde_->update(1.0, *v_, dt * (1 - gamma), *a_, 0.0);
-  // Start Newton from a_{n+1} = a_n.
-  u1_->update(1.0, *uTilde_, beta * dt * dt, *a_, 0.0);
+  startIterate(dt);
   const EffectiveCoefficients c = scheme_.effectiveCoefficients(dt);
   op_.applyMass(*u1_, *inertia_);
   // Round-off floor of the residual: the largest terms it sums, ||c_a M u_{n+1}|| and || |K|
@@ -118,11 +117,23 @@ void NewmarkStepper::weightedTerms(double t) {
 // steps later), so the checkpoint keeps it.
 void NewmarkStepper::archiveState(StateArchive& a, const StateVectors& vectors) const {
   StructuralStepper::archiveState(a, vectors);
+  if (!massless_.empty()) {
+    vectors.put(a, "driver/lastIncrement", *lastIncrement_);
+    vectors.put(a, "driver/previousIncrement", *previousIncrement_);
+    a.putVector("driver/masslessSteps", std::vector<double>{lastStep_, previousStep_});
+  }
   if (scheme_.alphaF() != 0.0) vectors.put(a, "driver/weightedForce", *F0_);
 }
 
 void NewmarkStepper::restoreState(const StateArchive& a, const StateVectors& vectors) {
   StructuralStepper::restoreState(a, vectors);
+  if (!massless_.empty() && a.has("driver/lastIncrement")) {
+    vectors.get(a, "driver/lastIncrement", *lastIncrement_);
+    vectors.get(a, "driver/previousIncrement", *previousIncrement_);
+    const std::vector<double> steps = a.getVector<double>("driver/masslessSteps");
+    lastStep_ = steps.at(0);
+    previousStep_ = steps.at(1);
+  }
   if (scheme_.alphaF() == 0.0 || !a.has("driver/weightedForce")) return weightedTerms(a.getDouble("driver/time"));
   if (scheme_.alphaM() != 0.0) op_.applyMass(*a_, *Ma0_);
   vectors.get(a, "driver/weightedForce", *F0_);
@@ -150,8 +161,33 @@ void NewmarkStepper::rejectAttempt(double t, double h, int cuts, const NewtonOut
                                         : " (raise 'Maximum Step Cuts' or lower 'Time Step')"));
 }
 
-// The converged attempt that reached t: n+1 becomes n.
-void NewmarkStepper::acceptAttempt(double t) {
+// Newton's first iterate: a_{n+1} = a_n, u1 = u~ + beta dt^2 a_n. On the massless DOFs, from
+// the last increments d_n over h_n and d_{n-1} over h_{n-1}: the velocity d_n / h_n + h_n a / 2 and
+// the acceleration a = 2 (d_n / h_n - d_{n-1} / h_{n-1}) / (h_n + h_{n-1}) at t_n, so
+// u1 = u_n + dt d_n / h_n + dt (h_n + dt) a / 2 (a = 0 at the second step: linear).
+void NewmarkStepper::startIterate(double dt) {
+  u1_->update(1.0, *uTilde_, scheme_.beta() * dt * dt, *a_, 0.0);
+  if (massless_.empty() || !(lastStep_ > 0.0)) return;
+  auto u1 = u1_->getDataNonConst();
+  auto un = u_->getData();
+  auto d1 = lastIncrement_->getData();
+  auto d0 = previousIncrement_->getData();
+  const double h1 = lastStep_, h0 = previousStep_, curvature = 0.5 * dt * (h1 + dt);
+  for (size_t i = 0; i < massless_.size(); ++i) {
+    if (!massless_[i]) continue;
+    const double a = h0 > 0.0 ? 2.0 * (d1[i] / h1 - d0[i] / h0) / (h1 + h0) : 0.0;
+    u1[i] = un[i] + dt * d1[i] / h1 + curvature * a;
+  }
+}
+
+// The converged attempt that reached t over dt: n+1 becomes n.
+void NewmarkStepper::acceptAttempt(double t, double dt) {
+  if (!massless_.empty()) {
+    std::swap(previousIncrement_, lastIncrement_);
+    previousStep_ = lastStep_;
+    lastIncrement_->update(1.0, *u1_, -1.0, *u_, 0.0);
+    lastStep_ = dt;
+  }
   std::swap(u_, u1_);
   std::swap(v_, v1_);
   std::swap(a_, a1_);
@@ -190,7 +226,7 @@ Advance NewmarkStepper::advance(const NominalStep& s, StepControl& c, TransientS
     a.time = finalSub ? s.target : s.t + h;
     a.dt = h;
     a.newton = out;
-    acceptAttempt(a.time);
+    acceptAttempt(a.time, h);
     return a;
   }
 }

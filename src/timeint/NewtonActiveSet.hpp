@@ -60,6 +60,9 @@ struct NewtonSettings {
   // are unchanged. Off: every solve to the linear solver's own tolerance.
   bool adaptiveLinearTolerance = false;
   static constexpr double kForcing = 0.1, kMaxForcing = 0.1;
+  // 'Massless Start' = 'extrapolated': the massless DOFs (redistributed contact mass) start each
+  // step's Newton from their last increments extrapolated (NewmarkStepper::extrapolateMassless).
+  bool extrapolateMassless = true;
 };
 
 struct NewtonOutcome {
