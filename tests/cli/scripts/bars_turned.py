@@ -7,7 +7,10 @@ the linear solver (auto), 300 steps of 1 us. Run as drawn and turned as a rigid 
 about (1, 2, 0.5): the mesh's nodes and bar 1's initial velocity turned.
 Checked: the motion of A (N1) seen in the turned frame, R^T u, equals the unturned one and the
 contact force equals the unturned one, each to a fraction of its peak, with the same Newton
-iterations and factorisations:
+iterations and factorisations (at default settings the Newton totals within 1 %: each iterative
+solve differs between the frames by 1e-10, so a step whose residual lands that close to the
+tolerance takes one correction more in one frame; 435 and 436 in 300 steps measured on
+2026-12-07, with the massless DOFs' Newton start extrapolated):
   - at default settings (5,427 unknowns: 'auto' picks CG + Jacobi, the multipliers projected out,
     ContactProjection): to 1e-8, Newton's relative tolerance, since each Newton solve stops where
     its residual is below the tolerance and Jacobi's diagonal depends on the frame (measured
@@ -93,7 +96,11 @@ def compare(method, bound, mass=None, turned_ranks=1):
     for key in ("newton", "factorizations"):
         va, vb = chocrun.summary_value(sa, key), chocrun.summary_value(sb, key)
         print(f"  {key}: {va} and {vb}")
-        if va != vb:
+        if key == "newton" and method is None:  # see the docstring: a residual at the tolerance
+            ia, ib = va["iterations"], vb["iterations"]
+            if not (abs(ia - ib) <= 0.01 * ia and abs(va["max_per_step"] - vb["max_per_step"]) <= 1):
+                failures.append(f"{label_of}: {key}: {va} as drawn, {vb} turned (totals within 1 %)")
+        elif va != vb:
             failures.append(f"{label_of}: {key}: {va} as drawn, {vb} turned")
 
 
