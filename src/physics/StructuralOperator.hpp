@@ -96,7 +96,8 @@ class StructuralOperator : public ExplicitOperator {
   const InternalForce& internalForce() const { return *internal_; }
   const MassDamping& mass() const { return mass_; }  // M, C, the massless DOFs
   // The run's mass model before the first step: its massless basis ('Contact Mass' = normal: M
-  // singular along the contact normals, physics/MasslessBasis.hpp), the direct package of the velocity update's consistent-mass solves (physics/MassDamping.hpp).
+  // singular along the contact normals, physics/MasslessBasis.hpp), the direct package of the
+  // velocity update's consistent-mass solves (physics/MassDamping.hpp).
   MassDamping& inertia() { return mass_; }
   // The energies of a recorded state (u, the scheme's v and a at time, dt after the last
   // recorded state; substep: an explicit run's sub-step h, else 0) and the work since the start:

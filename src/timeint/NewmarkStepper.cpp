@@ -14,7 +14,7 @@ NewmarkStepper::NewmarkStepper(SecondOrderOperator& op, NewmarkFamily scheme, Tr
     : StructuralStepper(op, std::move(settings)), scheme_(std::move(scheme)) {
   auto map = op_.map();
   for (RCP<Vector>* v : {&Ma0_, &F0_, &Ma1_, &F1_, &u1_, &v1_, &a1_, &uTilde_, &vTilde_, &inertia_, &forces_,
-                         &fc_, &change_, &lastIncrement_, &previousIncrement_})
+                         &fc_, &change_})
     *v = rcp(new Vector(map));
 }
 
@@ -159,6 +159,12 @@ void NewmarkStepper::rejectAttempt(double t, double h, int cuts, const NewtonOut
   throw NumericalError(s_.label + ": " + buf + out.message +
                        (s_.maxCuts == 0 ? " (dt cutting is off: set 'Maximum Step Cuts')"
                                         : " (raise 'Maximum Step Cuts' or lower 'Time Step')"));
+}
+
+void NewmarkStepper::extrapolateMassless(std::vector<char> mask) {
+  massless_ = std::move(mask);
+  lastIncrement_ = rcp(new Vector(op_.map()));  // only runs with massless DOFs hold them
+  previousIncrement_ = rcp(new Vector(op_.map()));
 }
 
 // Newton's first iterate: a_{n+1} = a_n, u1 = u~ + beta dt^2 a_n. On the massless DOFs, from

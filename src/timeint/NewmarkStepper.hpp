@@ -26,7 +26,7 @@ class NewmarkStepper : public StructuralStepper {
   // scheme's relations, carries no information): Newton starts them from their last two
   // increments extrapolated to the step. The solution is the same; a frictional contact layer's
   // stick and slip start near it (the block on the slab: 3.20 corrections per step against 5.35).
-  void extrapolateMassless(std::vector<char> mask) { massless_ = std::move(mask); }
+  void extrapolateMassless(std::vector<char> mask);
 
  private:
   // One attempt from the accepted state at t to t + dt; returns the outcome, leaves u1, v1, a1.
