@@ -107,7 +107,7 @@ bench-kept: build
 study-contact-mass: build
 	$(PYTHON) tools/study/contact_mass_study.py --build $(BUILD) --out results/study/contact-mass
 
-# Issue 73's friction scene: a compact block dropped flat on a meshed slab (63,084 unknowns), with
+# Issue 73's friction scene: a compact block dropped flat on a meshed slab (58,041 unknowns), with
 # and without friction, at the contact masses auto, normal and velocity update: Newton corrections
 # per step and the time against the frictionless run (docs/verification/contact-mass.md).
 bench-block-on-slab: build

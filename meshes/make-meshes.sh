@@ -72,6 +72,6 @@ gmsh -3 -format msh41 "$here/compact_block.geo" -o "$here/compact_block.msh" > /
 # nodes at n = 30; tools/bench/bench_projected_gram.py makes the larger ones).
 gmsh -3 -format msh41 -setnumber n 30 "$here/stacked_plates.geo" -o "$here/stacked_plates.msh" > /dev/null
 # The block dropped on a meshed slab (input/block_on_slab.xml): the cube in 8 x 8 x 8 HEX8 on the
-# slab in 16 x 16 x 3 (5,643 unknowns); tools/bench/bench_block_on_slab.py makes the 63,084-unknown
+# slab in 16 x 16 x 3 (4,788 unknowns); tools/bench/bench_block_on_slab.py makes the 58,041-unknown
 # one of issue 73 (n = 20, m = 40, k = 6).
 gmsh -3 -format msh41 -setnumber n 8 -setnumber m 16 -setnumber k 3 "$here/block_on_slab.geo" -o "$here/block_on_slab.msh" > /dev/null

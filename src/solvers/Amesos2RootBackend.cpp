@@ -1,5 +1,6 @@
 // The Amesos2 backend: the system factored on rank 0 (see FactorizationBackend.hpp).
 #include <Amesos2.hpp>
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
@@ -28,6 +29,8 @@ class SerialFactorization {
     A_ = A;
     solver_->numericFactorization();
   }
+  // The entries of the factors L and U (KLU2 and the packages that report them; else 0).
+  double factorEntries() const { return solver_.is_null() ? 0.0 : double(solver_->getStatus().getNnzLU()); }
   void solve(const MultiVector& b, MultiVector& x) {
     solver_->solve(Teuchos::ptr(&x), Teuchos::ptr(&b));
   }
@@ -65,8 +68,14 @@ class Amesos2RootBackend : public FactorizationBackend {
     } catch (const std::exception& e) {
       failure = describeFailure(e);
     }
-    return collectiveFailure(*A->getComm(), failure);
+    failure = collectiveFailure(*A->getComm(), failure);
+    // Rank 0's count on every rank: the kept factorisation's budget is decided alike everywhere.
+    factorEntries_ = A->getComm()->getRank() == 0 && failure.empty() ? serial_.factorEntries() : 0.0;
+    Teuchos::broadcast(*A->getComm(), 0, &factorEntries_);
+    return failure;
   }
+
+  double factorEntries() const override { return factorEntries_; }
 
   // One solve with the factorisation (gathered to rank 0 on several ranks).
   std::string solve(const MultiVector& b, MultiVector& x) override {
@@ -137,6 +146,7 @@ class Amesos2RootBackend : public FactorizationBackend {
   RCP<const Map> rootMap_, serialMap_;
   RCP<Tpetra::Import<LO, GO>> importer_;
   RCP<const CrsMatrix> rootSerial_;
+  double factorEntries_ = 0.0;
 };
 
 }  // namespace

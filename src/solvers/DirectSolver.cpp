@@ -167,16 +167,25 @@ class KeptDirectSolver : public LinearSolver {
   }
 
   // The extra preconditioned solves (beyond one per solve) a matrix may cost with a kept
-  // factorisation before it is factored itself: the ratio of a KLU2 factorisation's cost to
-  // one of its solves, measured on the scale scene's HEX8 bars (40 at 43,308 unknowns, 94 at
-  // 115,392: n^0.87). Refactoring once that much was spent on the current matrix is the
-  // rent-or-buy rule: at most twice the cost of the better choice made in hindsight. None
-  // below 5,000 unknowns (factorisations are cheap there).
+  // factorisation before it is factored itself: the ratio of a factorisation's cost to one of
+  // its solves. Refactoring once that much was spent on the current matrix is the rent-or-buy
+  // rule: at most twice the cost of the better choice made in hindsight. Two estimates, the
+  // larger taken:
+  //  - by size, measured on the scale scene's slender HEX8 bars (KLU2: 40 at 43,308 unknowns, 94
+  //    at 115,392: n^0.87), none below 5,000 unknowns;
+  //  - by the factors' fill (entries per unknown, when the backend reports them) over 10: 15 for
+  //    the bars at 9,664 unknowns (measured 16), 32 at 43,344 (29), 44 for a compact 3D block at
+  //    4,869 (input/block_on_slab.xml: measured 80 to 88, a factorisation 0.39 s), where the
+  //    dense separators of a compact mesh make factorisations dear at any size; counted from 20
+  //    up (below, factorisations are cheap and refactoring keeps the solves direct).
   int budget() const {
     if (budget_ >= 0) return budget_;
     const double n = double(A_->getGlobalNumRows());
-    return n < 5000 ? 0 : int(40.0 * std::pow(n / 43308.0, 0.87));
+    const int bySize = n < 5000 ? 0 : int(40.0 * std::pow(n / 43308.0, 0.87));
+    const int byFill = int(backend_->factorEntries() / n / 10.0);
+    return std::max(bySize, byFill >= kFillBudgetFrom ? byFill : 0);
   }
+  static constexpr int kFillBudgetFrom = 20;
 
   // GMRES on the current matrix preconditioned by the kept factorisation, column by column,
   // within what is left of the budget. Not converged (and no failure message): refactor.

@@ -39,9 +39,11 @@ Teuchos::ParameterList linearSolverParameters() {
              "coefficients) the factorisation is kept, and a changed matrix that 'Update Form' "
              "does not solve is solved by GMRES preconditioned by it (a low-rank update) until "
              "that matrix has cost this many extra preconditioned solves, then it is factored "
-             "itself; 0 always refactors (no update of either form); -1 (auto): none below "
-             "5,000 unknowns, else the measured cost of a KLU2 factorisation in solves (40 at "
-             "43,308 unknowns, 93 at 115,392)",
+             "itself; 0 always refactors (no update of either form); -1 (auto): the cost of a "
+             "factorisation in solves, the larger of two estimates: by size (none below 5,000 "
+             "unknowns, 40 at 43,308, 93 at 115,392: slender bars, measured) and by the factors' "
+             "entries per unknown over 10 when the package reports them and that gives 20 or "
+             "more (a compact 3D mesh: 44 for input/block_on_slab.xml at 4,869 unknowns)",
              Range::atLeast(-1));
   declareChoice(p, "Update Form", "capacitance", {"capacitance", "GMRES"},
                 "Method = Direct, a kept factorisation (Update Budget): 'capacitance' solves a "

@@ -2,9 +2,9 @@
 """Issue 73's friction scene: input/block_on_slab.xml (a 0.1 m steel cube dropped flat at 1 m/s on
 a meshed 0.2 m slab clamped at its base, node-to-face Lagrange contact on non-matching nodes, 20
 steps of 1 us at the implicit defaults) on meshes/block_on_slab.geo (n = 20, m = 40, k = 6:
-63,084 unknowns), with Coulomb friction mu = 0.2 and without, at each --masses contact mass
-(auto: normal with this consistent mass). Reports per run the medians over --repeat runs of the
-Newton corrections per step, the time per step, the linear-solve time, the Krylov iterations and
+58,041 unknowns), with Coulomb friction mu = 0.2 and without, at each --masses contact mass
+(auto: redistributed with this consistent mass). Reports per run the medians over --repeat runs
+of the Newton corrections per step, the time per step, the linear-solve time, the Krylov iterations and
 factorisations, the time per step over the frictionless run's (same contact mass), and the
 largest difference of corner:DZ from the frictionless auto run's, of its peak. Writes
 results/bench/bench_block_on_slab.json.
