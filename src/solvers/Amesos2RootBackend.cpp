@@ -75,7 +75,7 @@ class Amesos2RootBackend : public FactorizationBackend {
     return failure;
   }
 
-  double factorEntries() const override { return factorEntries_; }
+  double countedFactorEntries() const override { return factorEntries_; }
 
   // One solve with the factorisation (gathered to rank 0 on several ranks).
   std::string solve(const MultiVector& b, MultiVector& x) override {

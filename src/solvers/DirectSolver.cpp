@@ -182,7 +182,7 @@ class KeptDirectSolver : public LinearSolver {
     if (budget_ >= 0) return budget_;
     const double n = double(A_->getGlobalNumRows());
     const int bySize = n < 5000 ? 0 : int(40.0 * std::pow(n / 43308.0, 0.87));
-    const int byFill = int(backend_->factorEntries() / n / 10.0);
+    const int byFill = int(backend_->countedFactorEntries() / n / 10.0);
     return std::max(bySize, byFill >= kFillBudgetFrom ? byFill : 0);
   }
   static constexpr int kFillBudgetFrom = 20;

@@ -24,8 +24,14 @@ class FactorizationBackend {
   // x = A^-1 b with the last factorisation (collective). The failure's message or "".
   virtual std::string solve(const MultiVector& b, MultiVector& x) = 0;
   virtual std::string name() const = 0;
-  // The entries of the last factorisation's factors, summed over the ranks (0: unknown).
+  // The entries of the last factorisation's factors, summed over the ranks (0: unknown), which
+  // bound the capacitance form's columns (solvers/DirectSolver.cpp; unknown: 8 times the
+  // matrix's entries).
   virtual double factorEntries() const { return 0.0; }
+  // The same as counted for the cost of a factorisation (the kept factorisation's budget): also
+  // Amesos2's count, which the capacitance form's bound does not use (its columns keep their
+  // measured estimate there).
+  virtual double countedFactorEntries() const { return factorEntries(); }
   // Right-hand sides solved in one block for the cost of one solved alone (rounded down).
   virtual int columnsPerSolve() const { return 1; }
 };
