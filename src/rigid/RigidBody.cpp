@@ -1,0 +1,79 @@
+#include "rigid/RigidBody.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+namespace choc {
+
+namespace {
+
+Vec3 plus(const Vec3& a, const Vec3& b, double f = 1.0) { return {a[0] + f * b[0], a[1] + f * b[1], a[2] + f * b[2]}; }
+
+}  // namespace
+
+RigidBody::RigidBody(std::string name, const MassProperties& properties)
+    : name_(std::move(name)), p_(properties), centre_(properties.centre) {
+  if (!(p_.mass > 0.0)) throw std::invalid_argument("rigid body '" + name_ + "': no mass");
+  for (double J : p_.moments)
+    if (!(J > 0.0))
+      throw std::invalid_argument("rigid body '" + name_ + "': a principal moment of inertia is not positive "
+                                  "(its elements all on one line?)");
+  rotation_.R = p_.axes;
+}
+
+// x = c + R A0^T (X - c0): the body-frame coordinates of X turned to the current attitude.
+Vec3 RigidBody::position(const Vec3& X) const {
+  const Vec3 body = transpose(p_.axes) * (X - p_.centre);
+  return plus(centre_, rotation_.R * body);
+}
+
+Vec3 RigidBody::displacement(const Vec3& X) const { return position(X) - X; }
+
+Vec3 RigidBody::velocity(const Vec3& X) const {
+  return plus(velocity_, cross(angularVelocity(), position(X) - centre_));
+}
+
+void RigidBody::setMotion(const Vec3& velocity, const Vec3& angularVelocity) {
+  velocity_ = velocity;
+  rotation_ = stateFromAngularVelocity(p_.moments, rotation_.R, angularVelocity);
+}
+
+void RigidBody::kick(const Vec3& force, const Vec3& torque, double h) {
+  velocity_ = plus(velocity_, force, h / p_.mass);
+  rotation_.momentum = plus(rotation_.momentum, torque, h);
+}
+
+void RigidBody::drift(double h) {
+  centre_ = plus(centre_, velocity_, h);
+  rotateFreelyBySplitting(p_.moments, h, rotation_);
+}
+
+Vec3 RigidBody::momentOf(const Vec3& X, const Vec3& force) const { return cross(position(X) - centre_, force); }
+
+Vec3 RigidBody::rotationVector() const { return vectorFromRotation(rotation_.R * transpose(p_.axes)); }
+
+Vec3 RigidBody::angularVelocity() const { return choc::angularVelocity(p_.moments, rotation_); }
+
+double RigidBody::kineticEnergy() const {
+  return 0.5 * p_.mass * dot(velocity_, velocity_) + rotationalEnergy(p_.moments, rotation_);
+}
+
+Vec3 RigidBody::momentum() const { return {p_.mass * velocity_[0], p_.mass * velocity_[1], p_.mass * velocity_[2]}; }
+
+Vec3 RigidBody::angularMomentum() const { return plus(cross(centre_, momentum()), rotation_.momentum); }
+
+std::vector<double> RigidBody::state() const {
+  std::vector<double> s(centre_.begin(), centre_.end());
+  s.insert(s.end(), velocity_.begin(), velocity_.end());
+  s.insert(s.end(), rotation_.R.begin(), rotation_.R.end());
+  s.insert(s.end(), rotation_.momentum.begin(), rotation_.momentum.end());
+  return s;
+}
+
+void RigidBody::restore(const std::vector<double>& s) {
+  if (s.size() != 18) throw std::invalid_argument("rigid body '" + name_ + "': a checkpoint state of 18 numbers expected");
+  for (int i = 0; i < 3; ++i) centre_[i] = s[i], velocity_[i] = s[3 + i], rotation_.momentum[i] = s[15 + i];
+  for (int k = 0; k < 9; ++k) rotation_.R[k] = s[6 + k];
+}
+
+}  // namespace choc

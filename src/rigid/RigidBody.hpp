@@ -1,0 +1,61 @@
+// One rigid body: its mass properties, its state (centre of mass, its velocity, attitude and
+// spatial angular momentum about the centre), where its material points are and how fast they
+// move, and the velocity-Verlet step of central differences (a kick by the force and torque
+// on it, a drift: the centre moved, the attitude turned by the splitting of RotationStep.hpp).
+// Every rank holds the whole body; the forces on its nodes are summed over the ranks by the
+// caller (docs/theory/rigid-bodies.md).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "rigid/MassProperties.hpp"
+#include "rigid/RotationStep.hpp"
+
+namespace choc {
+
+class RigidBody {
+ public:
+  RigidBody(std::string name, const MassProperties& properties);
+
+  const std::string& name() const { return name_; }
+  double mass() const { return p_.mass; }
+  const Vec3& principalMoments() const { return p_.moments; }
+
+  // The material point at reference position X: where it is, its displacement and velocity.
+  Vec3 position(const Vec3& X) const;
+  Vec3 displacement(const Vec3& X) const;
+  Vec3 velocity(const Vec3& X) const;
+
+  // The initial motion: the centre's velocity and the spatial angular velocity.
+  void setMotion(const Vec3& velocity, const Vec3& angularVelocity);
+
+  // Velocity Verlet: kick(F, T, h/2), drift(h), the forces at the new positions, kick(F, T, h/2).
+  // F the resultant force on the body, T its moment about the current centre of mass.
+  void kick(const Vec3& force, const Vec3& torque, double h);
+  void drift(double h);
+  // The moment about the centre of a force f at the material point X.
+  Vec3 momentOf(const Vec3& X, const Vec3& force) const;
+
+  const Vec3& centre() const { return centre_; }
+  const Vec3& centreVelocity() const { return velocity_; }
+  const Mat3& attitude() const { return rotation_.R; }  // principal frame to space
+  // The rotation since the start (space to space), as a rotation vector.
+  Vec3 rotationVector() const;
+  Vec3 angularVelocity() const;
+  double kineticEnergy() const;
+  Vec3 momentum() const;
+  // About the origin: x_c x m V + pi.
+  Vec3 angularMomentum() const;
+
+  // The state for a checkpoint (18 numbers), and back (bit for bit).
+  std::vector<double> state() const;
+  void restore(const std::vector<double>& s);
+
+ private:
+  std::string name_;
+  MassProperties p_;
+  Vec3 centre_{}, velocity_{};
+  RotationState rotation_;
+};
+
+}  // namespace choc
