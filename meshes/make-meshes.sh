@@ -75,3 +75,5 @@ gmsh -3 -format msh41 -setnumber n 30 "$here/stacked_plates.geo" -o "$here/stack
 # slab in 16 x 16 x 3 (4,788 unknowns); tools/bench/bench_block_on_slab.py makes the 58,041-unknown
 # one of issue 73 (n = 20, m = 40, k = 6).
 gmsh -3 -format msh41 -setnumber n 8 -setnumber m 16 -setnumber k 3 "$here/block_on_slab.geo" -o "$here/block_on_slab.msh" > /dev/null
+# A rigid box with three distinct principal moments (input/rigid_spin.xml).
+gmsh -3 -format msh41 "$here/rigid_box.geo" -o "$here/rigid_box.msh" > /dev/null

@@ -28,6 +28,7 @@
 #include "physics/LoadAssembly.hpp"
 #include "solvers/FactorizationBackend.hpp"
 #include "solvers/SolverChoice.hpp"
+#include "physics/RigidBodies.hpp"
 #include "timeint/CentralDifferenceStepper.hpp"
 #include "timeint/NewmarkStepper.hpp"
 
@@ -140,6 +141,8 @@ void DirectTransient::setup(SetupContext& ctx) {
   std::vector<ShockLink> links = readShockLinks(params_, model, "Analyses/" + name_);
   if (!links.empty()) b_->links = std::make_unique<DirectLinks>(std::move(links), model, model.map());
   buildSolver(model);  // an explicit run never uses it (no effective matrix is built)
+  if (!s_.explicitScheme)
+    refuseRigidBlocks(model, "Analyses/" + name_, "implicit ('Scheme' = '" + params_.get<std::string>("Scheme") + "')");
   if (s_.explicitScheme) setupExplicit(model);
   b_->probes = parseProbes(s_.output.history, model, path("History"), true);
   std::vector<std::string> probeColumns;
@@ -215,6 +218,18 @@ void DirectTransient::setupExplicit(const Model& model) {
   b_->explicitPlan = std::make_unique<ExplicitPlan>(planExplicit(
       {*b_->K, *b_->M, b_->strategy.get(), b_->links.get(), meshBound, s_.rayleighK, s_.rayleighM,
        s_.time.timeStep, s_.time.endTime - s_.time.startTime, s_.stability, s_.output.limits, inputFile_, "Analyses/" + name_}));
+  if (model.rigidBlocks().empty()) return;
+  // Rigid blocks: their nodes' inverse mass 0 (the bodies move them), and their inertia the
+  // bodies' own (the kinetic energy's diagonal without their rows).
+  if (b_->strategy && b_->strategy->incrementsExplicitly())
+    throwInput(inputFile_, path("Contact/Method"), s_.contact.methodName(),
+               "forward-increment contact with rigid blocks is not available so far (issue 74)",
+               "use 'Method' = 'Penalty'");
+  b_->rigid = std::make_shared<RigidBodies>(model, *b_->explicitPlan->massDiagonal);
+  b_->rigid->zeroRows(*b_->explicitPlan->inverseMass);
+  auto withoutRigid = rcp(new Vector(*b_->explicitPlan->massDiagonal, Teuchos::Copy));
+  b_->rigid->zeroRows(*withoutRigid);
+  b_->nodalMass = withoutRigid;
 }
 
 void DirectTransient::buildSolver(const Model& model) {
@@ -275,9 +290,10 @@ void DirectTransient::buildSolver(const Model& model) {
 std::unique_ptr<StructuralStepper> DirectTransient::stepper(StructuralOperator& op) const {
   if (s_.explicitScheme) {
     op.storeStiffnessSymmetrically();  // one product with K per sub-step is the run's cost
-    op.useDiagonalMass(b_->explicitPlan->massDiagonal);
+    op.useDiagonalMass(b_->rigid ? b_->nodalMass : b_->explicitPlan->massDiagonal);
     auto cd = std::make_unique<CentralDifferenceStepper>(op, b_->explicitPlan->inverseMass, s_.time,
                                                          b_->explicitPlan->substeps);
+    cd->moveRigidBodies(b_->rigid.get());
     cd->checkValidityEvery(s_.criticalStepInterval);
     if (b_->finiteStrain) {
       auto monitor = std::make_shared<DeformedStability>(op, *b_->explicitPlan, s_.rayleighK, s_.rayleighM,
@@ -357,6 +373,7 @@ void DirectTransient::configure(StructuralOperator& op, Model& model) const {
   if (!domain->empty()) op.setSmallStrainDomain(domain);
   if (!b_->massless.rotation.is_null()) op.inertia().useMasslessBasis(b_->massless);
   if (!b_->massPackage.empty()) op.inertia().solveMassBy(b_->massPackage);
+  if (b_->rigid) op.inertia().setRigidBodies(b_->rigid);
 }
 
 // The view's records of a checkpoint's state, before the loop continues from it.

@@ -32,6 +32,8 @@
 
 namespace choc {
 
+class RigidBodies;
+
 class DirectStepView;
 
 class DirectTransient : public Analysis {
@@ -78,6 +80,8 @@ class DirectTransient : public Analysis {
     std::vector<std::unique_ptr<HistoryCheck>> checks;
     InitialFields init;
     std::unique_ptr<ExplicitPlan> explicitPlan;  // central differences only
+    std::shared_ptr<RigidBodies> rigid;  // rigid blocks (central differences only); null: none
+    RCP<const Vector> nodalMass;         // with rigid bodies: the lumped diagonal without their rows
   };
   void readScheme();
   void readTimeSettings();

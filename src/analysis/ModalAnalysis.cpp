@@ -13,6 +13,7 @@
 #include "fem/FieldGather.hpp"
 #include "core/CollectiveFailure.hpp"
 #include "core/Errors.hpp"
+#include "physics/RigidBodies.hpp"
 #include "core/Files.hpp"
 #include "output/HistoryCsv.hpp"
 #include "input/ParameterSpec.hpp"
@@ -77,6 +78,7 @@ ModalAnalysis::ModalAnalysis(const std::string& name, const Teuchos::ParameterLi
 }
 
 void ModalAnalysis::setup(SetupContext& ctx) {
+  refuseRigidBlocks(ctx.model, "Analyses/" + name_, "a modal analysis");
   const long long n = ctx.model.dofs().numGlobal();
   if (!s_.dense && s_.numModes > n - 2)  // the Krylov-Schur basis needs two vectors more than the modes
     throwInput(inputFile_, path("Number of Modes"), std::to_string(s_.numModes),

@@ -6,6 +6,7 @@
 
 #include "core/DidYouMean.hpp"
 #include "core/Errors.hpp"
+#include "physics/RigidBodies.hpp"
 #include "fem/Components.hpp"
 #include "core/Format.hpp"
 #include "core/Log.hpp"
@@ -103,6 +104,7 @@ void ModalTransient::readTimeGrid() {
 }
 
 void ModalTransient::setup(SetupContext& ctx) {
+  refuseRigidBlocks(ctx.model, "Analyses/" + name_, "a modal transient");
   if (const std::string plastic = ctx.model.firstPlasticBlock(); !plastic.empty())
     throwInput(inputFile_, "Model/Blocks/" + plastic, "",
                "a modal transient ('" + name_ + "') superposes the modes of the linear model; block '" + plastic +

@@ -237,9 +237,17 @@ RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<
 }
 
 RCP<CrsMatrix> Assembler::stiffness(const std::vector<NodalSpring>& springs) const {
-  return assemble([](const ElementKernel& k, MassKind, const std::vector<Point3>& x, const int*,
-                     DenseMatrix& Ke) { k.stiffness(x, Ke); },
-                  springs, RCP<const Graph>(), true);
+  // A rigid block's elements give no stiffness (physics/RigidBodies.hpp).
+  std::vector<const ElementKernel*> rigid;
+  for (const BlockPhysics& b : blocks_)
+    if (b.rigid) rigid.push_back(b.kernel.get());
+  return assemble(
+      [&](const ElementKernel& k, MassKind, const std::vector<Point3>& x, const int*, DenseMatrix& Ke) {
+        if (rigid.empty() || std::find(rigid.begin(), rigid.end(), &k) == rigid.end()) return k.stiffness(x, Ke);
+        const int n = static_cast<int>(x.size() * k.components().size());
+        Ke.resize(n, n);
+      },
+      springs, RCP<const Graph>(), true);
 }
 
 RCP<CrsMatrix> Assembler::stiffnessWithout(const std::vector<char>& skip, const std::vector<NodalSpring>& springs,

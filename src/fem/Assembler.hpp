@@ -22,6 +22,9 @@ struct BlockPhysics {
   // strain: nu = 0 zeroes the coupling of u_x and u_y terms a rotation brings back, and so do
   // the symmetries of regular meshes). Without it they would be dropped silently.
   bool fullPattern = false;
+  // The block moves as a rigid body (physics/RigidBodies.hpp): its elements give mass (its
+  // nodes' lumped masses weigh their initial velocities) and no stiffness.
+  bool rigid = false;
 };
 
 // Mass redistribution (Khenous, Laborde, Renard 2008, "Mass redistribution method for finite

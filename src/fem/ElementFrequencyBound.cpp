@@ -146,6 +146,7 @@ double Assembler::eigenvalueBound(const std::vector<NodalSpring>& springs) const
   std::vector<char> active;
   DenseMatrix Ke, Me;
   forEachElement([&](const LocalElement& el) {
+    if (el.physics->rigid) return;  // no stiffness: no frequency (its body moves as a whole)
     if (el.physics->mass != MassKind::Lumped) {
       elements = inf;
       return;

@@ -20,11 +20,17 @@
 
 namespace choc {
 
+class RigidBodies;
+
 class MassDamping {
  public:
   MassDamping(RCP<const CrsMatrix> M, double aK, double aM, std::shared_ptr<InternalForce> internal);
   RCP<const CrsMatrix> matrix() const { return M_; }
   void useDiagonal(RCP<const Vector> m) { diagonal_ = std::move(m); }
+  // The rigid bodies of an explicit run (physics/RigidBodies.hpp): their inertia is theirs, not
+  // the nodes' (the diagonal given to useDiagonal has their rows zero); null: none.
+  void setRigidBodies(std::shared_ptr<RigidBodies> bodies) { rigid_ = std::move(bodies); }
+  RigidBodies* rigidBodies() const { return rigid_.get(); }
   // out = M x.
   void applyMass(const Vector& x, Vector& out) const;
   // out += C v; with `keep`, K0 v and M v are kept for the energies of v.
@@ -50,6 +56,7 @@ class MassDamping {
   const RCP<const CrsMatrix>& masslessRotation() const { return rotation_; }  // Q; null: the axes
 
  private:
+  std::shared_ptr<RigidBodies> rigid_;
   std::shared_ptr<InternalForce> internal_;
   RCP<const CrsMatrix> M_;
   RCP<const Vector> diagonal_;  // useDiagonal(); null: M's own product

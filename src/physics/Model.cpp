@@ -139,7 +139,11 @@ std::vector<BlockPhysics> Model::blockPhysics(const Teuchos::ParameterList& mode
     blockMaterial_[b] = m;
     physics[b].mass = bp.get<std::string>("Mass") == "lumped" ? MassKind::Lumped : MassKind::Consistent;
     physics[b].kernel = blockKernel(blk, kinematics_, m, bp, file);
-    finite_.push_back(strainKernel(blk, bp, matName, mp));
+    physics[b].rigid = bp.get<bool>("Rigid");
+    if (physics[b].rigid) physics[b].mass = MassKind::Lumped;  // its nodes' masses weigh their initial velocities
+    // A rigid block has no strain: no element-by-element kernel (physics/RigidBodies.hpp).
+    finite_.push_back(physics[b].rigid ? nullptr : strainKernel(blk, bp, matName, mp));
+    if (physics[b].rigid) rigidBlocks_.push_back(int(b));
     physics[b].fullPattern = finite_.back() != nullptr;
     kernels_.push_back(physics[b].kernel);
   }

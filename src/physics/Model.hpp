@@ -72,6 +72,8 @@ class Model {
 
   // The node set named `name`, or an InputError naming `parameter` and the valid names.
   const NodeSet& nodeSet(const std::string& name, const std::string& parameter) const;
+  // The mesh blocks declared rigid ('Model/Blocks/<name>/Rigid'), by index.
+  const std::vector<int>& rigidBlocks() const { return rigidBlocks_; }
   // Global DOF of (node, comp); -1 when that component is fixed or not carried.
   long long dof(int node, int comp) const { return dofs_->dof(node, comp); }
 
@@ -108,6 +110,7 @@ class Model {
   RCP<const CrsMatrix> K_, M_;
   std::vector<std::shared_ptr<const FiniteStrainSolid>> finite_;
   std::vector<std::shared_ptr<const ElementKernel>> kernels_;
+  std::vector<int> rigidBlocks_;
 };
 
 }  // namespace choc

@@ -47,6 +47,11 @@ void declareBlockParameters(ParameterList& model) {
                                             "one entry per element block of the mesh, by name");
   declareRequiredString(blk, "Material", "name of an entry of Model/Materials");
   declareChoice(blk, "Mass", "consistent", {"consistent", "lumped"}, "mass matrix of the block");
+  declareBool(blk, "Rigid", false,
+              "true: the block moves as one rigid body (its mass, centre and inertia from its elements "
+              "and density; its elements carry no stress; the forces on its nodes move it): explicit "
+              "transients ('Scheme' = 'central differences') in 3D, its nodes shared with no other "
+              "block and all free, no initial displacement (docs/theory/rigid-bodies.md; issue 74)");
   declareChoice(blk, "Strain", "small", {"small", "finite"},
                 "kinematics of the block's solids: 'small' (linear strain, an assembled stiffness: "
                 "a linear elastic material) or 'finite' (total Lagrangian: deformation gradient F, "

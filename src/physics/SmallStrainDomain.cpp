@@ -19,11 +19,13 @@ SmallStrainDomain::SmallStrainDomain(Model& model) {
   const int rank = K->getComm()->getRank();
   static const QuadratureRule centreOnly;  // the strain is judged at the centre alone
   for (const ElementBlock& b : mesh.blocks) blockNames_.push_back(b.name);
+  std::vector<char> rigid(mesh.blocks.size(), 0);  // a rigid block's elements have no strain
+  for (int b : model.rigidBlocks()) rigid[size_t(b)] = 1;
   for (int ge : model.localElements()) {
     const auto [b, e] = mesh.locateElement(ge);
     const ElementBlock& blk = mesh.blocks[size_t(b)];
     SolidShape shape{};
-    if (kernels[size_t(b)] || !findSolidTopology(blk.topology, shape)) continue;
+    if (kernels[size_t(b)] || rigid[size_t(b)] || !findSolidTopology(blk.topology, shape)) continue;
     const int* conn = &blk.connectivity[size_t(e) * size_t(blk.nodesPerElement)];
     if (model.dofs().ownerOfNode(conn[0]) != rank) continue;
     Element el{ge, b, &checkPoints(shape, centreOnly, false), model.kinematics() == Kinematics::ThreeD ? 3 : 2,

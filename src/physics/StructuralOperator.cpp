@@ -2,6 +2,7 @@
 
 #include "physics/CriticalStep.hpp"
 #include "physics/MasslessInitialAcceleration.hpp"
+#include "physics/RigidBodies.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -180,12 +181,14 @@ void StructuralOperator::revert() {
 }
 void StructuralOperator::archive(StateArchive& a) const {
   internal_->archive(a);
+  if (mass_.rigidBodies()) mass_.rigidBodies()->archive(a);
   if (contact_) contact_->archive(a);
   if (links_) links_->archive(a);
   newton_.archive(a, *internal_->map()->getComm());
 }
 void StructuralOperator::restore(const StateArchive& a) {
   internal_->restore(a);
+  if (mass_.rigidBodies()) mass_.rigidBodies()->restore(a);
   if (contact_) contact_->restore(a);
   if (links_) links_->restore(a);
   newton_.restore(a, *internal_->map()->getComm());
@@ -202,6 +205,7 @@ StateEnergies StructuralOperator::energies(const Vector& u, const Vector& v, con
   const double power = mass_.dampingPower(v, e.kinetic);
   work_.damping += 0.5 * dt * (work_.lastDampingPower + power);
   work_.lastDampingPower = power;
+  if (mass_.rigidBodies()) e.kinetic += mass_.rigidBodies()->kineticEnergy();  // undamped
   const double friction =
       contact_ && contact_->geometry().hasFriction() ? contact_->geometry().friction()->dissipation() : 0.0;
   e.dissipated = work_.damping + (links_ ? links_->dissipatedEnergy() : 0.0) + friction + internal_->dissipatedWork() +

@@ -49,14 +49,14 @@ MassProperties MassPropertiesSum::properties() const {
   out.mass = mass_;
   const Vec3 d = {first_[0] / mass_, first_[1] / mass_, first_[2] / mass_};
   out.centre = {reference_[0] + d[0], reference_[1] + d[1], reference_[2] + d[2]};
-  Mat3 S{};
+  Matrix33 S{};
   for (int p = 0; p < 6; ++p) {
     const int i = kPair[p][0], j = kPair[p][1];
     S[3 * i + j] = S[3 * j + i] = second_[p] - mass_ * d[i] * d[j];
   }
   const double trace = S[0] + S[4] + S[8];
   for (int k = 0; k < 9; ++k) out.inertia[k] = (k % 4 == 0 ? trace : 0.0) - S[k];
-  const SymmetricEigen3 e = symmetricEigen(out.inertia);
+  const Eigen33 e = eigenOfSymmetric33(out.inertia);
   out.moments = e.values;
   out.axes = e.vectors;
   return out;

@@ -14,9 +14,9 @@ namespace choc {
 struct MassProperties {
   double mass = 0.0;
   Vec3 centre{};
-  Mat3 inertia{};       // about the centre, in the global axes
+  Matrix33 inertia{};       // about the centre, in the global axes
   Vec3 moments{};       // principal moments, ascending
-  Mat3 axes{};          // their axes (columns): inertia = axes diag(moments) axes^T
+  Matrix33 axes{};          // their axes (columns): inertia = axes diag(moments) axes^T
 };
 
 class MassPropertiesSum {

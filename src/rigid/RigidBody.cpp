@@ -48,6 +48,15 @@ void RigidBody::drift(double h) {
   rotateFreelyBySplitting(p_.moments, h, rotation_);
 }
 
+Vec3 RigidBody::acceleration(const Vec3& X, const Vec3& force, const Vec3& torque) const {
+  const Vec3 w = angularVelocity(), r = position(X) - centre_;
+  const Vec3 net = torque - cross(w, rotation_.momentum);
+  const Vec3 body = transpose(rotation_.R) * net;
+  const Vec3 alpha = rotation_.R * Vec3{body[0] / p_.moments[0], body[1] / p_.moments[1], body[2] / p_.moments[2]};
+  const Vec3 A = {force[0] / p_.mass, force[1] / p_.mass, force[2] / p_.mass};
+  return plus(plus(A, cross(alpha, r)), cross(w, cross(w, r)));
+}
+
 Vec3 RigidBody::momentOf(const Vec3& X, const Vec3& force) const { return cross(position(X) - centre_, force); }
 
 Vec3 RigidBody::rotationVector() const { return vectorFromRotation(rotation_.R * transpose(p_.axes)); }

@@ -33,12 +33,15 @@ class RigidBody {
   // F the resultant force on the body, T its moment about the current centre of mass.
   void kick(const Vec3& force, const Vec3& torque, double h);
   void drift(double h);
+  // The acceleration of the material point X under the resultant F and the moment T about the
+  // centre: A + alpha x r + w x (w x r), alpha = I^-1 (T - w x pi) (I the inertia in space).
+  Vec3 acceleration(const Vec3& X, const Vec3& force, const Vec3& torque) const;
   // The moment about the centre of a force f at the material point X.
   Vec3 momentOf(const Vec3& X, const Vec3& force) const;
 
   const Vec3& centre() const { return centre_; }
   const Vec3& centreVelocity() const { return velocity_; }
-  const Mat3& attitude() const { return rotation_.R; }  // principal frame to space
+  const Matrix33& attitude() const { return rotation_.R; }  // principal frame to space
   // The rotation since the start (space to space), as a rotation vector.
   Vec3 rotationVector() const;
   Vec3 angularVelocity() const;

@@ -12,7 +12,7 @@ Vec3 scaled(const Vec3& a, double f) { return {a[0] * f, a[1] * f, a[2] * f}; }
 Vec3 overInertia(const Vec3& J, const Vec3& p) { return {p[0] / J[0], p[1] / J[1], p[2] / J[2]}; }
 
 // R turned about its own body axis k by the angle phi: R exp(phi e_k^).
-void turnAboutBodyAxis(Mat3& R, int k, double phi) {
+void turnAboutBodyAxis(Matrix33& R, int k, double phi) {
   Vec3 axis{};
   axis[k] = phi;
   R = R * rotationFromVector(axis);
@@ -35,7 +35,7 @@ double rotationalEnergy(const Vec3& J, const RotationState& s) {
   return 0.5 * dot(s.momentum, angularVelocity(J, s));
 }
 
-RotationState stateFromAngularVelocity(const Vec3& J, const Mat3& R, const Vec3& w) {
+RotationState stateFromAngularVelocity(const Vec3& J, const Matrix33& R, const Vec3& w) {
   const Vec3 wb = transpose(R) * w;
   RotationState s;
   s.R = R;
@@ -63,9 +63,9 @@ Vec3 midpointResidual(const Vec3& J, double h, const Vec3& bodyMomentum, const V
   return {theta[0] - 0.5 * h * mid[0], theta[1] - 0.5 * h * mid[1], theta[2] - 0.5 * h * mid[2]};
 }
 
-Mat3 midpointTangent(const Vec3& J, double h, const Vec3& nextBodyMomentum, const Vec3& theta) {
-  const Mat3 D = derivativeOfRotatedBack(theta, nextBodyMomentum);
-  Mat3 T = identity3();
+Matrix33 midpointTangent(const Vec3& J, double h, const Vec3& nextBodyMomentum, const Vec3& theta) {
+  const Matrix33 D = derivativeOfRotatedBack(theta, nextBodyMomentum);
+  Matrix33 T = unitMatrix33();
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) T[3 * i + j] -= 0.5 * h * D[3 * i + j] / J[i];
   return T;
@@ -74,7 +74,7 @@ Mat3 midpointTangent(const Vec3& J, double h, const Vec3& nextBodyMomentum, cons
 namespace {
 
 // x = A^-1 b by Cramer's rule (a 3 x 3 system); false when A is singular to round-off.
-bool solve3(const Mat3& A, const Vec3& b, Vec3& x) {
+bool solve3(const Matrix33& A, const Vec3& b, Vec3& x) {
   const Vec3 c0 = {A[0], A[3], A[6]}, c1 = {A[1], A[4], A[7]}, c2 = {A[2], A[5], A[8]};
   const double det = dot(c0, cross(c1, c2));
   const double scale = norm(c0) * norm(c1) * norm(c2);
@@ -88,7 +88,7 @@ bool solve3(const Mat3& A, const Vec3& b, Vec3& x) {
 MidpointRotation rotateByMidpoint(const Vec3& J, double h, const Vec3& nextMomentum, RotationState& s,
                                   double tolerance, int maxIterations) {
   MidpointRotation out;
-  const Mat3 Rt = transpose(s.R);
+  const Matrix33 Rt = transpose(s.R);
   const Vec3 body = Rt * s.momentum, next = Rt * nextMomentum;
   Vec3 theta = scaled(overInertia(J, body), h);
   for (out.iterations = 0; out.iterations < maxIterations;) {

@@ -17,7 +17,7 @@
 namespace choc {
 
 struct RotationState {
-  Mat3 R = identity3();  // body (principal) frame to space
+  Matrix33 R = unitMatrix33();  // body (principal) frame to space
   Vec3 momentum{};       // spatial angular momentum about the centre of mass, pi = R J R^T w
 };
 
@@ -26,7 +26,7 @@ struct RotationState {
 Vec3 angularVelocity(const Vec3& J, const RotationState& s);
 double rotationalEnergy(const Vec3& J, const RotationState& s);
 // The state of a body turning at the spatial angular velocity w in attitude R.
-RotationState stateFromAngularVelocity(const Vec3& J, const Mat3& R, const Vec3& w);
+RotationState stateFromAngularVelocity(const Vec3& J, const Matrix33& R, const Vec3& w);
 
 // Explicit: the free rotation over h at constant pi (principal moments J > 0).
 void rotateFreelyBySplitting(const Vec3& J, double h, RotationState& s);
@@ -48,6 +48,6 @@ MidpointRotation rotateByMidpoint(const Vec3& J, double h, const Vec3& nextMomen
 // check of the tangent).
 Vec3 midpointResidual(const Vec3& J, double h, const Vec3& bodyMomentum, const Vec3& nextBodyMomentum,
                       const Vec3& theta);
-Mat3 midpointTangent(const Vec3& J, double h, const Vec3& nextBodyMomentum, const Vec3& theta);
+Matrix33 midpointTangent(const Vec3& J, double h, const Vec3& nextBodyMomentum, const Vec3& theta);
 
 }  // namespace choc

@@ -57,6 +57,7 @@ void CentralDifferenceStepper::start(double t0, double firstStep, TransientSumma
   op_.beginStep(*u_, t0, 0.0);
   op_.initializeConstraints(*u_);
   acceleration(*u_, *v_, t0, 0.0, *a_, firstStep / substeps_, 0.5);
+  if (rigid_) rigid_->start(*u_, *r_, *v_, *a_);
   op_.commit();  // every explicit force is accepted: its trial states (links, material points) advance
   info.substep = firstStep / substeps_;
 }
@@ -68,11 +69,13 @@ void CentralDifferenceStepper::takeSubsteps(double t, double target, double h) {
   for (int k = 0; k < substeps_; ++k) {
     vHalf_->update(1.0, *v_, 0.5 * h, *a_, 0.0);
     u_->update(h, *vHalf_, 1.0);
+    if (rigid_) rigid_->drift(h, *u_, *vHalf_);
     t = k + 1 == substeps_ ? target : t + h;
     xop_.keepProducts(k + 1 == substeps_);  // the step's end state: the energies follow
     acceleration(*u_, *vHalf_, t, h, *a_, h, 1.0);
     op_.commit();
     v_->update(1.0, *vHalf_, 0.5 * h, *a_, 0.0);
+    if (rigid_) rigid_->kick(h, *r_, *v_, *a_);
     if (k + 1 < substeps_) notifySubstep(t);
   }
 }

@@ -14,6 +14,7 @@
 #include <functional>
 
 #include "timeint/ExplicitOperator.hpp"
+#include "timeint/RigidMotion.hpp"
 #include "timeint/StructuralStepper.hpp"
 
 namespace choc {
@@ -36,6 +37,9 @@ class CentralDifferenceStepper : public StructuralStepper {
   // (SecondOrderOperator::validity): a failure stops the run (InadmissibleState), a warning is
   // logged once.
   void checkValidityEvery(int interval) { validityEvery_ = interval; }
+  // The rigid bodies (their rows' inverse mass 0): placed after each drift, moved by their
+  // rows' forces (timeint/RigidMotion.hpp); null: none.
+  void moveRigidBodies(RigidMotion* bodies) { rigid_ = bodies; }
   void archiveState(StateArchive& a, const StateVectors& vectors) const override;
   void restoreState(const StateArchive& a, const StateVectors& vectors) override;
 
@@ -60,6 +64,7 @@ class CentralDifferenceStepper : public StructuralStepper {
   int interval_ = 0;
   int validityEvery_ = 0;  // steps between validity checks (0: none)
   SubstepDecision decide_;
+  RigidMotion* rigid_ = nullptr;
   RCP<Vector> vHalf_, r_, uStar_;
 };
 

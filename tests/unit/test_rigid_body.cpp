@@ -15,7 +15,7 @@ namespace {
 
 // Eight point masses at the corners of a 0.2 x 0.3 x 0.5 box turned and moved off the origin.
 std::vector<Vec3> corners() {
-  const Mat3 Q = rotationFromVector({0.2, -0.7, 0.4});
+  const Matrix33 Q = rotationFromVector({0.2, -0.7, 0.4});
   std::vector<Vec3> x;
   for (int i = 0; i < 8; ++i) {
     const Vec3 local = {0.2 * (i & 1), 0.3 * ((i >> 1) & 1), 0.5 * ((i >> 2) & 1)};

@@ -77,7 +77,7 @@ struct SpinRun {
 
 // The body started in a turned attitude (the frame must not matter), run over two periods.
 SpinRun spin(bool implicit, double h, double periods = 2.2) {
-  const Mat3 R0 = rotationFromVector({0.4, -0.3, 1.1});
+  const Matrix33 R0 = rotationFromVector({0.4, -0.3, 1.1});
   RotationState s = stateFromAngularVelocity(kInertia, R0, R0 * kOmega0);
   const double E0 = rotationalEnergy(kInertia, s), L0 = norm(s.momentum);
   const int steps = int(std::lround(periods * closedFormPeriod() / h));
@@ -154,7 +154,7 @@ TEST(FreeRigidRotation, TheMidpointTangentIsItsResidualsDerivative) {
   const Vec3 body = {0.3, 2.9, -0.4}, next = {0.5, 2.7, -0.2};
   const double h = 0.2;
   for (const Vec3& theta : {Vec3{0, 0, 0}, Vec3{0.03, 0.21, -0.05}, Vec3{0.6, -1.4, 0.9}}) {
-    const Mat3 T = midpointTangent(kInertia, h, next, theta);
+    const Matrix33 T = midpointTangent(kInertia, h, next, theta);
     test::Dense J(3, 3);
     for (int k = 0; k < 9; ++k) J.a[size_t(k)] = T[size_t(k)];
     const test::Residual R = [&](const std::vector<double>& x) {

@@ -14,7 +14,7 @@ namespace {
 constexpr double kA = 0.3, kB = 0.5, kC = 0.8, kRho = 7800.0;
 
 // The box [0, a] x [0, b] x [0, c] in n x n x n HEX8, turned by Q and moved to `origin`.
-MassPropertiesSum box(const Mat3& Q, const Vec3& origin, int n, const Vec3& reference) {
+MassPropertiesSum box(const Matrix33& Q, const Vec3& origin, int n, const Vec3& reference) {
   MassPropertiesSum sum(reference);
   const std::vector<Vec3> corners = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                      {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
@@ -32,7 +32,7 @@ MassPropertiesSum box(const Mat3& Q, const Vec3& origin, int n, const Vec3& refe
   return sum;
 }
 
-void expectBox(const MassProperties& p, const Mat3& Q, const Vec3& origin, double tol) {
+void expectBox(const MassProperties& p, const Matrix33& Q, const Vec3& origin, double tol) {
   const double m = kRho * kA * kB * kC;
   EXPECT_NEAR(p.mass, m, tol * m);
   const Vec3 mid = Q * Vec3{kA / 2, kB / 2, kC / 2};
@@ -49,9 +49,9 @@ void expectBox(const MassProperties& p, const Mat3& Q, const Vec3& origin, doubl
 }
 
 TEST(MassProperties, ABoxHasItsClosedForms) {
-  const Mat3 I = identity3();
+  const Matrix33 I = unitMatrix33();
   expectBox(box(I, {0, 0, 0}, 1, {0, 0, 0}).properties(), I, {0, 0, 0}, 1e-13);
-  const Mat3 Q = rotationFromVector({0.3, 1.1, -0.6});
+  const Matrix33 Q = rotationFromVector({0.3, 1.1, -0.6});
   expectBox(box(Q, {1.0, -2.0, 0.5}, 3, {1.0, -2.0, 0.5}).properties(), Q, {1.0, -2.0, 0.5}, 1e-13);
 }
 
@@ -59,7 +59,7 @@ TEST(MassProperties, ABoxHasItsClosedForms) {
 // coordinates (eps |x| over the elements' size 0.15 m, 5e-9; 20 times that allowed), where sums
 // about the origin lose (|x| / size)^2 eps, 1e-1 here, and miss the moments by far.
 TEST(MassProperties, ABodyFarFromTheOriginKeepsItsDigits) {
-  const Mat3 Q = rotationFromVector({0.3, 1.1, -0.6});
+  const Matrix33 Q = rotationFromVector({0.3, 1.1, -0.6});
   const Vec3 far = {1e6, -3e6, 2e6};
   const double coordinates = 2.2e-16 * norm(far) / 0.15;
   expectBox(box(Q, far, 2, far).properties(), Q, far, 20 * coordinates);

@@ -18,7 +18,7 @@ Vec3 along(const Vec3& axis, double angle) {
   return {axis[0] / n * angle, axis[1] / n * angle, axis[2] / n * angle};
 }
 
-double maxDifference(const Mat3& A, const Mat3& B) {
+double maxDifference(const Matrix33& A, const Matrix33& B) {
   double e = 0.0;
   for (int k = 0; k < 9; ++k) e = std::max(e, std::abs(A[k] - B[k]));
   return e;
@@ -31,7 +31,7 @@ TEST(Rotation, TheVectorOfTheExponentialIsTheVectorItself) {
   const Vec3 axis = {0.3, -0.5, 0.8};
   for (double angle : {1e-9, 1e-5, 2e-4, 0.3, 1.5, 1.6, 2.5, 3.0, M_PI - 1e-4, M_PI - 1e-7}) {
     const Vec3 t = along(axis, angle);
-    const Mat3 R = rotationFromVector(t);
+    const Matrix33 R = rotationFromVector(t);
     EXPECT_LT(orthogonalityError(R), 2e-15) << angle;  // a few ulps: R's entries to 2 eps, summed by three
     const Vec3 back = vectorFromRotation(R);
     const double allowed = angle > 3.0 ? 1e-15 / (M_PI - angle) + 1e-14 : 1e-14 * angle + 1e-300;
@@ -42,7 +42,7 @@ TEST(Rotation, TheVectorOfTheExponentialIsTheVectorItself) {
 // Rodrigues' formula against the rotation about z written out.
 TEST(Rotation, TheExponentialTurnsAboutItsAxis) {
   const double a = 0.7;
-  const Mat3 Rz = {std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1};
+  const Matrix33 Rz = {std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1};
   EXPECT_LT(maxDifference(rotationFromVector({0, 0, a}), Rz), 1e-16);
   const Vec3 v = rotationFromVector({0, 0, a}) * Vec3{1, 0, 0};
   EXPECT_NEAR(v[0], std::cos(a), 1e-16);
@@ -59,7 +59,7 @@ TEST(Rotation, TheDerivativeOfTheRotatedBackVectorIsItsCentralDifferences) {
       const Vec3 r = rotationFromVector({-x[0], -x[1], -x[2]}) * p;
       return std::vector<double>{r[0], r[1], r[2]};
     };
-    const Mat3 D = derivativeOfRotatedBack(theta, p);
+    const Matrix33 D = derivativeOfRotatedBack(theta, p);
     test::Dense J(3, 3);
     for (int k = 0; k < 9; ++k) J.a[size_t(k)] = D[size_t(k)];
     const std::vector<double> x = {theta[0], theta[1], theta[2]};
@@ -72,11 +72,11 @@ TEST(Rotation, TheDerivativeOfTheRotatedBackVectorIsItsCentralDifferences) {
 
 // One polar step brings a product of many rotations back to a rotation without moving it.
 TEST(Rotation, ReorthogonalisationRemovesTheDriftOnly) {
-  Mat3 R = identity3();
-  const Mat3 step = rotationFromVector({0.013, -0.021, 0.007});
+  Matrix33 R = unitMatrix33();
+  const Matrix33 step = rotationFromVector({0.013, -0.021, 0.007});
   for (int i = 0; i < 100000; ++i) R = R * step;
   const double drift = orthogonalityError(R);
-  const Mat3 Q = reorthogonalized(R);
+  const Matrix33 Q = reorthogonalized(R);
   EXPECT_LT(orthogonalityError(Q), 2e-15);
   EXPECT_LE(maxDifference(Q, R), 2 * drift + 1e-16);
 }
@@ -84,23 +84,23 @@ TEST(Rotation, ReorthogonalisationRemovesTheDriftOnly) {
 // An inertia tensor with known principal axes (a rotation of diag(2, 3, 5)): the moments
 // ascending, the axes to round-off, a right-handed frame.
 TEST(Rotation, TheEigenDecompositionGivesThePrincipalFrame) {
-  const Mat3 Q = rotationFromVector({0.5, -1.2, 0.8});
-  const Mat3 D = {2, 0, 0, 0, 3, 0, 0, 0, 5};
-  const Mat3 A = Q * D * transpose(Q);
-  const SymmetricEigen3 e = symmetricEigen(A);
+  const Matrix33 Q = rotationFromVector({0.5, -1.2, 0.8});
+  const Matrix33 D = {2, 0, 0, 0, 3, 0, 0, 0, 5};
+  const Matrix33 A = Q * D * transpose(Q);
+  const Eigen33 e = eigenOfSymmetric33(A);
   EXPECT_NEAR(e.values[0], 2, 1e-14);
   EXPECT_NEAR(e.values[1], 3, 1e-14);
   EXPECT_NEAR(e.values[2], 5, 1e-14);
   EXPECT_LT(orthogonalityError(e.vectors), 1e-15);
-  const Mat3 back = e.vectors * D * transpose(e.vectors);
+  const Matrix33 back = e.vectors * D * transpose(e.vectors);
   EXPECT_LT(maxDifference(back, A), 1e-14);
   const Vec3 c0 = {e.vectors[0], e.vectors[3], e.vectors[6]}, c1 = {e.vectors[1], e.vectors[4], e.vectors[7]},
              c2 = {e.vectors[2], e.vectors[5], e.vectors[8]};
   EXPECT_NEAR(dot(cross(c0, c1), c2), 1.0, 1e-15);
   // A repeated moment (a cylinder's): any orthonormal frame of the plane, still exact.
-  const Mat3 A2 = Q * Mat3{2, 0, 0, 0, 2, 0, 0, 0, 5} * transpose(Q);
-  const SymmetricEigen3 e2 = symmetricEigen(A2);
-  EXPECT_LT(maxDifference(e2.vectors * Mat3{2, 0, 0, 0, 2, 0, 0, 0, 5} * transpose(e2.vectors), A2), 1e-14);
+  const Matrix33 A2 = Q * Matrix33{2, 0, 0, 0, 2, 0, 0, 0, 5} * transpose(Q);
+  const Eigen33 e2 = eigenOfSymmetric33(A2);
+  EXPECT_LT(maxDifference(e2.vectors * Matrix33{2, 0, 0, 0, 2, 0, 0, 0, 5} * transpose(e2.vectors), A2), 1e-14);
 }
 
 }  // namespace

@@ -1,0 +1,60 @@
+// The blocks declared rigid ('Model/Blocks/<name>/Rigid'), one body each (rigid/RigidBody.hpp):
+// their nodes' rows of the model's vectors, the forces on them summed over the ranks into each
+// body's resultant and moment, the bodies advanced by central differences' velocity Verlet and
+// their nodes placed where the bodies put them (docs/theory/rigid-bodies.md, section 4).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rigid/RigidBody.hpp"
+#include "timeint/RigidMotion.hpp"
+
+namespace choc {
+
+class Model;
+class StateArchive;
+
+class RigidBodies : public RigidMotion {
+ public:
+  // The rigid blocks of the model (none: empty()); lumpedMass the model's lumped mass diagonal,
+  // which weighs the nodes' initial velocities. Throws InputError for a rigid block outside 3D,
+  // sharing nodes with another block, or with a node whose components are not all unknowns.
+  RigidBodies(const Model& model, const Vector& lumpedMass);
+  bool empty() const { return bodies_.empty(); }
+  const std::vector<RigidBody>& bodies() const { return bodies_; }
+  // x's rows of the bodies' nodes set to 0 (their inverse mass: central differences leave them alone).
+  void zeroRows(Vector& x) const;
+  double kineticEnergy() const;
+
+  void start(const Vector& u, const Vector& r, Vector& v, Vector& a) override;
+  void drift(double h, Vector& u, Vector& vHalf) override;
+  void kick(double h, const Vector& r, Vector& v, Vector& a) override;
+
+  void archive(StateArchive& a) const;
+  void restore(const StateArchive& a);
+
+ private:
+  struct Row {
+    int body;
+    Vec3 X;  // the node's reference position
+    int component;
+    LO row;  // local row of the model's map
+  };
+  // Each body's resultant and moment about its centre of the forces -r on its rows, summed
+  // over the ranks.
+  void gatherForces(const Vector& r);
+  // The bodies' rows of u (displacement), v and a (each optional) where the bodies put them.
+  void place(Vector* u, Vector* v, Vector* a) const;
+
+  std::vector<RigidBody> bodies_;
+  std::vector<Row> rows_;
+  std::vector<Vec3> force_, torque_;
+  RCP<const Comm> comm_;
+  RCP<const Vector> lumpedMass_;
+};
+
+// The rigid blocks of the model refused by an analysis that cannot run them, naming the first.
+void refuseRigidBlocks(const Model& model, const std::string& analysisPath, const std::string& what);
+
+}  // namespace choc

@@ -1,0 +1,4 @@
+# Rigid bodies (issue 74): a rigid box spinning near its intermediate axis by central differences
+# (input/rigid_spin.xml, BENCHMARKS section 17): its shape, energy and flip period against Euler's
+# equations, 1 and 2 ranks alike; the inputs rigid blocks cannot run yet refused.
+choc_cli_script(rigid_spin 300)
