@@ -153,6 +153,10 @@ void DirectTransient::setup(SetupContext& ctx) {
     const std::vector<std::string> lc = b_->links->historyColumns();
     interactionColumns.insert(interactionColumns.end(), lc.begin(), lc.end());
   }
+  if (b_->rigid) {  // after the links: the order of the interaction list in run()
+    const std::vector<std::string> rc = b_->rigid->historyColumns();
+    interactionColumns.insert(interactionColumns.end(), rc.begin(), rc.end());
+  }
   b_->columns = historyColumns(probeColumns, interactionColumns, !model.firstPlasticBlock().empty(),
                                model.hasOnePointBlocks());
   const int dims = static_cast<int>(spatialComponents(model.mesh().dimension).size());
@@ -335,7 +339,7 @@ void DirectTransient::run(RunContext& ctx) {
   ObserverSet outputs;
   std::unique_ptr<ContactReport> contactReport;
   if (b_->contact) contactReport = std::make_unique<ContactReport>(*b_->contact, ctx.model.mesh().numNodes());
-  const InteractionList interactions({contactReport.get(), b_->links.get()});
+  const InteractionList interactions({contactReport.get(), b_->links.get(), b_->rigid.get()});
   DirectStepView view(op, contactReport.get(), interactions.simplest(), b_->probes, outputs, timer.get());
   std::unique_ptr<StructuralStepper> scheme = stepper(op);
   scheme->addObserver(&view);

@@ -1,11 +1,13 @@
 #include "physics/RigidBodies.hpp"
 
 #include <set>
+#include <stdexcept>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "core/Errors.hpp"
+#include "fem/ShapeFunctions.hpp"
 #include "physics/Model.hpp"
 #include "restart/StateArchive.hpp"
 #include "rigid/BlockMassProperties.hpp"
@@ -62,12 +64,22 @@ RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)
     if (model.kinematics() != Kinematics::ThreeD)
       throwInput(model.inputFile(), rigidKey(model, block), "true", "rigid blocks are 3D only so far (issue 74)",
                  "model the part as a deformable block");
+    SolidShape shape{};
+    if (!findSolidTopology(mesh.blocks[size_t(block)].topology, shape))
+      throwInput(model.inputFile(), rigidKey(model, block), "true",
+                 "its elements are " + mesh.blocks[size_t(block)].topology + ": rigid blocks are solids so far",
+                 "mesh the part with solid elements");
     const std::set<int> nodes = blockNodes(mesh.blocks[size_t(block)]);
     checkNodesOwnedByTheBody(model, block, nodes);
-    const MassProperties p = blockMassProperties(mesh, {block}, {model.materialOfBlock(block).density},
-                                                 model.kinematics(), elements, *comm_);
     const int body = int(bodies_.size());
-    bodies_.emplace_back(mesh.blocks[size_t(block)].name, p);
+    try {  // no mass (a zero density), or no inertia about an axis: the same on every rank
+      const MassProperties p = blockMassProperties(mesh, {block}, {model.materialOfBlock(block).density},
+                                                   model.kinematics(), elements, *comm_);
+      bodies_.emplace_back(mesh.blocks[size_t(block)].name, p);
+    } catch (const std::invalid_argument& e) {
+      throwInput(model.inputFile(), rigidKey(model, block), "true", e.what(),
+                 "a rigid body needs mass and inertia about every axis: check the block's elements");
+    }
     for (int n : nodes)
       for (int c = 0; c < 3; ++c) {
         const long long g = model.dof(n, c);
@@ -196,6 +208,30 @@ void RigidBodies::kick(double h, const Vector& r, Vector& v, Vector& a) {
   gatherForces(r);
   for (size_t b = 0; b < bodies_.size(); ++b) bodies_[b].kick(force_[b], torque_[b], 0.5 * h);
   place(nullptr, &v, &a);
+}
+
+std::vector<std::string> RigidBodies::historyColumns() const {
+  static const char* const names[] = {"X",  "Y",  "Z",  "VX", "VY", "VZ", "RX", "RY", "RZ", "WX", "WY", "WZ",
+                                      "PX", "PY", "PZ", "LX", "LY", "LZ", "kinetic", "FX", "FY", "FZ",
+                                      "MX", "MY", "MZ"};
+  std::vector<std::string> c;
+  for (const RigidBody& b : bodies_)
+    for (const char* n : names) c.push_back(b.name() + ":" + n);
+  return c;
+}
+
+std::vector<double> RigidBodies::historyValues() const {
+  std::vector<double> v;
+  for (size_t b = 0; b < bodies_.size(); ++b) {
+    const RigidBody& body = bodies_[b];
+    for (const Vec3& x : {body.centre(), body.centreVelocity(), body.rotationVector(), body.angularVelocity(),
+                          body.momentum(), body.angularMomentum()})
+      v.insert(v.end(), x.begin(), x.end());
+    v.push_back(body.kineticEnergy());
+    v.insert(v.end(), force_[b].begin(), force_[b].end());
+    v.insert(v.end(), torque_[b].begin(), torque_[b].end());
+  }
+  return v;
 }
 
 void RigidBodies::archive(StateArchive& a) const {

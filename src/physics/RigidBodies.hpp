@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "output/InteractionOutput.hpp"
 #include "rigid/RigidBody.hpp"
 #include "timeint/RigidMotion.hpp"
 
@@ -15,7 +16,7 @@ namespace choc {
 class Model;
 class StateArchive;
 
-class RigidBodies : public RigidMotion {
+class RigidBodies : public RigidMotion, public InteractionOutput {
  public:
   // The rigid blocks of the model (none: empty()); lumpedMass the model's lumped mass diagonal,
   // which weighs the nodes' initial velocities. Throws InputError for a rigid block outside 3D,
@@ -33,6 +34,16 @@ class RigidBodies : public RigidMotion {
 
   void archive(StateArchive& a) const;
   void restore(const StateArchive& a);
+
+  // The history of each body '<block>': its centre X Y Z, velocity VX VY VZ, rotation vector
+  // RX RY RZ (since the start), angular velocity WX WY WZ, momentum PX PY PZ, angular momentum
+  // about the origin LX LY LZ, kinetic energy, and the resultant FX FY FZ and moment MX MY MZ
+  // (about the centre) of the forces on it.
+  std::vector<std::string> historyColumns() const override;
+  std::vector<double> historyValues() const override;
+  std::vector<std::string> globalNames() const override { return {}; }
+  std::vector<double> globalValues() const override { return {}; }
+  std::string progressNote() const override { return ""; }
 
  private:
   struct Row {
