@@ -48,7 +48,7 @@ void refuseRigidBlocks(const Model& model, const std::string& analysisPath, cons
 }
 
 RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)
-    : comm_(model.comm()), lumpedMass_(rcp(new Vector(lumpedMass, Teuchos::Copy))) {
+    : comm_(model.comm()), lumpedMass_(rcp(new Vector(lumpedMass, Teuchos::Copy))), inputFile_(model.inputFile()) {
   const Mesh& mesh = model.mesh();
   const RCP<const Map> map = model.map();
   // Each element summed once: on the rank that owns its first node (localElements() holds every
@@ -72,6 +72,7 @@ RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)
     const std::set<int> nodes = blockNodes(mesh.blocks[size_t(block)]);
     checkNodesOwnedByTheBody(model, block, nodes);
     const int body = int(bodies_.size());
+    keys_.push_back(rigidKey(model, block));
     try {  // no mass (a zero density), or no inertia about an axis: the same on every rank
       const MassProperties p = blockMassProperties(mesh, {block}, {model.materialOfBlock(block).density},
                                                    model.kinematics(), elements, *comm_);
@@ -146,11 +147,11 @@ void RigidBodies::start(const Vector& u, const Vector& r, Vector& v, Vector& a) 
   const size_t nb = bodies_.size();
   // per body: m_l, sum m X (3), sum m v (3), sum m X x v (3), sum m X_i X_j (6): 16
   std::vector<double> local(16 * nb, 0.0), global(local.size());
-  double displaced = 0.0;
+  std::vector<int> displaced(nb, 0), anyDisplaced(nb, 0);
   for (const Row& row : rows_) {
     double* s = &local[16 * size_t(row.body)];
     const double mi = m[row.row], vi = dv[row.row];
-    displaced = std::max(displaced, std::abs(du[row.row]));
+    if (du[row.row] != 0.0) displaced[size_t(row.body)] = 1;
     const int c = row.component;
     s[4 + c] += mi * vi;
     Vec3 e{};
@@ -163,11 +164,12 @@ void RigidBodies::start(const Vector& u, const Vector& r, Vector& v, Vector& a) 
     const int pair[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
     for (int p = 0; p < 6; ++p) s[10 + p] += mi * row.X[size_t(pair[p][0])] * row.X[size_t(pair[p][1])];
   }
-  double anyDisplaced = 0.0;
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, displaced, Teuchos::outArg(anyDisplaced));
-  if (anyDisplaced != 0.0)
-    throw InputError("a rigid body's nodes start displaced (an initial displacement on a rigid block is not "
-                     "available so far, issue 74): remove it from the Initial Conditions");
+  if (nb > 0) Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, int(nb), displaced.data(), anyDisplaced.data());
+  for (size_t b = 0; b < nb; ++b)
+    if (anyDisplaced[b])
+      throwInput(inputFile_, keys_[b], "true",
+                 "its nodes are given an initial displacement (not available for a rigid body so far, issue 74)",
+                 "remove the displacement of its nodes from the Initial Conditions");
   if (!local.empty())
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, int(local.size()), local.data(), global.data());
   for (size_t b = 0; b < nb; ++b) {

@@ -63,6 +63,8 @@ class RigidBodies : public RigidMotion, public InteractionOutput {
   std::vector<Vec3> force_, torque_;
   RCP<const Comm> comm_;
   RCP<const Vector> lumpedMass_;
+  std::string inputFile_;
+  std::vector<std::string> keys_;  // each body's 'Model/Blocks/<name>/Rigid', for messages
 };
 
 // The rigid blocks of the model refused by an analysis that cannot run them, naming the first.

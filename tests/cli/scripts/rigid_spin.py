@@ -20,7 +20,8 @@ Checked, from the history of four nodes (the corner and the ends of its three ed
   - the same run on 2 ranks gives the same histories to 1e-9 of their peaks (the forces summed
     in another order);
   - what rigid blocks cannot do yet is refused (exit 1, one line naming the block's 'Rigid'):
-    an implicit scheme, a node of the body fixed by a Dirichlet condition.
+    an implicit scheme, an initial displacement of its nodes, a node fixed by a Dirichlet
+    condition.
 usage: rigid_spin.py CHOC SOURCE_DIR WORK_DIR"""
 import math
 import os
@@ -162,6 +163,11 @@ def refused(name, change, words):
 
 
 refused("implicit", lambda d: chocrun.set_param(d, "Analyses/spin/Scheme", "HHT"), ["implicit"])
+refused("displaced", lambda d: chocrun.set_params(
+    d, {"Analyses/spin/Initial Conditions/moved/Node Set": "corner",
+        "Analyses/spin/Initial Conditions/moved/Field": "Displacement",
+        "Analyses/spin/Initial Conditions/moved/Components": "DX",
+        "Analyses/spin/Initial Conditions/moved/Value": 1e-3}, create=True), ["initial displacement"])
 refused("fixed_node", lambda d: chocrun.set_params(
     d, {"Model/Dirichlet/held/Node Set": "corner", "Model/Dirichlet/held/Components": "DX"}, create=True), ["fixed"])
 if failures:
