@@ -44,7 +44,7 @@ void refuseRigidBlocks(const Model& model, const std::string& analysisPath, cons
   if (rigid.empty()) return;
   throwInput(model.inputFile(), rigidKey(model, rigid.front()), "true",
              "rigid blocks run in explicit transients only so far (issue 74), and " + analysisPath + " is " + what,
-             "use 'Scheme' = 'central differences', or mesh the part as a deformable block");
+             "use a 'Transient' with 'Scheme' = 'central differences', or mesh the part as a deformable block");
 }
 
 RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)

@@ -296,7 +296,9 @@ choc_cli_input_error(friction_explicit check bad_friction_explicit.xml
 choc_cli_input_error(initial_rigid_components check bad_initial_rigid_components.xml
   "parameter 'Analyses/impact/Initial Conditions/bar 1/Components' = 'DX': is not used with Field = 'Rigid Velocity'. remove it")
 choc_cli_input_error(rigid_implicit check bad_rigid_implicit.xml
-  "parameter 'Model/Blocks/box/Rigid' = 'true': rigid blocks run in explicit transients only so far .issue 74., and Analyses/spin is implicit .'Scheme' = 'HHT'.. use 'Scheme' = 'central differences'")
+  "parameter 'Model/Blocks/box/Rigid' = 'true': rigid blocks run in explicit transients only so far .issue 74., and Analyses/spin is implicit .'Scheme' = 'HHT'.. use a 'Transient' with 'Scheme' = 'central differences'")
+choc_cli_input_error(rigid_modal check bad_rigid_modal.xml
+  "parameter 'Model/Blocks/box/Rigid' = 'true': rigid blocks run in explicit transients only so far .issue 74., and Analyses/modes is a modal analysis")
 choc_cli_input_error(rigid_fixed_node check bad_rigid_fixed_node.xml
   "parameter 'Model/Blocks/box/Rigid' = 'true': its node 1 has component X fixed or inactive")
 choc_cli_input_error(initial_missing_components check bad_initial_missing_components.xml
