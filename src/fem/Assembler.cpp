@@ -237,31 +237,23 @@ RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<
 }
 
 RCP<CrsMatrix> Assembler::stiffness(const std::vector<NodalSpring>& springs) const {
-  // A rigid block's elements give no stiffness (physics/RigidBodies.hpp).
-  std::vector<const ElementKernel*> rigid;
-  for (const BlockPhysics& b : blocks_)
-    if (b.rigid) rigid.push_back(b.kernel.get());
-  return assemble(
-      [&](const ElementKernel& k, MassKind, const std::vector<Point3>& x, const int*, DenseMatrix& Ke) {
-        if (rigid.empty() || std::find(rigid.begin(), rigid.end(), &k) == rigid.end()) return k.stiffness(x, Ke);
-        const int n = static_cast<int>(x.size() * k.components().size());
-        Ke.resize(n, n);
-      },
-      springs, RCP<const Graph>(), true);
+  return stiffnessWithout({}, springs, RCP<const Graph>());
 }
 
+// The skipped blocks' elements, and a rigid block's (physics/RigidBodies.hpp), give no
+// stiffness. A graph built here holds every entry of the full-pattern blocks (BlockPhysics).
 RCP<CrsMatrix> Assembler::stiffnessWithout(const std::vector<char>& skip, const std::vector<NodalSpring>& springs,
                                            const RCP<const Graph>& graph) const {
   std::vector<const ElementKernel*> skipped;
-  for (size_t b = 0; b < blocks_.size() && b < skip.size(); ++b)
-    if (skip[b]) skipped.push_back(blocks_[b].kernel.get());
+  for (size_t b = 0; b < blocks_.size(); ++b)
+    if ((b < skip.size() && skip[b]) || blocks_[b].rigid) skipped.push_back(blocks_[b].kernel.get());
   return assemble(
       [&](const ElementKernel& k, MassKind, const std::vector<Point3>& x, const int*, DenseMatrix& Ke) {
         if (std::find(skipped.begin(), skipped.end(), &k) == skipped.end()) return k.stiffness(x, Ke);
         const int n = static_cast<int>(x.size() * k.components().size());
         Ke.resize(n, n);
       },
-      springs, graph);
+      springs, graph, graph.is_null());
 }
 
 RCP<CrsMatrix> Assembler::mass() const {

@@ -60,7 +60,8 @@ class Assembler {
   // The stiffness of the blocks not flagged in `skip` (one flag per mesh block) plus the
   // springs, on `graph` (that of stiffness(springs)): the entries only skipped blocks give are
   // present and zero. The linear part of a model whose flagged blocks are computed otherwise
-  // (finite strain), on the graph their tangent is added into.
+  // (finite strain), on the graph their tangent is added into. Rigid blocks give no stiffness
+  // here nor in stiffness().
   RCP<CrsMatrix> stiffnessWithout(const std::vector<char>& skip, const std::vector<NodalSpring>& springs,
                                   const RCP<const Tpetra::CrsGraph<LO, GO>>& graph) const;
   RCP<CrsMatrix> mass() const;

@@ -2,3 +2,6 @@
 # (input/rigid_spin.xml, BENCHMARKS section 17): its shape, energy and flip period against Euler's
 # equations, 1 and 2 ranks alike; the inputs rigid blocks cannot run yet refused.
 choc_cli_script(rigid_spin 300)
+# A rigid block dropped on a finite-strain slab with penalty contact (input/block_on_slab.xml's
+# scene): its momentum change is the contact's impulse, one impact, 1 and 2 ranks alike.
+choc_cli_script(rigid_drop 300)
