@@ -40,7 +40,7 @@ void checkNodesOwnedByTheBody(const Model& model, int block, const std::set<int>
 }  // namespace
 
 void refuseRigidBlocks(const Model& model, const std::string& analysisPath, const std::string& what) {
-  const std::vector<int> rigid = model.rigidBlocks();
+  const std::vector<int>& rigid = model.rigidBlocks();
   if (rigid.empty()) return;
   throwInput(model.inputFile(), rigidKey(model, rigid.front()), "true",
              "rigid blocks run in explicit transients only so far (issue 74), and " + analysisPath + " is " + what,
@@ -91,7 +91,8 @@ RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)
                          "not yet available, issue 74)",
                      "remove the node from the Dirichlet sets and Active Components");
         const LO row = map->getLocalElement(GO(g));
-        if (row != Teuchos::OrdinalTraits<LO>::invalid()) rows_.push_back({body, mesh.coords[size_t(n)], c, row});
+        if (row != Teuchos::OrdinalTraits<LO>::invalid())
+          rows_.push_back({body, mesh.coords[size_t(n)], bodies_.back().bodyCoordinates(mesh.coords[size_t(n)]), c, row});
       }
   }
   force_.assign(bodies_.size(), Vec3{});
@@ -109,13 +110,29 @@ double RigidBodies::kineticEnergy() const {
   return e;
 }
 
+RigidBodies::Motion RigidBodies::motionOf(size_t b) const {
+  const RigidBody& body = bodies_[b];
+  Motion m;
+  m.centre = body.centre();
+  m.velocity = body.centreVelocity();
+  m.omega = body.angularVelocity();
+  m.R = body.attitude();
+  m.acceleration = {force_[b][0] / body.mass(), force_[b][1] / body.mass(), force_[b][2] / body.mass()};
+  m.alpha = body.angularAcceleration(torque_[b]);
+  return m;
+}
+
+// Each row's force -r_i and its moment r x f about the centre (r = R xi: the body's attitude
+// taken once per body).
 void RigidBodies::gatherForces(const Vector& r) {
   const auto d = r.getData();
   std::vector<double> local(6 * bodies_.size(), 0.0), global(local.size());
+  std::vector<Matrix33> R;
+  for (const RigidBody& b : bodies_) R.push_back(b.attitude());
   for (const Row& row : rows_) {
     Vec3 f{};
     f[size_t(row.component)] = -d[row.row];
-    const Vec3 m = bodies_[size_t(row.body)].momentOf(row.X, f);
+    const Vec3 m = cross(R[size_t(row.body)] * row.xi, f);
     local[size_t(6 * row.body + row.component)] += f[size_t(row.component)];
     for (int k = 0; k < 3; ++k) local[size_t(6 * row.body + 3 + k)] += m[size_t(k)];
   }
@@ -125,44 +142,47 @@ void RigidBodies::gatherForces(const Vector& r) {
     for (int k = 0; k < 3; ++k) force_[b][size_t(k)] = global[6 * b + size_t(k)], torque_[b][size_t(k)] = global[6 * b + 3 + size_t(k)];
 }
 
+// x = c + r, r = R xi; u = x - X, v = V + w x r, a = A + alpha x r + w x (w x r): each body's
+// motion evaluated once.
 void RigidBodies::place(Vector* u, Vector* v, Vector* a) const {
   Teuchos::ArrayRCP<double> du = u ? u->getDataNonConst() : Teuchos::ArrayRCP<double>();
   Teuchos::ArrayRCP<double> dv = v ? v->getDataNonConst() : Teuchos::ArrayRCP<double>();
   Teuchos::ArrayRCP<double> da = a ? a->getDataNonConst() : Teuchos::ArrayRCP<double>();
-  for (const Row& r : rows_) {
-    const RigidBody& b = bodies_[size_t(r.body)];
-    const size_t c = size_t(r.component);
-    if (u) du[r.row] = b.displacement(r.X)[c];
-    if (v) dv[r.row] = b.velocity(r.X)[c];
-    if (a) da[r.row] = b.acceleration(r.X, force_[size_t(r.body)], torque_[size_t(r.body)])[c];
+  std::vector<Motion> motion;
+  for (size_t b = 0; b < bodies_.size(); ++b) motion.push_back(motionOf(b));
+  for (const Row& row : rows_) {
+    const Motion& m = motion[size_t(row.body)];
+    const size_t c = size_t(row.component);
+    const Vec3 r = m.R * row.xi;
+    if (u) du[row.row] = m.centre[c] + r[c] - row.X[c];
+    if (v) dv[row.row] = m.velocity[c] + cross(m.omega, r)[c];
+    if (a) da[row.row] = m.acceleration[c] + cross(m.alpha, r)[c] + cross(m.omega, cross(m.omega, r))[c];
   }
 }
 
 // The nodes' initial velocities fitted by a rigid motion in the lumped mass's norm: V of the
 // nodes' lumped centre c_l = P / m_l, w = I_l^-1 L_l (the nodes' momentum and angular momentum
-// about c_l, I_l their lumped inertia there); exact when the nodes move rigidly. The body then
-// moves at V + w x (c - c_l) and w. Initial displacements of a body's nodes are refused.
+// about c_l, I_l their lumped inertia there: MassPropertiesSum of the nodes as point masses);
+// exact when the nodes move rigidly. The body then moves at V + w x (c - c_l) and w. Initial
+// displacements of a body's nodes are refused.
 void RigidBodies::start(const Vector& u, const Vector& r, Vector& v, Vector& a) {
   const auto du = u.getData(), dv = v.getData(), m = lumpedMass_->getData();
   const size_t nb = bodies_.size();
-  // per body: m_l, sum m X (3), sum m v (3), sum m X x v (3), sum m X_i X_j (6): 16
-  std::vector<double> local(16 * nb, 0.0), global(local.size());
+  std::vector<MassPropertiesSum> nodes;
+  for (const RigidBody& b : bodies_) nodes.emplace_back(b.centre());  // about a point of the body
+  // per body: sum m v (3), sum m (X - c) x v (3), c the reference point of `nodes`
+  std::vector<double> local(6 * nb, 0.0), global(local.size());
   std::vector<int> displaced(nb, 0), anyDisplaced(nb, 0);
   for (const Row& row : rows_) {
-    double* s = &local[16 * size_t(row.body)];
+    double* s = &local[6 * size_t(row.body)];
     const double mi = m[row.row], vi = dv[row.row];
     if (du[row.row] != 0.0) displaced[size_t(row.body)] = 1;
-    const int c = row.component;
-    s[4 + c] += mi * vi;
     Vec3 e{};
-    e[size_t(c)] = vi;
-    const Vec3 xv = cross(row.X, e);
-    for (int k = 0; k < 3; ++k) s[7 + k] += mi * xv[size_t(k)];
-    if (c != 0) continue;  // the node's mass and moments once, with its X row
-    s[0] += mi;
-    for (int k = 0; k < 3; ++k) s[1 + k] += mi * row.X[size_t(k)];
-    const int pair[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
-    for (int p = 0; p < 6; ++p) s[10 + p] += mi * row.X[size_t(pair[p][0])] * row.X[size_t(pair[p][1])];
+    e[size_t(row.component)] = vi;
+    const Vec3 xv = cross(row.X - bodies_[size_t(row.body)].centre(), e);
+    s[row.component] += mi * vi;
+    for (int k = 0; k < 3; ++k) s[3 + k] += mi * xv[size_t(k)];
+    if (row.component == 0) nodes[size_t(row.body)].addPoint(row.X, mi);  // a node once, with its X row
   }
   if (nb > 0) Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, int(nb), displaced.data(), anyDisplaced.data());
   for (size_t b = 0; b < nb; ++b)
@@ -173,26 +193,19 @@ void RigidBodies::start(const Vector& u, const Vector& r, Vector& v, Vector& a) 
   if (!local.empty())
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, int(local.size()), local.data(), global.data());
   for (size_t b = 0; b < nb; ++b) {
-    const double* s = &global[16 * b];
-    const double ml = s[0];
-    const Vec3 cl = {s[1] / ml, s[2] / ml, s[3] / ml}, P = {s[4], s[5], s[6]};
-    const Vec3 Vl = {P[0] / ml, P[1] / ml, P[2] / ml};
-    const Vec3 L = Vec3{s[7], s[8], s[9]} - cross(cl, P);  // about c_l: sum m (X - c_l) x v
-    Matrix33 S{};  // sum m (X - c_l)(X - c_l)^T
-    const int pair[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
-    for (int p = 0; p < 6; ++p) {
-      const int i = pair[p][0], j = pair[p][1];
-      S[size_t(3 * i + j)] = S[size_t(3 * j + i)] = s[10 + p] - ml * cl[size_t(i)] * cl[size_t(j)];
-    }
-    const double tr = S[0] + S[4] + S[8];
-    Matrix33 I{};
-    for (int k = 0; k < 9; ++k) I[size_t(k)] = (k % 4 == 0 ? tr : 0.0) - S[size_t(k)];
-    const Eigen33 e = eigenOfSymmetric33(I);
-    const Vec3 Lp = transpose(e.vectors) * L;
-    const Vec3 w = e.vectors * Vec3{Lp[0] / e.values[0], Lp[1] / e.values[1], Lp[2] / e.values[2]};
+    std::vector<double> sums = nodes[b].sums(), all(sums.size());
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, int(sums.size()), sums.data(), all.data());
+    nodes[b].setSums(all);
+    const MassProperties lumped = nodes[b].properties();
     RigidBody& body = bodies_[b];
-    const Vec3 V = sum(Vl, cross(w, body.centre() - cl));
-    body.setMotion(V, w);
+    const Vec3 c = body.centre(), cl = lumped.centre;
+    const Vec3 P = {global[6 * b], global[6 * b + 1], global[6 * b + 2]};
+    const Vec3 Vl = {P[0] / lumped.mass, P[1] / lumped.mass, P[2] / lumped.mass};
+    // about c_l: sum m (X - c_l) x v = sum m (X - c) x v - (c_l - c) x P
+    const Vec3 L = Vec3{global[6 * b + 3], global[6 * b + 4], global[6 * b + 5]} - cross(cl - c, P);
+    const Vec3 Lp = transpose(lumped.axes) * L;
+    const Vec3 w = lumped.axes * Vec3{Lp[0] / lumped.moments[0], Lp[1] / lumped.moments[1], Lp[2] / lumped.moments[2]};
+    body.setMotion(sum(Vl, cross(w, c - cl)), w);
   }
   gatherForces(r);
   place(nullptr, &v, &a);

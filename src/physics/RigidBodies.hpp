@@ -48,10 +48,17 @@ class RigidBodies : public RigidMotion, public InteractionOutput {
  private:
   struct Row {
     int body;
-    Vec3 X;  // the node's reference position
+    Vec3 X;   // the node's reference position
+    Vec3 xi;  // its body-frame coordinates: x = centre + R xi
     int component;
     LO row;  // local row of the model's map
   };
+  // A body's motion evaluated once per pass over its rows.
+  struct Motion {
+    Vec3 centre, velocity, omega, acceleration, alpha;
+    Matrix33 R;
+  };
+  Motion motionOf(size_t body) const;
   // Each body's resultant and moment about its centre of the forces -r on its rows, summed
   // over the ranks.
   void gatherForces(const Vector& r);

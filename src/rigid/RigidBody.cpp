@@ -22,10 +22,7 @@ RigidBody::RigidBody(std::string name, const MassProperties& properties)
 }
 
 // x = c + R A0^T (X - c0): the body-frame coordinates of X turned to the current attitude.
-Vec3 RigidBody::position(const Vec3& X) const {
-  const Vec3 body = transpose(p_.axes) * (X - p_.centre);
-  return plus(centre_, rotation_.R * body);
-}
+Vec3 RigidBody::position(const Vec3& X) const { return plus(centre_, rotation_.R * bodyCoordinates(X)); }
 
 Vec3 RigidBody::displacement(const Vec3& X) const { return position(X) - X; }
 
@@ -48,14 +45,13 @@ void RigidBody::drift(double h) {
   rotateFreelyBySplitting(p_.moments, h, rotation_);
 }
 
-Vec3 RigidBody::acceleration(const Vec3& X, const Vec3& force, const Vec3& torque) const {
-  const Vec3 w = angularVelocity(), r = position(X) - centre_;
-  const Vec3 net = torque - cross(w, rotation_.momentum);
+Vec3 RigidBody::angularAcceleration(const Vec3& torque) const {
+  const Vec3 net = torque - cross(angularVelocity(), rotation_.momentum);
   const Vec3 body = transpose(rotation_.R) * net;
-  const Vec3 alpha = rotation_.R * Vec3{body[0] / p_.moments[0], body[1] / p_.moments[1], body[2] / p_.moments[2]};
-  const Vec3 A = {force[0] / p_.mass, force[1] / p_.mass, force[2] / p_.mass};
-  return plus(plus(A, cross(alpha, r)), cross(w, cross(w, r)));
+  return rotation_.R * Vec3{body[0] / p_.moments[0], body[1] / p_.moments[1], body[2] / p_.moments[2]};
 }
+
+Vec3 RigidBody::bodyCoordinates(const Vec3& X) const { return transpose(p_.axes) * (X - p_.centre); }
 
 Vec3 RigidBody::momentOf(const Vec3& X, const Vec3& force) const { return cross(position(X) - centre_, force); }
 

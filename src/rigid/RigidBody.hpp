@@ -33,9 +33,10 @@ class RigidBody {
   // F the resultant force on the body, T its moment about the current centre of mass.
   void kick(const Vec3& force, const Vec3& torque, double h);
   void drift(double h);
-  // The acceleration of the material point X under the resultant F and the moment T about the
-  // centre: A + alpha x r + w x (w x r), alpha = I^-1 (T - w x pi) (I the inertia in space).
-  Vec3 acceleration(const Vec3& X, const Vec3& force, const Vec3& torque) const;
+  // alpha = I^-1 (T - w x pi), the angular acceleration under the moment T about the centre.
+  Vec3 angularAcceleration(const Vec3& torque) const;
+  // The body-frame (principal) coordinates of the material point X: x = centre() + attitude() xi.
+  Vec3 bodyCoordinates(const Vec3& X) const;
   // The moment about the centre of a force f at the material point X.
   Vec3 momentOf(const Vec3& X, const Vec3& force) const;
 
