@@ -10,7 +10,7 @@ PYTHON ?= /usr/bin/python3
 # 93 s; 4.3 s yielding; no cost alone). Every mpirun under make (tests, studies, benchmarks).
 export OMPI_MCA_mpi_yield_when_idle = 1
 
-.PHONY: all deps configure build run test verify study study-contact-mass bench-block-on-slab study-plastic bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-plastic bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite docs clean
+.PHONY: all deps configure build run test verify study study-contact-mass bench-block-on-slab study-plastic bench bench-kept bench-direct bench-multigrid bench-bracket bench-oblique bench-finite bench-plastic bench-inputs bench-mesh bench-modal bench-explicit bench-peer study-modal study-bar study-modal-direct study-friction study-finite study-saint-venant docs clean
 
 all: build
 
@@ -114,6 +114,10 @@ bench-block-on-slab: build
 	$(PYTHON) tools/bench/bench_block_on_slab.py --build $(BUILD) --repeat 1 --masses auto normal "velocity update"
 
 # SDND100's friction: stick stiffness and dt against the rows and the exact motion.
+# Saint-Venant's problem: the rigid striker's error against h and dt, and the striker meshed elastic.
+study-saint-venant: build
+	$(PYTHON) tools/study/saint_venant_study.py --build $(BUILD) --out results/study/saint-venant
+
 study-friction: build
 	$(PYTHON) tools/study/sdnd100_study.py --build $(BUILD)
 

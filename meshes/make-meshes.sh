@@ -17,6 +17,10 @@ choc="${1:-$here/../build/choc}"
 # Beyond the reference (input/sdnl111c_accurate.xml): the 3D bars with 400 HEX8 along each.
 "$choc" mesh --dim 3 --axis z --along1 400 --along2 400 --across1 1 --across2 1 \
   --width 0.02 --height 0.02 --gap 1e-5 -o "$here/sdnl111_3d_400.exo"
+# Saint-Venant's problem (input/saint_venant.xml): a 0.05 m striker (5 HEX8, declared rigid)
+# touching a 1 m bar of 100 HEX8 along z, section 0.02 x 0.02.
+"$choc" mesh --dim 3 --axis z --along1 5 --along2 100 --length1 0.05 --length2 1 --across1 1 --across2 1 \
+  --width 0.02 --height 0.02 --gap 0 -o "$here/saint_venant.exo"
 # The gmsh example: the same bars in TET10 (needs the gmsh command, Debian package gmsh).
 gmsh -3 -order 2 -format msh41 "$here/sdnl111_3d_bars.geo" -o "$here/sdnl111_3d_tet10.msh" > /dev/null
 # The 2D section (plane strain, axisymmetric): the bars in QUAD8.

@@ -11,6 +11,7 @@
 #include "analysis/DirectStepView.hpp"
 #include "contact/ContactNormalDirections.hpp"
 #include "contact/ContactReport.hpp"
+#include "contact/ContactStrategies.hpp"
 #include "core/Errors.hpp"
 #include "timeint/TimeGrid.hpp"
 #include "core/Format.hpp"
@@ -225,11 +226,13 @@ void DirectTransient::setupExplicit(const Model& model) {
   if (model.rigidBlocks().empty()) return;
   // Rigid blocks: their nodes' inverse mass 0 (the bodies move them), and their inertia the
   // bodies' own (the kinetic energy's diagonal without their rows).
-  if (b_->strategy && b_->strategy->incrementsExplicitly())
+  auto* increments = dynamic_cast<ForwardIncrementStrategy*>(b_->strategy.get());
+  if (increments && b_->contact->hasFriction())
     throwInput(inputFile_, path("Contact/Method"), s_.contact.methodName(),
-               "forward-increment contact with rigid blocks is not available so far (issue 74)",
-               "use 'Method' = 'Penalty'");
+               "friction beside rigid blocks is not available in central differences so far (issue 74)",
+               "make the pairs frictionless ('Friction Coefficient' = 0)");
   b_->rigid = std::make_shared<RigidBodies>(model, *b_->explicitPlan->massDiagonal);
+  if (increments) increments->moveWithBodies(b_->rigid.get());
   b_->rigid->zeroRows(*b_->explicitPlan->inverseMass);
   auto withoutRigid = rcp(new Vector(*b_->explicitPlan->massDiagonal, Teuchos::Copy));
   b_->rigid->zeroRows(*withoutRigid);

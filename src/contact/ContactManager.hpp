@@ -101,6 +101,7 @@ class ContactManager {
   // u at the contact DOFs (every constraint's terms, sorted; replicated), and the gaps of such values.
   std::vector<double> contactValues(const Vector& u) const;
   std::vector<double> gapsAt(const std::vector<double>& x) const;
+  const std::vector<GO>& contactDofs() const { return contactDofs_; }
   // Per constraint: its terms as (index into the contact DOFs, coefficient).
   const std::vector<std::vector<std::pair<int, double>>>& localTerms() const { return localTerms_; }
 
@@ -145,7 +146,6 @@ class ContactManager {
   ContactActiveSet& activeSet() { return set_; }
   const ContactActiveSet& activeSet() const { return set_; }
   const std::vector<char>& status() const { return set_.status; }
-  const std::vector<double>& pressures() const { return set_.lambda; }  // lambda_s [N]
   int activeCount() const { return set_.activeCount(); }
   // Per pair, its slave nodes in contact: "pair 'slide': 28 of 28 nodes in contact, ...".
   std::string activeSummary() const;

@@ -17,6 +17,7 @@
 #include <memory>
 #include <string>
 
+#include "contact/ContactBodies.hpp"
 #include "contact/ContactParameters.hpp"
 #include "contact/ContactStrategy.hpp"
 
@@ -109,8 +110,13 @@ class ForwardIncrementStrategy : public ContactStrategy {
   void scaleLastCorrection(double /*factor*/) override {}
   bool incrementsExplicitly() const override { return true; }
   void addExplicitIncrement(const Vector& u, const Vector& uStar, const Vector& inverseMass, double h, double h2,
-                            Vector& a) override;
+                            Vector& a, Vector& r) override;
   double springStiffness() const override { return 0.0; }
+  // Rigid bodies moving some contact DOFs (their inverse mass 0): the pressures move the bodies.
+  void moveWithBodies(const ContactBodies* bodies) { bodies_ = bodies; }
+
+ private:
+  const ContactBodies* bodies_ = nullptr;
 };
 
 }  // namespace choc

@@ -102,7 +102,8 @@ void ContactStrategy::takeSolution(const CrsMatrix& /*W*/, const MultiVector& x,
   for (size_t i = 0; i < du.getLocalLength(); ++i) d[i] = xd[i];
 }
 
-void ContactStrategy::addExplicitIncrement(const Vector&, const Vector&, const Vector&, double, double, Vector&) {
+void ContactStrategy::addExplicitIncrement(const Vector&, const Vector&, const Vector&, double, double, Vector&,
+                                           Vector&) {
   throw std::logic_error("this contact strategy has no explicit increments");
 }
 

@@ -85,9 +85,10 @@ class ContactStrategy {
 
   // ---- Explicit central differences
   virtual bool incrementsExplicitly() const { return false; }
-  // Adds to a the contact accelerations of the sub-step from u to the prediction uStar.
+  // Adds to a the contact accelerations of the sub-step from u to the prediction uStar, and
+  // subtracts the contact forces from the residual r (which rigid bodies gather).
   virtual void addExplicitIncrement(const Vector& u, const Vector& uStar, const Vector& inverseMass, double h,
-                                    double h2, Vector& a);
+                                    double h2, Vector& a, Vector& r);
   // k_s of an active node, for the critical step: a spring's stiffness, 0 for forward increments.
   virtual double springStiffness() const { return geometry_.method().stiffness(); }
 

@@ -19,6 +19,7 @@
 #include "core/Memory.hpp"
 #include "mesh/CoincidentNodes.hpp"
 #include "physics/DegenerateElements.hpp"
+#include "physics/RigidHoldInput.hpp"
 #include "materials/MaterialLaw.hpp"
 #include "input/Validation.hpp"
 #include "input/Vector3.hpp"
@@ -143,7 +144,8 @@ std::vector<BlockPhysics> Model::blockPhysics(const Teuchos::ParameterList& mode
     if (physics[b].rigid) physics[b].mass = MassKind::Lumped;  // its nodes' masses weigh their initial velocities
     // A rigid block has no strain: no element-by-element kernel (physics/RigidBodies.hpp).
     finite_.push_back(physics[b].rigid ? nullptr : strainKernel(blk, bp, matName, mp));
-    if (physics[b].rigid) rigidBlocks_.push_back(int(b));
+    const RigidHold hold = rigidHoldOf(bp, physics[b].rigid, file, path);
+    if (physics[b].rigid) rigidBlocks_.push_back(int(b)), rigidHolds_.push_back(hold);
     physics[b].fullPattern = finite_.back() != nullptr;
     kernels_.push_back(physics[b].kernel);
   }

@@ -16,6 +16,7 @@
 #include "fem/Material.hpp"
 #include "core/TpetraTypes.hpp"
 #include "mesh/Mesh.hpp"
+#include "rigid/RigidBody.hpp"
 
 namespace choc {
 
@@ -74,6 +75,8 @@ class Model {
   const NodeSet& nodeSet(const std::string& name, const std::string& parameter) const;
   // The mesh blocks declared rigid ('Model/Blocks/<name>/Rigid'), by index.
   const std::vector<int>& rigidBlocks() const { return rigidBlocks_; }
+  // The held motion of the k-th rigid block (Model/Blocks/<name>/Held).
+  const RigidHold& rigidHold(size_t k) const { return rigidHolds_[k]; }
   // Global DOF of (node, comp); -1 when that component is fixed or not carried.
   long long dof(int node, int comp) const { return dofs_->dof(node, comp); }
 
@@ -111,6 +114,7 @@ class Model {
   std::vector<std::shared_ptr<const FiniteStrainSolid>> finite_;
   std::vector<std::shared_ptr<const ElementKernel>> kernels_;
   std::vector<int> rigidBlocks_;
+  std::vector<RigidHold> rigidHolds_;  // per rigid block
 };
 
 }  // namespace choc

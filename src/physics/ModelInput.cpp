@@ -52,6 +52,14 @@ void declareBlockParameters(ParameterList& model) {
               "and density; its elements carry no stress; the forces on its nodes move it): explicit "
               "transients ('Scheme' = 'central differences') in 3D, its nodes shared with no other "
               "block and all free, no initial displacement (docs/theory/rigid-bodies.md; issue 74)");
+  declareString(blk, "Held", "",
+                "a rigid block's held motion: the components of its centre's velocity kept at 'Held "
+                "Velocity' (some of DX DY DZ) and its rotation stopped (DRX DRY DRZ, together), from the "
+                "start whatever the initial velocities; the hold's force and moment are the history's "
+                "<block>:reactionX..MZ and its work goes to the energy balance. '' (the default): a free body");
+  declareString(blk, "Held Velocity", "0 0 0",
+                "the velocity [m/s] 'vx vy vz' at which the held components of a rigid block's centre "
+                "move (0 along the components not held)");
   declareChoice(blk, "Strain", "small", {"small", "finite"},
                 "kinematics of the block's solids: 'small' (linear strain, an assembled stiffness: "
                 "a linear elastic material) or 'finite' (total Lagrangian: deformation gradient F, "

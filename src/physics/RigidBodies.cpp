@@ -77,6 +77,7 @@ RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)
       const MassProperties p = blockMassProperties(mesh, {block}, {model.materialOfBlock(block).density},
                                                    model.kinematics(), elements, *comm_);
       bodies_.emplace_back(mesh.blocks[size_t(block)].name, p);
+      bodies_.back().setHold(model.rigidHold(size_t(body)));
     } catch (const std::invalid_argument& e) {
       throwInput(model.inputFile(), rigidKey(model, block), "true", e.what(),
                  "a rigid body needs mass and inertia about every axis: check the block's elements");
@@ -90,6 +91,7 @@ RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)
                          " fixed or inactive (a rigid body's motion is prescribed on the body, not its nodes: "
                          "not yet available, issue 74)",
                      "remove the node from the Dirichlet sets and Active Components");
+        dofsOfBodies_[GO(g)] = {body, c, bodies_.back().bodyCoordinates(mesh.coords[size_t(n)])};
         const LO row = map->getLocalElement(GO(g));
         if (row != Teuchos::OrdinalTraits<LO>::invalid())
           rows_.push_back({body, mesh.coords[size_t(n)], bodies_.back().bodyCoordinates(mesh.coords[size_t(n)]), c, row});
@@ -108,6 +110,12 @@ double RigidBodies::kineticEnergy() const {
   double e = 0.0;
   for (const RigidBody& b : bodies_) e += b.kineticEnergy();
   return e;
+}
+
+double RigidBodies::holdWork() const {
+  double w = 0.0;
+  for (const RigidBody& b : bodies_) w += b.holdWork();
+  return w;
 }
 
 RigidBodies::Motion RigidBodies::motionOf(size_t b) const {
@@ -165,7 +173,7 @@ void RigidBodies::place(Vector* u, Vector* v, Vector* a) const {
 // about c_l, I_l their lumped inertia there: MassPropertiesSum of the nodes as point masses);
 // exact when the nodes move rigidly. The body then moves at V + w x (c - c_l) and w. Initial
 // displacements of a body's nodes are refused.
-void RigidBodies::start(const Vector& u, const Vector& r, Vector& v, Vector& a) {
+void RigidBodies::start(const Vector& u, Vector& v) {
   const auto du = u.getData(), dv = v.getData(), m = lumpedMass_->getData();
   const size_t nb = bodies_.size();
   std::vector<MassPropertiesSum> nodes;
@@ -206,9 +214,56 @@ void RigidBodies::start(const Vector& u, const Vector& r, Vector& v, Vector& a) 
     const Vec3 Lp = transpose(lumped.axes) * L;
     const Vec3 w = lumped.axes * Vec3{Lp[0] / lumped.moments[0], Lp[1] / lumped.moments[1], Lp[2] / lumped.moments[2]};
     body.setMotion(sum(Vl, cross(w, c - cl)), w);
+    if (body.hold().any()) body.setHold(body.hold());  // the held components from the start
   }
+  place(nullptr, &v, nullptr);
+}
+
+void RigidBodies::accelerate(const Vector& r, Vector& a) {
   gatherForces(r);
-  place(nullptr, &v, &a);
+  place(nullptr, nullptr, &a);
+}
+
+// A copy of each body kicked by the forces -r over factor h (the rest of this sub-step's kick
+// and the next one's) and drifted over h: where its rows will be without contact.
+void RigidBodies::predict(double h, double factor, const Vector& r, Vector& uStar) {
+  gatherForces(r);
+  std::vector<RigidBody> next = bodies_;
+  for (size_t b = 0; b < next.size(); ++b) {
+    next[b].kick(force_[b], torque_[b], factor * h);
+    next[b].drift(h);
+  }
+  auto d = uStar.getDataNonConst();
+  for (const Row& row : rows_) {
+    const RigidBody& b = next[size_t(row.body)];
+    d[row.row] = b.centre()[size_t(row.component)] + (b.attitude() * row.xi)[size_t(row.component)] -
+                 row.X[size_t(row.component)];
+  }
+}
+
+// Per DOF its body's lever arm R xi now; per body 1/m and R diag(1/I) R^T.
+RigidContactBodies RigidBodies::describe(const std::vector<GO>& dofs) const {
+  RigidContactBodies out;
+  out.dofs.resize(dofs.size());
+  for (size_t k = 0; k < dofs.size(); ++k) {
+    const auto it = dofsOfBodies_.find(dofs[k]);
+    if (it == dofsOfBodies_.end()) continue;
+    out.dofs[k] = {it->second.body, it->second.component, bodies_[size_t(it->second.body)].attitude() * it->second.xi};
+  }
+  for (const RigidBody& b : bodies_) {
+    const RigidHold& hold = b.hold();
+    Vec3 w{};
+    for (int c = 0; c < 3; ++c) w[size_t(c)] = hold.translation[size_t(c)] ? 0.0 : 1.0 / b.mass();
+    out.inverseMass.push_back(w);
+    const Matrix33& R = b.attitude();
+    const Vec3& I = b.principalMoments();
+    std::array<double, 9> J{};
+    for (int i = 0; i < 3 && !hold.rotation; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k) J[size_t(3 * i + j)] += R[size_t(3 * i + k)] * R[size_t(3 * j + k)] / I[size_t(k)];
+    out.inverseInertia.push_back(J);
+  }
+  return out;
 }
 
 void RigidBodies::drift(double h, Vector& u, Vector& vHalf) {
@@ -229,9 +284,13 @@ std::vector<std::string> RigidBodies::historyColumns() const {
   static const char* const names[] = {"X",  "Y",  "Z",  "VX", "VY", "VZ", "RX", "RY", "RZ", "WX", "WY", "WZ",
                                       "PX", "PY", "PZ", "LX", "LY", "LZ", "kinetic", "FX", "FY", "FZ",
                                       "MX", "MY", "MZ"};
+  static const char* const held[] = {"reactionX", "reactionY", "reactionZ", "reactionMX", "reactionMY", "reactionMZ"};
   std::vector<std::string> c;
-  for (const RigidBody& b : bodies_)
+  for (const RigidBody& b : bodies_) {
     for (const char* n : names) c.push_back(b.name() + ":" + n);
+    if (b.hold().any())
+      for (const char* n : held) c.push_back(b.name() + ":" + n);
+  }
   return c;
 }
 
@@ -245,6 +304,9 @@ std::vector<double> RigidBodies::historyValues() const {
     v.push_back(body.kineticEnergy());
     v.insert(v.end(), force_[b].begin(), force_[b].end());
     v.insert(v.end(), torque_[b].begin(), torque_[b].end());
+    if (!body.hold().any()) continue;
+    v.insert(v.end(), body.reactionForce().begin(), body.reactionForce().end());
+    v.insert(v.end(), body.reactionMoment().begin(), body.reactionMoment().end());
   }
   return v;
 }
@@ -260,9 +322,9 @@ void RigidBodies::archive(StateArchive& a) const {
 
 void RigidBodies::restore(const StateArchive& a) {
   for (size_t b = 0; b < bodies_.size(); ++b) {
-    const std::vector<double> s = a.getVector<double>("rigid/" + bodies_[b].name(), 24);
-    bodies_[b].restore(std::vector<double>(s.begin(), s.begin() + 18));
-    for (int k = 0; k < 3; ++k) force_[b][size_t(k)] = s[size_t(18 + k)], torque_[b][size_t(k)] = s[size_t(21 + k)];
+    const std::vector<double> s = a.getVector<double>("rigid/" + bodies_[b].name(), 31);
+    bodies_[b].restore(std::vector<double>(s.begin(), s.begin() + 25));
+    for (int k = 0; k < 3; ++k) force_[b][size_t(k)] = s[size_t(25 + k)], torque_[b][size_t(k)] = s[size_t(28 + k)];
   }
 }
 

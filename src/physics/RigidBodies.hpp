@@ -5,8 +5,10 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
+#include "contact/ContactBodies.hpp"
 #include "output/InteractionOutput.hpp"
 #include "rigid/RigidBody.hpp"
 #include "timeint/RigidMotion.hpp"
@@ -16,7 +18,7 @@ namespace choc {
 class Model;
 class StateArchive;
 
-class RigidBodies : public RigidMotion, public InteractionOutput {
+class RigidBodies : public RigidMotion, public ContactBodies, public InteractionOutput {
  public:
   // The rigid blocks of the model (none: empty()); lumpedMass the model's lumped mass diagonal,
   // which weighs the nodes' initial velocities. Throws InputError for a rigid block outside 3D,
@@ -27,8 +29,13 @@ class RigidBodies : public RigidMotion, public InteractionOutput {
   // x's rows of the bodies' nodes set to 0 (their inverse mass: central differences leave them alone).
   void zeroRows(Vector& x) const;
   double kineticEnergy() const;
+  // The work of the held bodies' holds since the start [J] (external work).
+  double holdWork() const;
 
-  void start(const Vector& u, const Vector& r, Vector& v, Vector& a) override;
+  void start(const Vector& u, Vector& v) override;
+  void accelerate(const Vector& r, Vector& a) override;
+  void predict(double h, double factor, const Vector& r, Vector& uStar) override;
+  RigidContactBodies describe(const std::vector<GO>& dofs) const override;
   void drift(double h, Vector& u, Vector& vHalf) override;
   void kick(double h, const Vector& r, Vector& v, Vector& a) override;
 
@@ -38,7 +45,8 @@ class RigidBodies : public RigidMotion, public InteractionOutput {
   // The history of each body '<block>': its centre X Y Z, velocity VX VY VZ, rotation vector
   // RX RY RZ (since the start), angular velocity WX WY WZ, momentum PX PY PZ, angular momentum
   // about the origin LX LY LZ, kinetic energy, and the resultant FX FY FZ and moment MX MY MZ
-  // (about the centre) of the forces on it.
+  // (about the centre) of the forces on it; a held body also reactionX..Z and reactionMX..MZ,
+  // the force and moment its hold applies.
   std::vector<std::string> historyColumns() const override;
   std::vector<double> historyValues() const override;
   std::vector<std::string> globalNames() const override { return {}; }
@@ -67,6 +75,13 @@ class RigidBodies : public RigidMotion, public InteractionOutput {
 
   std::vector<RigidBody> bodies_;
   std::vector<Row> rows_;
+  // Every rigid node's DOFs (global id), on every rank: its body, component and body-frame
+  // coordinates, for contact (describe).
+  struct DofOfBody {
+    int body, component;
+    Vec3 xi;
+  };
+  std::unordered_map<GO, DofOfBody> dofsOfBodies_;
   std::vector<Vec3> force_, torque_;
   RCP<const Comm> comm_;
   RCP<const Vector> lumpedMass_;

@@ -107,9 +107,9 @@ void StructuralOperator::beginStep(const Vector& u, double t, double dt) {
 double StructuralOperator::elasticTermsNorm(const Vector& u) const { return internal_->termsNorm(u); }
 
 void StructuralOperator::addExplicitContact(const Vector& u, const Vector& uStar, const Vector& inverseMass,
-                                            double h, double h2, Vector& a) {
+                                            double h, double h2, Vector& a, Vector& r) {
   TimerScope ts(timer_, "Transient: contact");
-  contact_->addExplicitIncrement(u, uStar, inverseMass, h, h2, a);
+  contact_->addExplicitIncrement(u, uStar, inverseMass, h, h2, a, r);
 }
 
 SecondOrderOperator::CorrectedFields StructuralOperator::correctVelocity(Vector& v, Vector& a) {
@@ -195,7 +195,7 @@ void StructuralOperator::restore(const StateArchive& a) {
 }
 
 // The damping's and the moving obstacles' work by the trapezoidal rule on their power, the
-// loads' by LoadWork.
+// loads' by LoadWork, the held rigid bodies' by their holds' impulses.
 StateEnergies StructuralOperator::energies(const Vector& u, const Vector& v, const Vector& a, double time, double dt,
                                            double substep) {
   StateEnergies e;
@@ -215,7 +215,8 @@ StateEnergies StructuralOperator::energies(const Vector& u, const Vector& v, con
   const double obstaclePower = contact_ ? obstaclePowerAt(contact_->geometry(), u) : 0.0;
   work_.obstacles += 0.5 * dt * (work_.lastObstaclePower + obstaclePower);
   work_.lastObstaclePower = obstaclePower;
-  e.external = work_.loadWork.update(u, time) + work_.obstacles;
+  e.external = work_.loadWork.update(u, time) + work_.obstacles +
+               (mass_.rigidBodies() ? mass_.rigidBodies()->holdWork() : 0.0);
   // Central differences: the part of the energy the scheme's conserved energy leaves out,
   // (h^2/8) a^T M a = (h^2/4) x "the kinetic energy of a".
   if (substep > 0) e.shadow = 0.25 * substep * substep * mass_.kineticEnergy(a);

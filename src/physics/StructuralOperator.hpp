@@ -83,7 +83,7 @@ class StructuralOperator : public ExplicitOperator {
   void useDiagonalMass(RCP<const Vector> m) { mass_.useDiagonal(std::move(m)); }
   bool hasExplicitContact() const override { return contact_ && contact_->incrementsExplicitly(); }
   void addExplicitContact(const Vector& u, const Vector& uStar, const Vector& inverseMass, double h, double h2,
-                          Vector& a) override;
+                          Vector& a, Vector& r) override;
   std::string constraintState() const override { return contact_ ? contact_->geometry().activeSummary() : ""; }
   void initializeConstraints(const Vector& u) override;
   void commit() override;

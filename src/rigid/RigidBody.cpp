@@ -38,6 +38,30 @@ void RigidBody::setMotion(const Vec3& velocity, const Vec3& angularVelocity) {
 void RigidBody::kick(const Vec3& force, const Vec3& torque, double h) {
   velocity_ = plus(velocity_, force, h / p_.mass);
   rotation_.momentum = plus(rotation_.momentum, torque, h);
+  if (!hold_.any()) return;
+  const auto [J, K] = enforceHold();
+  reactionForce_ = {J[0] / h, J[1] / h, J[2] / h};
+  reactionMoment_ = {K[0] / h, K[1] / h, K[2] / h};
+  holdWork_ += dot(J, hold_.velocity);  // the held rotation's is 0 (w = 0)
+}
+
+void RigidBody::setHold(const RigidHold& hold) {
+  hold_ = hold;
+  enforceHold();
+}
+
+std::pair<Vec3, Vec3> RigidBody::enforceHold() {
+  Vec3 J{}, K{};
+  for (int c = 0; c < 3; ++c)
+    if (hold_.translation[size_t(c)]) {
+      J[size_t(c)] = p_.mass * (hold_.velocity[size_t(c)] - velocity_[size_t(c)]);
+      velocity_[size_t(c)] = hold_.velocity[size_t(c)];
+    }
+  if (hold_.rotation) {
+    K = {-rotation_.momentum[0], -rotation_.momentum[1], -rotation_.momentum[2]};
+    rotation_.momentum = Vec3{};
+  }
+  return {J, K};
 }
 
 void RigidBody::drift(double h) {
@@ -72,12 +96,17 @@ std::vector<double> RigidBody::state() const {
   s.insert(s.end(), velocity_.begin(), velocity_.end());
   s.insert(s.end(), rotation_.R.begin(), rotation_.R.end());
   s.insert(s.end(), rotation_.momentum.begin(), rotation_.momentum.end());
+  s.push_back(holdWork_);
+  s.insert(s.end(), reactionForce_.begin(), reactionForce_.end());
+  s.insert(s.end(), reactionMoment_.begin(), reactionMoment_.end());
   return s;
 }
 
 void RigidBody::restore(const std::vector<double>& s) {
-  if (s.size() != 18) throw std::invalid_argument("rigid body '" + name_ + "': a checkpoint state of 18 numbers expected");
+  if (s.size() != 25) throw std::invalid_argument("rigid body '" + name_ + "': a checkpoint state of 25 numbers expected");
   for (int i = 0; i < 3; ++i) centre_[i] = s[i], velocity_[i] = s[3 + i], rotation_.momentum[i] = s[15 + i];
+  holdWork_ = s[18];
+  for (int i = 0; i < 3; ++i) reactionForce_[i] = s[19 + i], reactionMoment_[i] = s[22 + i];
   for (int k = 0; k < 9; ++k) rotation_.R[k] = s[6 + k];
 }
 

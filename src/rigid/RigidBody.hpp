@@ -5,13 +5,25 @@
 // Every rank holds the whole body; the forces on its nodes are summed over the ranks by the
 // caller (docs/theory/rigid-bodies.md).
 #pragma once
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rigid/MassProperties.hpp"
 #include "rigid/RotationStep.hpp"
 
 namespace choc {
+
+// A body's held motion: the components `translation` of its centre's velocity kept at
+// `velocity` [m/s], and with `rotation` its angular velocity kept at 0 (a guided striker, a
+// punch driven at a constant speed).
+struct RigidHold {
+  std::array<bool, 3> translation{};
+  bool rotation = false;
+  Vec3 velocity{};
+  bool any() const { return translation[0] || translation[1] || translation[2] || rotation; }
+};
 
 class RigidBody {
  public:
@@ -30,8 +42,17 @@ class RigidBody {
   void setMotion(const Vec3& velocity, const Vec3& angularVelocity);
 
   // Velocity Verlet: kick(F, T, h/2), drift(h), the forces at the new positions, kick(F, T, h/2).
-  // F the resultant force on the body, T its moment about the current centre of mass.
+  // F the resultant force on the body, T its moment about the current centre of mass. A held
+  // body's kick ends on its held motion: the hold's impulse over the kick (divided by h, the
+  // reaction) and its work (the impulse times the held velocity) are kept.
   void kick(const Vec3& force, const Vec3& torque, double h);
+  void setHold(const RigidHold& hold);
+  const RigidHold& hold() const { return hold_; }
+  // The force and moment the hold applied over the last kick (0 without a hold), and its work
+  // since the start [J].
+  const Vec3& reactionForce() const { return reactionForce_; }
+  const Vec3& reactionMoment() const { return reactionMoment_; }
+  double holdWork() const { return holdWork_; }
   void drift(double h);
   // alpha = I^-1 (T - w x pi), the angular acceleration under the moment T about the centre.
   Vec3 angularAcceleration(const Vec3& torque) const;
@@ -51,7 +72,8 @@ class RigidBody {
   // About the origin: x_c x m V + pi.
   Vec3 angularMomentum() const;
 
-  // The state for a checkpoint (18 numbers), and back (bit for bit).
+  // The state for a checkpoint (25 numbers: the motion's 18, the hold's work and reaction), and
+  // back (bit for bit).
   std::vector<double> state() const;
   void restore(const std::vector<double>& s);
 
@@ -60,6 +82,11 @@ class RigidBody {
   MassProperties p_;
   Vec3 centre_{}, velocity_{};
   RotationState rotation_;
+  RigidHold hold_;
+  Vec3 reactionForce_{}, reactionMoment_{};
+  double holdWork_ = 0.0;
+  // The held components set; returns the impulse and angular impulse that took.
+  std::pair<Vec3, Vec3> enforceHold();
 };
 
 }  // namespace choc

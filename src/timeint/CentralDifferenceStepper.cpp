@@ -47,7 +47,8 @@ void CentralDifferenceStepper::acceleration(const Vector& u, const Vector& vStar
   if (xop_.hasExplicitContact()) {
     uStar_->update(1.0, u, h, vStar, 0.0);
     uStar_->update(factor * h * h, a, 1.0);
-    xop_.addExplicitContact(u, *uStar_, *inverseMass_, h, factor * h * h, a);
+    if (rigid_) rigid_->predict(h, factor, *r_, *uStar_);
+    xop_.addExplicitContact(u, *uStar_, *inverseMass_, h, factor * h * h, a, *r_);
   }
 }
 
@@ -56,8 +57,9 @@ void CentralDifferenceStepper::start(double t0, double firstStep, TransientSumma
   sum.smallestStep = s_.timeStep / substeps_;
   op_.beginStep(*u_, t0, 0.0);
   op_.initializeConstraints(*u_);
+  if (rigid_) rigid_->start(*u_, *v_);
   acceleration(*u_, *v_, t0, 0.0, *a_, firstStep / substeps_, 0.5);
-  if (rigid_) rigid_->start(*u_, *r_, *v_, *a_);
+  if (rigid_) rigid_->accelerate(*r_, *a_);
   op_.commit();  // every explicit force is accepted: its trial states (links, material points) advance
   info.substep = firstStep / substeps_;
 }

@@ -301,6 +301,14 @@ choc_cli_input_error(rigid_modal check bad_rigid_modal.xml
   "parameter 'Model/Blocks/box/Rigid' = 'true': rigid blocks run in explicit transients only so far .issue 74., and Analyses/modes is a modal analysis")
 choc_cli_input_error(rigid_fixed_node check bad_rigid_fixed_node.xml
   "parameter 'Model/Blocks/box/Rigid' = 'true': its node 1 has component X fixed or inactive")
+choc_cli_input_error(rigid_held_not_rigid check bad_rigid_held_not_rigid.xml
+  "parameter 'Model/Blocks/POU2/Held' = 'DZ': holds the motion of a rigid body, and the block is not rigid. set 'Rigid' = true")
+choc_cli_input_error(rigid_held_rotation check bad_rigid_held_rotation.xml
+  "parameter 'Model/Blocks/POU1/Held' = 'DZ DRX': a rigid body's rotations are held together .its angular velocity kept at 0.. give all of DRX DRY DRZ, or none")
+choc_cli_input_error(rigid_held_velocity check bad_rigid_held_velocity.xml
+  "parameter 'Model/Blocks/POU1/Held Velocity' = '0.5 0 -1': gives a speed along X, whose component is not held. add DX to 'Held', or give 0 there")
+choc_cli_input_error(rigid_explicit_friction check bad_rigid_explicit_friction.xml
+  "parameter 'Analyses/strike/Contact/Method' = 'Lagrange': friction beside rigid blocks is not available in central differences so far .issue 74.. make the pairs frictionless")
 choc_cli_input_error(initial_missing_components check bad_initial_missing_components.xml
   "parameter 'Analyses/impact/Initial Conditions/bar 1/Components': is required with Field = 'Velocity'. add it")
 choc_cli_input_error(friction_cg check bad_friction_cg.xml

@@ -5,3 +5,7 @@ choc_cli_script(rigid_spin 300)
 # A rigid block dropped on a finite-strain slab with penalty contact (input/block_on_slab.xml's
 # scene): its momentum change is the contact's impulse, one impact, 1 and 2 ranks alike.
 choc_cli_script(rigid_drop 300)
+# Saint-Venant's problem (input/saint_venant.xml, BENCHMARKS section 15): a rigid mass strikes an
+# elastic bar with exactly enforced contact; the force, contact end and rebound against the
+# closed form for three mass ratios, the force's convergence, 1 and 2 ranks alike.
+choc_cli_script(saint_venant 300)

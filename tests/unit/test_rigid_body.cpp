@@ -87,6 +87,41 @@ TEST(RigidBody, AConstantForceMovesTheCentreOnItsParabolaExactly) {
   EXPECT_NEAR(norm(b.rotationVector()), 0.0, 1e-15);  // no moment: no turn
 }
 
+// A body held along z at a speed and with its rotation stopped, pushed by a force and a moment:
+// the held components keep their values, the free ones follow the force, the hold's reaction is
+// the opposite of the held part of the load, and its work is the reaction's impulse times the
+// held speed (W = -F_z t v_z for a steady push).
+TEST(RigidBody, AHeldBodyKeepsItsHeldMotionAndReportsTheHoldsReaction) {
+  RigidBody b = box();
+  b.setMotion({1.0, 0.0, 3.0}, {0.5, -0.2, 0.1});
+  RigidHold hold;
+  hold.translation = {false, false, true};
+  hold.rotation = true;
+  hold.velocity = {0.0, 0.0, -2.0};
+  b.setHold(hold);
+  EXPECT_EQ(b.centreVelocity()[2], -2.0);  // from the start
+  EXPECT_EQ(norm(b.angularVelocity()), 0.0);
+  const Vec3 F = {10.0, -4.0, 30.0}, T = {1.0, 2.0, -3.0};
+  const double h = 1e-3, m = b.mass();
+  const int steps = 200;
+  for (int n = 0; n < steps; ++n) {
+    b.kick(F, T, h / 2);
+    b.drift(h);
+    b.kick(F, T, h / 2);
+  }
+  const double t = steps * h;
+  EXPECT_EQ(b.centreVelocity()[2], -2.0);
+  EXPECT_EQ(norm(b.angularVelocity()), 0.0);
+  EXPECT_NEAR(b.centreVelocity()[0], 1.0 + F[0] / m * t, 1e-12);
+  EXPECT_NEAR(b.centreVelocity()[1], F[1] / m * t, 1e-12);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(b.reactionMoment()[k], -T[k], 1e-12) << k;
+  // the reaction m (v - (v + F h/2m)) / (h/2): the rounding of v + F h/2m, eps |v|, times 2m/h
+  EXPECT_NEAR(b.reactionForce()[2], -F[2], 4 * 2.2e-16 * 2.0 * m / (h / 2));
+  EXPECT_EQ(b.reactionForce()[0], 0.0);
+  EXPECT_NEAR(b.holdWork(), -F[2] * t * -2.0, 2 * steps * 4 * 2.2e-16 * 2.0 * m * 2.0);
+  EXPECT_NEAR(norm(b.rotationVector()), 0.0, 1e-15);
+}
+
 // Opposite forces at two corners: no resultant, a moment (x1 - x2) x f about any point; one kick
 // of h adds h times it to the angular momentum and nothing to the momentum.
 TEST(RigidBody, ACoupleTurnsTheBodyByItsMoment) {

@@ -1016,3 +1016,38 @@ def spin_deck(mesh, block, omega, centre, scheme, dt, end, strain="finite", law=
   </ParameterList></ParameterList>
 </ParameterList>
 """
+
+
+def saint_venant_run(choc, work, ratio, along=100, courant=0.96, ranks=1, striker_modulus=None, name=None):
+    """input/saint_venant.xml (BENCHMARKS section 15) run for the mass ratio rho A L / M = ratio
+    with `along` HEX8 along the 1 m bar (choc mesh; 100 is the committed mesh) at the step
+    courant x dz / c, until a tenth of a transit after the exact separation (a whole number of
+    steps). striker_modulus: the striker meshed elastic (its own Young's modulus, the same mass)
+    instead of rigid; the step is then the smaller of the bar's and the striker's transit times.
+    Returns (history, impacts (list of dicts), oracle SaintVenant, dz, dt, out_dir)."""
+    import csv
+    add_tool_path("oracles")
+    from saint_venant import SaintVenant
+    L, A, rho, E, v0, striker = 1.0, 4e-4, 7800.0, 2e11, 1.0, (0.05, 5)
+    c = math.sqrt(E / rho)
+    M = rho * A * L / ratio
+    sv = SaintVenant(L, A, rho, E, M, v0)
+    dz = L / along
+    density = M / (0.02 * 0.02 * striker[0])
+    step = dz / c if striker_modulus is None else min(dz / c, striker[0] / striker[1] / math.sqrt(striker_modulus / density))
+    dt = courant * step
+    d = load_deck(os.path.join(TOP, "input", "saint_venant.xml"))
+    if along != 100:
+        set_param(d, "Mesh/File", mesh(choc, os.path.join(work, f"bar{along}.exo"), "--dim", 3, "--axis", "z", "--gap", 0,
+                                       "--length1", striker[0], "--along1", striker[1], "--length2", L, "--along2", along))
+    set_params(d, {"Model/Materials/striker/Density": density, "Analyses/strike/Time Step": dt,
+                   "Analyses/strike/End Time": math.ceil((sv.duration + 0.1 * sv.T) / dt) * dt})
+    if striker_modulus is not None:
+        set_params(d, {"Model/Materials/striker/Young's Modulus": striker_modulus, "Model/Blocks/POU1/Rigid": False,
+                       "Model/Blocks/POU1/Mass": "lumped"}, create=True)
+    out = os.path.join(work, name or f"r{ratio}_n{along}_c{courant}_np{ranks}" + (f"_E{striker_modulus:g}" if striker_modulus else ""))
+    run(choc, write_deck(d, out + ".xml"), out, ranks=ranks)
+    require_completed(read_summary(out, "strike"))
+    with open(os.path.join(out, "strike.impacts.csv")) as f:
+        impacts = list(csv.DictReader(f))
+    return read_history(out, "strike"), impacts, sv, dz, dt, out
