@@ -46,6 +46,9 @@ gmsh -2 -order 2 -format msh41 -setnumber h 5e-4 -setnumber H 5e-4 "$here/hertz_
 # A slender cantilever (finite strain, the elastica): 16 x 2 x 1 HEX20 along a beam of L / h = 50.
 gmsh -3 -order 2 -format msh41 -setnumber nx 16 -setnumber hex 1 "$here/elastica_beam.geo" \
   -o "$here/elastica_beam_hex20.msh" > /dev/null
+# The same with 32 HEX20 along (input/elastica_moment.xml: the beam rolled into a ring).
+gmsh -3 -order 2 -format msh41 -setnumber nx 32 -setnumber hex 1 "$here/elastica_beam.geo" \
+  -o "$here/elastica_beam_hex20_32.msh" > /dev/null
 # The Taylor bar (plasticity): the axisymmetric rectangle, 8 x 81 QUAD4 of 0.4 mm.
 gmsh -2 -format msh41 "$here/taylor_bar_axisymmetric.geo" -o "$here/taylor_bar_axisymmetric.msh" > /dev/null
 gmsh -3 -format msh41 -setnumber n 4 "$here/taylor_bar_3d.geo" -o "$here/taylor_bar_3d.msh" > /dev/null

@@ -324,7 +324,7 @@ std::shared_ptr<InternalForce> DirectTransient::internalForce(Model& model) cons
   if (model.finiteStrain()) {
     auto f = std::make_shared<FiniteStrainForce>(model);
     if (b_->loads)
-      for (const auto& p : b_->loads->followers()) f->addFollowerPressure(p);
+      for (const auto& p : b_->loads->followers()) f->addStateLoad(p);
     return f;
   }
   return std::make_shared<LinearElasticForce>(b_->K);

@@ -63,6 +63,19 @@ void declarePressures(ParameterList& p, const char* ramp) {
   declareDouble(pr, "Ramp Time", 0.0, ramp, Range::nonNegative());
 }
 
+void declareCouplingLoads(ParameterList& p, const char* ramp) {
+  ParameterList& cl = declareNamedSublists(
+      p, "Coupling Loads",
+      "a force and a moment on a distributing coupling (Model/Couplings), spread over its nodes in their "
+      "current positions, by name");
+  declareRequiredString(cl, "Coupling", "name of an entry of Model/Couplings");
+  declareString(cl, "Force", "0 0 0", "force 'fx fy fz' [N] at the coupling's nodes' centroid (its direction fixed)");
+  declareString(cl, "Moment", "0 0 0",
+                "moment 'mx my mz' [N m] about the centroid (its direction fixed; a pure couple however the "
+                "nodes move)");
+  declareDouble(cl, "Ramp Time", 0.0, ramp, Range::nonNegative());
+}
+
 }  // namespace
 
 Teuchos::ParameterList DirectTransient::parameters() {
@@ -114,6 +127,7 @@ Teuchos::ParameterList DirectTransient::parameters() {
   declareRequiredDouble(nf, "Value", "force per node [N]");
   declareDouble(nf, "Ramp Time", 0.0, ramp, Range::nonNegative());
   declarePressures(p, ramp);
+  declareCouplingLoads(p, ramp);
   declareInitialConditions(p);
   declareTransientOutput(p);
   declareChecks(p);

@@ -174,6 +174,39 @@ RCP<Graph> patternGraph(const RCP<const Map>& map, long long first, int owned, c
 
 }  // namespace
 
+// The rows the springs (k d d^T on each node) and the coupled node groups (zero entries between
+// every DOF of a group) add after the elements: each as cols and vals, then visit(row).
+void Assembler::extraRows(const std::vector<NodalSpring>& springs, std::vector<GO>& cols, std::vector<double>& vals,
+                          const std::function<void(int)>& visit) const {
+  const int owned = dofs_.numOwned();
+  const long long first = dofs_.firstOwned();
+  for (const NodalSpring& sp : springs)
+    for (int i = 0; i < 3; ++i) {
+      const long long gi = dofs_.dof(sp.node, i);
+      if (gi < first || gi >= first + owned) continue;
+      cols.clear();
+      vals.clear();
+      for (int j = 0; j < 3; ++j) {
+        const long long gj = dofs_.dof(sp.node, j);
+        const double kij = sp.stiffness * sp.direction[i] * sp.direction[j];
+        if (gj >= 0 && kij != 0.0) cols.push_back(GO(gj)), vals.push_back(kij);
+      }
+      if (!cols.empty()) visit(int(gi - first));
+    }
+  for (const std::vector<int>& group : groups_)  // zero entries coupling every DOF of a group
+    for (int node : group)
+      for (int i = 0; i < 3; ++i) {
+        const long long gi = dofs_.dof(node, i);
+        if (gi < first || gi >= first + owned) continue;
+        cols.clear();
+        vals.clear();
+        for (int other : group)
+          for (int j = 0; j < 3; ++j)
+            if (dofs_.dof(other, j) >= 0) cols.push_back(GO(dofs_.dof(other, j))), vals.push_back(0.0);
+        if (!cols.empty()) visit(int(gi - first));
+      }
+}
+
 // Two passes over the elements, so that no element's entries are stored before they are summed
 // (storing them took 16 bytes per element entry, about 3 times the matrix): the first finds
 // each owned row's nonzero columns and makes the graph, the second sums the element matrices
@@ -204,19 +237,7 @@ RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<
         if (!cols.empty()) visit(int(gi - first));
       }
     });
-    for (const NodalSpring& sp : springs)
-      for (int i = 0; i < 3; ++i) {
-        const long long gi = dofs_.dof(sp.node, i);
-        if (gi < first || gi >= first + owned) continue;
-        cols.clear();
-        vals.clear();
-        for (int j = 0; j < 3; ++j) {
-          const long long gj = dofs_.dof(sp.node, j);
-          const double kij = sp.stiffness * sp.direction[i] * sp.direction[j];
-          if (gj >= 0 && kij != 0.0) cols.push_back(GO(gj)), vals.push_back(kij);
-        }
-        if (!cols.empty()) visit(int(gi - first));
-      }
+    extraRows(springs, cols, vals, visit);
   };
   const bool narrow = dofs_.numGlobal() <= (long long)std::numeric_limits<std::uint32_t>::max();
   if (graph.is_null())

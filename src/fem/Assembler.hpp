@@ -55,6 +55,9 @@ class Assembler {
             RCP<const Comm> comm);
 
   RCP<const Map> map() const { return map_; }
+  // Groups of nodes whose DOFs the stiffness' graph couples, each with every other of its group
+  // (zero entries: a coupling's load stiffness is added there). Before the first assembly.
+  void coupleNodes(std::vector<std::vector<int>> groups) { groups_ = std::move(groups); }
   // The elements' stiffness, plus the springs' k d d^T summed after them.
   RCP<CrsMatrix> stiffness(const std::vector<NodalSpring>& springs = {}) const;
   // The stiffness of the blocks not flagged in `skip` (one flag per mesh block) plus the
@@ -102,12 +105,15 @@ class Assembler {
     std::vector<Point3> x;
     std::vector<long long> gdof;
   };
+  void extraRows(const std::vector<NodalSpring>& springs, std::vector<GO>& cols, std::vector<double>& vals,
+                 const std::function<void(int)>& visit) const;
   // Calls fn for every element this rank computes, in global order (one LocalElement reused).
   void forEachElement(const std::function<void(const LocalElement&)>& fn) const;
 
   const Mesh& mesh_;
   const DofMap& dofs_;
   std::vector<BlockPhysics> blocks_;
+  std::vector<std::vector<int>> groups_;  // coupleNodes
   RCP<const Comm> comm_;
   RCP<const Map> map_;
   std::vector<int> elements_;

@@ -50,7 +50,8 @@ class FiniteStrainForce : public InternalForce {
     time_ = t;
     states_.startAt(t);
   }
-  void addFollowerPressure(std::shared_ptr<const FollowerPressure> p) { followers_.push_back(std::move(p)); }
+  // A load that depends on the state (a follower pressure, a coupling's load): its force and load stiffness.
+  void addStateLoad(std::shared_ptr<const StateLoad> p) { followers_.push_back(std::move(p)); }
   // 1/2 u.K_lin u + the elements' int W dV (each element counted on the rank owning its first node).
   double strainEnergy(const Vector& u, const Vector* internalForceAtU) const override;
   // || |K_lin| |u| + sum_e (|f_e| + its round-off) || (see the constructor: E = (C - I) / 2
@@ -122,7 +123,7 @@ class FiniteStrainForce : public InternalForce {
   int numElements_ = 0;
   bool threeD_ = true;
   long long version_ = 0;
-  std::vector<std::shared_ptr<const FollowerPressure>> followers_;
+  std::vector<std::shared_ptr<const StateLoad>> followers_;
   double time_ = 0.0;
   double tangentTime_ = 0.0;    // the time of KT_'s values (the followers' ramp)
   RCP<Vector> tangentAt_;       // the u of KT_'s values

@@ -88,89 +88,14 @@ void followerFaceForce(const Face& face, const PressureField& p, const std::vect
 
 FollowerPressure::FollowerPressure(std::string name, std::vector<Face> faces, PressureField p, double rampTime,
                                    bool axisymmetric, const DofMap& dofs, int components, const CrsMatrix& K)
-    : name_(std::move(name)), p_(p), rampTime_(rampTime), axisymmetric_(axisymmetric), colMap_(K.getColMap()),
-      importer_(K.getGraph()->getImporter()) {
-  if (!importer_.is_null()) uCol_ = rcp(new Vector(colMap_));
-  const Map& rows = *K.getRowMap();
-  const Map& cols = *K.getColMap();
-  const LO invalid = Teuchos::OrdinalTraits<LO>::invalid();
-  for (Face& f : faces) {
-    Loaded l{std::move(f), {}, {}};
-    bool mine = false;
-    for (int node : l.face.nodes)
-      for (int c = 0; c < 3; ++c) {
-        const long long d = c < components ? dofs.dof(node, c) : -1;
-        LO col = d < 0 ? LO(-1) : cols.getLocalElement(GO(d));
-        LO row = d < 0 ? LO(-1) : rows.getLocalElement(GO(d));
-        if (col == invalid) col = -1;
-        if (row == invalid) row = -1;
-        l.col.push_back(col);
-        l.row.push_back(row);
-        mine = mine || row >= 0;
-      }
-    if (mine) faces_.push_back(std::move(l));  // a face with a row here: all its DOFs are columns
-  }
+    : StateLoad(std::move(name), rampTime, dofs, components, K), p_(p), axisymmetric_(axisymmetric),
+      faces_(std::move(faces)) {
+  for (size_t k = 0; k < faces_.size(); ++k) addGroup(faces_[k].nodes, faces_[k].x, k);
 }
 
-double FollowerPressure::factor(double t) const { return rampFactor(rampTime_, t); }
-
-template <class Visit>
-void FollowerPressure::forEachFace(const Teuchos::ArrayRCP<const double>& uCol, bool withTangent, Visit&& visit) const {
-  std::vector<Point3> x;
-  std::vector<double> f;
-  DenseMatrix Kf;
-  for (const Loaded& l : faces_) {
-    x = l.face.x;
-    for (size_t a = 0; a < x.size(); ++a)
-      for (int c = 0; c < 3; ++c)
-        if (l.col[3 * a + size_t(c)] >= 0) x[a][size_t(c)] += uCol[l.col[3 * a + size_t(c)]];
-    followerFaceForce(l.face, p_, x, axisymmetric_, f, withTangent ? &Kf : nullptr);
-    visit(l, f, Kf);
-  }
-}
-
-void FollowerPressure::subtractForce(const Teuchos::ArrayRCP<const double>& uCol, double t,
-                                     Teuchos::ArrayRCP<double>& out) const {
-  const double lambda = factor(t);
-  if (lambda == 0.0) return;
-  forEachFace(uCol, false, [&](const Loaded& l, const std::vector<double>& f, const DenseMatrix&) {
-    for (size_t k = 0; k < l.row.size(); ++k)
-      if (l.row[k] >= 0) out[l.row[k]] -= lambda * f[k];
-  });
-}
-
-void FollowerPressure::addTangent(const Teuchos::ArrayRCP<const double>& uCol, double t, CrsMatrix& K) const {
-  const double lambda = factor(t);
-  if (lambda == 0.0) return;
-  std::vector<LO> cols;
-  std::vector<double> vals;
-  forEachFace(uCol, true, [&](const Loaded& l, const std::vector<double>&, const DenseMatrix& Kf) {
-    for (size_t i = 0; i < l.row.size(); ++i) {
-      if (l.row[i] < 0) continue;
-      cols.clear();
-      vals.clear();
-      for (size_t j = 0; j < l.col.size(); ++j)
-        if (l.col[j] >= 0) cols.push_back(l.col[j]), vals.push_back(-lambda * Kf(int(i), int(j)));
-      const LO found = K.sumIntoLocalValues(l.row[i], Teuchos::ArrayView<const LO>(cols), Teuchos::ArrayView<const double>(vals));
-      if (size_t(found) != cols.size())  // the faces are on finite-strain blocks, whose pattern is full
-        throw std::logic_error("follower pressure '" + name_ + "': load stiffness entries outside the stiffness' graph");
-    }
-  });
-}
-
-void FollowerPressure::addForce(const Vector& u, double t, Vector& out) const {
-  const double lambda = factor(t);
-  if (lambda == 0.0) return;
-  const Vector* onCols = &u;
-  if (!importer_.is_null()) {
-    uCol_->doImport(u, *importer_, Tpetra::INSERT);
-    onCols = uCol_.get();
-  }
-  auto o = out.getDataNonConst();
-  forEachFace(onCols->getData(), false, [&](const Loaded& l, const std::vector<double>& f, const DenseMatrix&) {
-    for (size_t k = 0; k < l.row.size(); ++k)
-      if (l.row[k] >= 0) o[l.row[k]] += lambda * f[k];
-  });
+void FollowerPressure::groupForce(const Group& g, const std::vector<Point3>& x, std::vector<double>& f,
+                                  DenseMatrix* K) const {
+  followerFaceForce(faces_[g.index], p_, x, axisymmetric_, f, K);
 }
 
 }  // namespace choc

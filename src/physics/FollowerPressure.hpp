@@ -25,6 +25,7 @@
 #include "contact/ContactFaces.hpp"
 #include "core/TpetraTypes.hpp"
 #include "fem/DenseMatrix.hpp"
+#include "physics/StateLoad.hpp"
 
 namespace choc {
 
@@ -42,37 +43,20 @@ struct PressureField {
 void followerFaceForce(const Face& face, const PressureField& p, const std::vector<Point3>& x, bool axisymmetric,
                        std::vector<double>& force, DenseMatrix* K);
 
-class FollowerPressure {
+class FollowerPressure : public StateLoad {
  public:
   // faces of the side set `name`; K: the model's stiffness (its row and column maps, whose
   // columns hold every DOF of a face touching a row this rank owns).
   FollowerPressure(std::string name, std::vector<Face> faces, PressureField p, double rampTime, bool axisymmetric,
                    const DofMap& dofs, int components, const CrsMatrix& K);
-  const std::string& name() const { return name_; }
-  double rampTime() const { return rampTime_; }
-  double factor(double t) const;
-  // out (rows) -= lambda(t) f(u), u on the column map.
-  void subtractForce(const Teuchos::ArrayRCP<const double>& uCol, double t, Teuchos::ArrayRCP<double>& out) const;
-  // K += lambda(t) (-df/du) on the rows this rank owns (K open for fill).
-  void addTangent(const Teuchos::ArrayRCP<const double>& uCol, double t, CrsMatrix& K) const;
-  // out += lambda(t) f(u), u on the row map (imported here).
-  void addForce(const Vector& u, double t, Vector& out) const;
+
+ protected:
+  void groupForce(const Group& g, const std::vector<Point3>& x, std::vector<double>& f, DenseMatrix* K) const override;
 
  private:
-  struct Loaded {
-    Face face;
-    std::vector<LO> col, row;  // per face DOF (3 per node): -1 where fixed, not a DOF or not owned
-  };
-  template <class Visit>
-  void forEachFace(const Teuchos::ArrayRCP<const double>& uCol, bool withTangent, Visit&& visit) const;
-  std::string name_;
   PressureField p_;
-  double rampTime_;
   bool axisymmetric_;
-  std::vector<Loaded> faces_;
-  RCP<const Map> colMap_;
-  RCP<const Tpetra::Import<LO, GO>> importer_;
-  RCP<Vector> uCol_;  // scratch: u on the column map (made once)
+  std::vector<Face> faces_;
 };
 
 }  // namespace choc

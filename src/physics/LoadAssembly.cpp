@@ -1,5 +1,5 @@
-// The loads of a transient from its input (Analyses/<name>/Nodal Forces and Pressures), each a
-// load group of Loads.hpp.
+// The loads of a transient from its input (Analyses/<name>/Nodal Forces, Pressures and Coupling
+// Loads), each a load group of Loads.hpp or a state load.
 #include "physics/LoadAssembly.hpp"
 
 #include <Tpetra_Vector.hpp>
@@ -7,6 +7,7 @@
 #include "core/Errors.hpp"
 #include "fem/Components.hpp"
 #include "input/Vector3.hpp"
+#include "physics/CouplingLoad.hpp"
 
 namespace choc {
 
@@ -36,6 +37,37 @@ std::shared_ptr<const FollowerPressure> followerPressure(Model& model, const Teu
   return std::make_shared<FollowerPressure>(name, std::move(faces), field, q.get<double>("Ramp Time"),
                                             model.kinematics() == Kinematics::Axisymmetric, model.dofs(),
                                             components, *model.stiffness());
+}
+
+// The load on a coupling (Coupling Loads/<name>): a state load on finite-strain models (the
+// forces follow the nodes), else the same forces on the reference positions (a dead load).
+void addCouplingLoad(Model& model, Loads& loads, const Teuchos::ParameterList& q, const std::string& inputFile,
+                     const std::string& key) {
+  const std::string name = key.substr(key.rfind('/') + 1), which = q.get<std::string>("Coupling");
+  const ModelCoupling* c = model.coupling(which);
+  if (!c) throwInput(inputFile, key + "/Coupling", which, "no entry of Model/Couplings of that name",
+                     "name a coupling of Model/Couplings, or add one there");
+  const Vec3 F = parseVector3(q.get<std::string>("Force"), inputFile, key + "/Force");
+  const Vec3 M = parseVector3(q.get<std::string>("Moment"), inputFile, key + "/Moment");
+  std::vector<Point3> X;
+  for (int n : c->nodes) X.push_back(model.mesh().coords[size_t(n)]);
+  std::vector<double> f;
+  try {
+    couplingForce(X, F, M, f, nullptr);
+  } catch (const std::invalid_argument& e) {
+    throwInput(inputFile, key + "/Moment", q.get<std::string>("Moment"), std::string("coupling '") + which + "': " + e.what(),
+               "couple nodes that span a face, or give no moment");
+  }
+  if (!model.firstFiniteStrainBlock().empty()) {
+    loads.addFollower(std::make_shared<CouplingLoad>(name, c->nodes, model.mesh(), F, M, q.get<double>("Ramp Time"),
+                                                     model.dofs(), 3, *model.stiffness()));
+    return;
+  }
+  auto force = rcp(new Vector(model.map()));
+  for (size_t i = 0; i < c->nodes.size(); ++i)
+    if (model.dofs().ownsNode(c->nodes[i]))
+      for (int d = 0; d < 3; ++d) force->sumIntoGlobalValue(GO(model.dof(c->nodes[i], d)), f[3 * i + size_t(d)]);
+  loads.add({name, force, q.get<double>("Ramp Time")});
 }
 
 }  // namespace
@@ -86,6 +118,9 @@ std::shared_ptr<const Loads> assembleLoads(Model& model, const Teuchos::Paramete
     }
     loads->add({pr.name(it), force, q.get<double>("Ramp Time")});
   }
+  const Teuchos::ParameterList& cl = analysis.sublist("Coupling Loads");
+  for (auto it = cl.begin(); it != cl.end(); ++it)
+    addCouplingLoad(model, *loads, cl.sublist(cl.name(it)), inputFile, path("Coupling Loads/" + cl.name(it)));
   if (loads->empty()) return nullptr;
   return loads;
 }

@@ -32,7 +32,7 @@ class Loads {
  public:
   // A group with the ramp time of an earlier one is summed into it (one vector per ramp).
   void add(LoadGroup g);
-  void addFollower(std::shared_ptr<const FollowerPressure> f) { followers_.push_back(std::move(f)); }
+  void addFollower(std::shared_ptr<const StateLoad> f) { followers_.push_back(std::move(f)); }
   bool empty() const { return groups_.empty() && followers_.empty(); }
   // Some group ramps: the loads depend on time.
   bool ramped() const {
@@ -43,13 +43,13 @@ class Loads {
     return false;
   }
   const std::vector<LoadGroup>& groups() const { return groups_; }
-  const std::vector<std::shared_ptr<const FollowerPressure>>& followers() const { return followers_; }
+  const std::vector<std::shared_ptr<const StateLoad>>& followers() const { return followers_; }
   // out -= f(t).
   void subtractFrom(double t, Vector& out) const;
 
  private:
   std::vector<LoadGroup> groups_;
-  std::vector<std::shared_ptr<const FollowerPressure>> followers_;
+  std::vector<std::shared_ptr<const StateLoad>> followers_;
 };
 
 // The loads' work from the start: for each group, the trapezoidal rule in time on its factor

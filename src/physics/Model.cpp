@@ -82,6 +82,7 @@ Model::Model(const Teuchos::ParameterList& input, const std::string& inputFile,
   } catch (const std::invalid_argument& e) {
     throwInput(inputFile_, "Mesh/File", meshFile, e.what());
   }
+  readCouplings(model.sublist("Couplings"));
 }
 
 // Reads 'Mesh/File' (relative to the input file); returns its path.
@@ -262,6 +263,40 @@ void Model::readSprings(const Teuchos::ParameterList& springs) {
     for (double& c : d) c /= len;
     for (int n : ns.nodes) springs_.push_back({n, d, s.get<double>("Stiffness")});
   }
+}
+
+// Model/Couplings: each node set's nodes, every component of each an unknown (a load spread on a
+// fixed component would go to the support); the stiffness' graph couples them.
+void Model::readCouplings(const Teuchos::ParameterList& couplings) {
+  std::vector<std::vector<int>> groups;
+  const int components = int(spatialComponents(mesh_.dimension).size());
+  for (auto it = couplings.begin(); it != couplings.end(); ++it) {
+    const std::string path = "Model/Couplings/" + couplings.name(it);
+    const Teuchos::ParameterList& c = couplings.sublist(couplings.name(it));
+    const std::string set = c.get<std::string>("Node Set");
+    const NodeSet& ns = nodeSet(set, path + "/Node Set");
+    if (kinematics_ != Kinematics::ThreeD)
+      throwInput(inputFile_, path + "/Type", c.get<std::string>("Type"), "couplings are 3D only so far (issue 74)",
+                 "model the part in 3D, or load its nodes with Nodal Forces");
+    if (ns.nodes.empty())
+      throwInput(inputFile_, path + "/Node Set", set, "the node set is empty", "give a node set with the coupled nodes");
+    for (int n : ns.nodes)
+      for (int k = 0; k < components; ++k)
+        if (dofs_->dof(n, k) < 0)
+          throwInput(inputFile_, path + "/Node Set", set,
+                     "its node " + std::to_string(n + 1) + " has component " + std::string(1, "XYZ"[k]) +
+                         " fixed or inactive (the load spread on it would go to the support)",
+                     "couple free nodes only: remove them from the Dirichlet sets, or from the coupling's set");
+    couplings_.push_back({couplings.name(it), ns.nodes});
+    groups.push_back(ns.nodes);
+  }
+  assembler_->coupleNodes(std::move(groups));
+}
+
+const ModelCoupling* Model::coupling(const std::string& name) const {
+  for (const ModelCoupling& c : couplings_)
+    if (c.name == name) return &c;
+  return nullptr;
 }
 
 // The DOF map on the ranks: Zoltan2 RCB parts (the default), or ranges of the mesh's

@@ -20,6 +20,12 @@
 
 namespace choc {
 
+// A coupling of a node set (Model/Couplings/<name>): its nodes, each with every component free.
+struct ModelCoupling {
+  std::string name;
+  std::vector<int> nodes;
+};
+
 class MaterialLaw;
 
 class Model {
@@ -75,6 +81,8 @@ class Model {
   const NodeSet& nodeSet(const std::string& name, const std::string& parameter) const;
   // The mesh blocks declared rigid ('Model/Blocks/<name>/Rigid'), by index.
   const std::vector<int>& rigidBlocks() const { return rigidBlocks_; }
+  // Model/Couplings by name (null: none of that name).
+  const ModelCoupling* coupling(const std::string& name) const;
   // The held motion of the k-th rigid block (Model/Blocks/<name>/Held).
   const RigidHold& rigidHold(size_t k) const { return rigidHolds_[k]; }
   // Global DOF of (node, comp); -1 when that component is fixed or not carried.
@@ -100,6 +108,7 @@ class Model {
   void checkOnePoint(const ElementBlock& blk, bool elementByElement) const;
   void checkElementGeometry(const std::vector<BlockPhysics>& physics, const std::string& meshParameter) const;
   void readSprings(const Teuchos::ParameterList& springs);
+  void readCouplings(const Teuchos::ParameterList& couplings);
   void buildDofMap(std::vector<std::uint8_t> mask, const std::string& method);
 
   std::string inputFile_;
@@ -110,6 +119,7 @@ class Model {
   std::unique_ptr<DofMap> dofs_;
   std::unique_ptr<Assembler> assembler_;
   std::vector<NodalSpring> springs_;  // Model/Springs, one per node
+  std::vector<ModelCoupling> couplings_;  // Model/Couplings
   RCP<const CrsMatrix> K_, M_;
   std::vector<std::shared_ptr<const FiniteStrainSolid>> finite_;
   std::vector<std::shared_ptr<const ElementKernel>> kernels_;

@@ -101,6 +101,16 @@ void declareSpringParameters(ParameterList& model) {
   declareRequiredDouble(spr, "Stiffness", "stiffness of each node's spring [N/m]", Range::positive());
 }
 
+void declareCouplingParameters(ParameterList& model) {
+  ParameterList& cpl = declareNamedSublists(model, "Couplings",
+                                            "couplings of a node set to its centroid, by name: the 'Coupling "
+                                            "Loads' of a direct transient act on them");
+  declareChoice(cpl, "Type", "distributing", {"distributing"},
+                "'distributing' (RBE3-like): a force and moment spread over the nodes by equal weights in "
+                "their current positions, without stiffening them (a kinematic coupling is to come)");
+  declareRequiredString(cpl, "Node Set", "the coupled nodes (each with every component free)");
+}
+
 void declareModelParameters(ParameterList& top) {
   ParameterList& model = declareSublist(top, "Model", "materials, element blocks, supports");
   declareChoice(model, "Kinematics", "3D", {"3D", "plane strain", "axisymmetric"},
@@ -120,6 +130,7 @@ void declareModelParameters(ParameterList& top) {
   declareBlockParameters(model);
   declareDirichletParameters(model);
   declareSpringParameters(model);
+  declareCouplingParameters(model);
 }
 
 }  // namespace

@@ -307,6 +307,12 @@ choc_cli_input_error(rigid_held_rotation check bad_rigid_held_rotation.xml
   "parameter 'Model/Blocks/POU1/Held' = 'DZ DRX': a rigid body's rotations are held together .its angular velocity kept at 0.. give all of DRX DRY DRZ, or none")
 choc_cli_input_error(rigid_held_velocity check bad_rigid_held_velocity.xml
   "parameter 'Model/Blocks/POU1/Held Velocity' = '0.5 0 -1': gives a speed along X, whose component is not held. add DX to 'Held', or give 0 there")
+choc_cli_input_error(coupling_unknown check bad_coupling_unknown.xml
+  "parameter 'Analyses/bend/Coupling Loads/end moment/Coupling' = 'tip': no entry of Model/Couplings of that name. name a coupling of Model/Couplings")
+choc_cli_input_error(coupling_fixed_node check bad_coupling_fixed_node.xml
+  "parameter 'Model/Couplings/end/Node Set' = 'CLAMPED': its node 1 has component X fixed or inactive .the load spread on it would go to the support.")
+choc_cli_input_error(coupling_line check bad_coupling_line.xml
+  "parameter 'Analyses/bend/Coupling Loads/end moment/Moment' = '0 0 16755.160819145563': coupling 'end': its nodes lie on one line: a moment cannot be spread over them")
 choc_cli_input_error(rigid_explicit_friction check bad_rigid_explicit_friction.xml
   "parameter 'Analyses/strike/Contact/Method' = 'Lagrange': friction beside rigid blocks is not available in central differences so far .issue 74.. make the pairs frictionless")
 choc_cli_input_error(initial_missing_components check bad_initial_missing_components.xml

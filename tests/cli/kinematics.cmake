@@ -38,6 +38,10 @@ choc_cli_script(thick_sphere 450)
 # against the elastica's closed forms): the tip converges at order >= 2 and the finest mesh is
 # within twice its Richardson estimate plus beam theory's 2 (h/L)^2 (scripts/elastica.py).
 choc_cli_script(elastica 400)
+# The end-moment elastica (BENCHMARKS section 16): the same beam rolled into a ring by a pure end
+# moment through a distributing coupling (input/elastica_moment.xml, 32 and 64 HEX20 along): the tip
+# on the circle of radius EI/M within 0.5 % of L at every step, 1 and 2 ranks alike.
+choc_cli_script(elastica_moment 300)
 
 # Plasticity: a thick-walled elastic-perfectly plastic sphere (J2, small strain) pressurized until
 # the plastic front reaches 0.8 of the wall, axisymmetric (QUAD8, 2 to 16 across) and 3D (TET10

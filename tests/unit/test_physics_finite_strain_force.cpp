@@ -71,7 +71,7 @@ TEST(FiniteStrainForce, TangentWithAFollowerPressureMatchesFiniteDifferencesOnAB
   p.gradient = {0.0, 3e10, 0.0};
   auto follower = std::make_shared<FollowerPressure>("end", facesOf(m.mesh(), "END"), p, 10.0, false, m.dofs(), 3,
                                                      *m.stiffness());
-  force->addFollowerPressure(follower);
+  force->addStateLoad(follower);
   force->setTime(4.0);  // 0.4 of the ramp
   const int n = int(m.map()->getGlobalNumElements());
   const std::vector<double> u0 = bentAndTurned(m);
