@@ -50,8 +50,9 @@ void declareBlockParameters(ParameterList& model) {
   declareBool(blk, "Rigid", false,
               "true: the block moves as one rigid body (its mass, centre and inertia from its elements "
               "and density; its elements carry no stress; the forces on its nodes move it): explicit "
-              "transients ('Scheme' = 'central differences') in 3D, its nodes shared with no other "
-              "block and all free, no initial displacement (docs/theory/rigid-bodies.md; issue 74)");
+              "transients ('Scheme' = 'central differences') in 3D; nodes it shares with a deformable "
+              "block (of solids) move with it, their mass from that block added to it; its nodes all "
+              "free, no initial displacement (docs/theory/rigid-bodies.md; issue 74)");
   declareString(blk, "Held", "",
                 "a rigid block's held motion: the components of its centre's velocity kept at 'Held "
                 "Velocity' (some of DX DY DZ) and its rotation stopped (DRX DRY DRZ, together), from the "

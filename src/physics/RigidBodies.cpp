@@ -1,5 +1,6 @@
 #include "physics/RigidBodies.hpp"
 
+#include <algorithm>
 #include <set>
 #include <stdexcept>
 
@@ -7,6 +8,8 @@
 #include <Tpetra_Vector.hpp>
 
 #include "core/Errors.hpp"
+#include "fem/DenseMatrix.hpp"
+#include "fem/ElementKernel.hpp"
 #include "fem/ShapeFunctions.hpp"
 #include "physics/Model.hpp"
 #include "restart/StateArchive.hpp"
@@ -23,18 +26,52 @@ std::string rigidKey(const Model& model, int block) { return "Model/Blocks/" + m
 // The nodes of a block's elements.
 std::set<int> blockNodes(const ElementBlock& blk) { return std::set<int>(blk.connectivity.begin(), blk.connectivity.end()); }
 
-// A rigid block's nodes are its body's alone: no element of another block shares one.
-void checkNodesOwnedByTheBody(const Model& model, int block, const std::set<int>& nodes) {
+// Which body moves each mesh node (-1: none). Two rigid blocks share no node: they would be one body.
+std::vector<int> bodyOfNodes(const Model& model) {
   const Mesh& mesh = model.mesh();
-  for (size_t b = 0; b < mesh.blocks.size(); ++b) {
-    if (int(b) == block) continue;
-    for (int n : mesh.blocks[b].connectivity)
-      if (nodes.count(n))
-        throwInput(model.inputFile(), rigidKey(model, block), "true",
-                   "its node " + std::to_string(n + 1) + " is also a node of block '" + mesh.blocks[b].name +
-                       "' (a rigid block shares no node with another block so far: issue 74's couplings will tie them)",
-                   "mesh the parts apart and let contact join them, or declare both blocks rigid as one block");
+  std::vector<int> body(size_t(mesh.numNodes()), -1);
+  const std::vector<int>& rigid = model.rigidBlocks();
+  for (size_t k = 0; k < rigid.size(); ++k)
+    for (int n : mesh.blocks[size_t(rigid[k])].connectivity) {
+      if (body[size_t(n)] >= 0 && body[size_t(n)] != int(k))
+        throwInput(model.inputFile(), rigidKey(model, rigid[k]), "true",
+                   "its node " + std::to_string(n + 1) + " is also a node of the rigid block '" +
+                       mesh.blocks[size_t(rigid[size_t(body[size_t(n)])])].name + "' (two bodies cannot share a node)",
+                   "declare the two blocks as one rigid block, or mesh them apart");
+      body[size_t(n)] = int(k);
+    }
+  return body;
+}
+
+// Per body, the lumped mass that the elements of deformable blocks give its nodes (the nodes a
+// rigid block shares with them move with the body, and so does that mass), as point masses at
+// the nodes: each of `elements` (this rank's share) summed once.
+std::vector<std::vector<std::pair<Vec3, double>>> sharedNodeMasses(const Model& model, const std::vector<int>& body,
+                                                                   const std::vector<int>& elements) {
+  const Mesh& mesh = model.mesh();
+  std::vector<std::vector<std::pair<Vec3, double>>> out(model.rigidBlocks().size());
+  DenseMatrix Me;
+  std::vector<Point3> x;
+  for (int ge : elements) {
+    const auto [b, e] = mesh.locateElement(ge);
+    const ElementBlock& blk = mesh.blocks[size_t(b)];
+    const ElementKernel* kernel = model.elementKernel(b);
+    if (!kernel || std::count(model.rigidBlocks().begin(), model.rigidBlocks().end(), b)) continue;
+    const int* conn = &blk.connectivity[size_t(e) * size_t(blk.nodesPerElement)];
+    const int* tied = std::find_if(conn, conn + blk.nodesPerElement, [&](int n) { return body[size_t(n)] >= 0; });
+    if (tied == conn + blk.nodesPerElement) continue;
+    x.clear();
+    for (int a = 0; a < blk.nodesPerElement; ++a) x.push_back(mesh.coords[size_t(conn[a])]);
+    const int nc = int(kernel->components().size());
+    if (nc > 3)
+      throwInput(model.inputFile(), rigidKey(model, model.rigidBlocks()[size_t(body[size_t(*tied)])]), "true",
+                 "it shares nodes with the beams of block '" + blk.name + "', whose rotations a rigid block does not hold so far",
+                 "mesh the beams apart and join them otherwise, or make the part deformable");
+    kernel->mass(x, MassKind::Lumped, Me);
+    for (int a = 0; a < blk.nodesPerElement; ++a)
+      if (body[size_t(conn[a])] >= 0) out[size_t(body[size_t(conn[a])])].push_back({x[size_t(a)], Me(a * nc, a * nc)});
   }
+  return out;
 }
 
 }  // namespace
@@ -60,6 +97,8 @@ RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)
     if (model.dofs().ownerOfNode(blk.connectivity[size_t(e) * size_t(blk.nodesPerElement)]) == comm_->getRank())
       elements.push_back(ge);
   }
+  const std::vector<int> bodyOfNode = bodyOfNodes(model);
+  const auto shared = sharedNodeMasses(model, bodyOfNode, elements);
   for (int block : model.rigidBlocks()) {
     if (model.kinematics() != Kinematics::ThreeD)
       throwInput(model.inputFile(), rigidKey(model, block), "true", "rigid blocks are 3D only so far (issue 74)",
@@ -70,12 +109,11 @@ RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)
                  "its elements are " + mesh.blocks[size_t(block)].topology + ": rigid blocks are solids so far",
                  "mesh the part with solid elements");
     const std::set<int> nodes = blockNodes(mesh.blocks[size_t(block)]);
-    checkNodesOwnedByTheBody(model, block, nodes);
     const int body = int(bodies_.size());
     keys_.push_back(rigidKey(model, block));
     try {  // no mass (a zero density), or no inertia about an axis: the same on every rank
       const MassProperties p = blockMassProperties(mesh, {block}, {model.materialOfBlock(block).density},
-                                                   model.kinematics(), elements, *comm_);
+                                                   model.kinematics(), elements, *comm_, shared[size_t(body)]);
       bodies_.emplace_back(mesh.blocks[size_t(block)].name, p);
       bodies_.back().setHold(model.rigidHold(size_t(body)));
     } catch (const std::invalid_argument& e) {

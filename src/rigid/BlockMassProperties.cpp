@@ -10,7 +10,8 @@ namespace choc {
 
 MassProperties blockMassProperties(const Mesh& mesh, const std::vector<int>& blocks,
                                    const std::vector<double>& densities, Kinematics kinematics,
-                                   const std::vector<int>& elements, const Comm& comm) {
+                                   const std::vector<int>& elements, const Comm& comm,
+                                   const std::vector<std::pair<Vec3, double>>& points) {
   if (blocks.size() != densities.size()) throw std::invalid_argument("blockMassProperties: one density per block");
   int first = -1;
   for (int b : blocks)
@@ -32,6 +33,7 @@ MassProperties blockMassProperties(const Mesh& mesh, const std::vector<int>& blo
       x[size_t(a)] = mesh.coords[size_t(blk.connectivity[size_t(local * blk.nodesPerElement + a)])];
     sum.addElement(solidTopology(blk.topology), kinematics, x, densities[k]);
   }
+  for (const auto& [p, m] : points) sum.addPoint(p, m);
   const std::vector<double> mine = sum.sums();
   std::vector<double> all(mine.size());
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, int(mine.size()), mine.data(), all.data());

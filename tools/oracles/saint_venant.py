@@ -13,6 +13,8 @@ interval, exactly (polynomials, no time stepping):
 Contact ends at the first zero of sigma (found by bisection to 1e-14 T); the mass then leaves
 at V there, and the bar keeps the energy 1/2 M (v0^2 - V^2).
 
+With bonded=True the mass is tied to the end (the same equations, no separation).
+
 Used as a module (SaintVenant) by tests/cli/scripts/saint_venant.py; as a script it prints the
 contact duration, rebound velocity and energy left for the mass ratios rho A L / M = 0.5, 1, 2.
 """
@@ -23,7 +25,7 @@ from numpy.polynomial import Polynomial as P
 
 
 class SaintVenant:
-    def __init__(self, L, A, rho, E, M, v0, intervals=40):
+    def __init__(self, L, A, rho, E, M, v0, intervals=40, bonded=False):
         self.L, self.A, self.rho, self.E, self.M, self.v0 = L, A, rho, E, M, v0
         self.c = math.sqrt(E / rho)
         self.Z = rho * self.c * A
@@ -36,7 +38,8 @@ class SaintVenant:
             rate = prev.deriv() - 2 * self.beta * prev
             self.P.append(rate.integ(lbnd=0, k=start))
         # an infinite mass (a punch driven at v0): the end's stress rho c v0 (2k + 1), no separation
-        self.duration = self._separation() if math.isfinite(M) else math.inf
+        # bonded: the mass is tied to the end (it never leaves, the end's stress may turn to tension)
+        self.duration = self._separation() if math.isfinite(M) and not bonded else math.inf
 
     def _pieces(self, t):
         k = int(t // self.T)
