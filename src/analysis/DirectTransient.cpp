@@ -232,6 +232,7 @@ void DirectTransient::setupExplicit(const Model& model) {
                "friction beside rigid blocks is not available in central differences so far (issue 74)",
                "make the pairs frictionless ('Friction Coefficient' = 0)");
   b_->rigid = std::make_shared<RigidBodies>(model, *b_->explicitPlan->massDiagonal);
+  b_->rigid->setGravity(parseVector3(params_.get<std::string>("Gravity"), inputFile_, path("Gravity")));
   if (increments) increments->moveWithBodies(b_->rigid.get());
   b_->rigid->zeroRows(*b_->explicitPlan->inverseMass);
   auto withoutRigid = rcp(new Vector(*b_->explicitPlan->massDiagonal, Teuchos::Copy));

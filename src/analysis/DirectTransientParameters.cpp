@@ -128,6 +128,10 @@ Teuchos::ParameterList DirectTransient::parameters() {
   declareDouble(nf, "Ramp Time", 0.0, ramp, Range::nonNegative());
   declarePressures(p, ramp);
   declareCouplingLoads(p, ramp);
+  declareString(p, "Gravity", "0 0 0",
+                "the acceleration of gravity 'gx gy gz' [m/s^2] (e.g. '0 0 -9.81'): the body force rho g on every "
+                "block from t = 0 (the mass matrix times g on deformable blocks, m g at the centre of each rigid "
+                "body), its work in the energy balance");
   declareInitialConditions(p);
   declareTransientOutput(p);
   declareChecks(p);

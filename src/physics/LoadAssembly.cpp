@@ -70,6 +70,35 @@ void addCouplingLoad(Model& model, Loads& loads, const Teuchos::ParameterList& q
   loads.add({name, force, q.get<double>("Ramp Time")});
 }
 
+// Gravity on the deformable blocks: M g (M the model's mass: the consistent body force when it is
+// consistent), without the rows of rigid blocks' nodes (each body takes m g at its centre:
+// RigidBodies::setGravity). A 2D model takes g in its plane.
+void addGravity(Model& model, Loads& loads, const Vec3& g, const std::string& inputFile, const std::string& key,
+                const std::string& text) {
+  if (g[0] == 0.0 && g[1] == 0.0 && g[2] == 0.0) return;
+  const Mesh& mesh = model.mesh();
+  auto field = rcp(new Vector(model.map()));
+  const int components = int(spatialComponents(mesh.dimension).size());
+  if (components < 3 && g[2] != 0.0)
+    throwInput(inputFile, key, text, "a 2D model moves in the x-y plane", "give gravity with z = 0");
+  for (int n = 0; n < mesh.numNodes(); ++n) {
+    if (!model.dofs().ownsNode(n)) continue;
+    for (int c = 0; c < components; ++c)
+      if (model.dof(n, c) >= 0) field->replaceGlobalValue(GO(model.dof(n, c)), g[size_t(c)]);
+  }
+  auto force = rcp(new Vector(model.map()));
+  model.mass()->apply(*field, *force);
+  auto f = force->getDataNonConst();
+  for (int b : model.rigidBlocks())
+    for (int n : mesh.blocks[size_t(b)].connectivity)
+      for (int c = 0; c < components; ++c) {
+        const long long d = model.dof(n, c);
+        const LO row = d < 0 ? LO(-1) : model.map()->getLocalElement(GO(d));
+        if (d >= 0 && row != Teuchos::OrdinalTraits<LO>::invalid()) f[row] = 0.0;
+      }
+  loads.add({"gravity", force, 0.0});
+}
+
 }  // namespace
 
 // Nodal forces and pressures, each a load group (null when there are none).
@@ -118,6 +147,8 @@ std::shared_ptr<const Loads> assembleLoads(Model& model, const Teuchos::Paramete
     }
     loads->add({pr.name(it), force, q.get<double>("Ramp Time")});
   }
+  const std::string gravity = analysis.get<std::string>("Gravity");
+  addGravity(model, *loads, parseVector3(gravity, inputFile, path("Gravity")), inputFile, path("Gravity"), gravity);
   const Teuchos::ParameterList& cl = analysis.sublist("Coupling Loads");
   for (auto it = cl.begin(); it != cl.end(); ++it)
     addCouplingLoad(model, *loads, cl.sublist(cl.name(it)), inputFile, path("Coupling Loads/" + cl.name(it)));

@@ -137,6 +137,7 @@ RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)
   }
   force_.assign(bodies_.size(), Vec3{});
   torque_.assign(bodies_.size(), Vec3{});
+  for (const RigidBody& b : bodies_) startCentre_.push_back(b.centre());
 }
 
 void RigidBodies::zeroRows(Vector& x) const {
@@ -150,9 +151,11 @@ double RigidBodies::kineticEnergy() const {
   return e;
 }
 
-double RigidBodies::holdWork() const {
+// The holds' work, and gravity's m g . (c - c0) (exact: a constant force).
+double RigidBodies::externalWork() const {
   double w = 0.0;
-  for (const RigidBody& b : bodies_) w += b.holdWork();
+  for (size_t b = 0; b < bodies_.size(); ++b)
+    w += bodies_[b].holdWork() + bodies_[b].mass() * dot(gravity_, bodies_[b].centre() - startCentre_[b]);
   return w;
 }
 
@@ -185,7 +188,10 @@ void RigidBodies::gatherForces(const Vector& r) {
   if (!local.empty())
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, int(local.size()), local.data(), global.data());
   for (size_t b = 0; b < bodies_.size(); ++b)
-    for (int k = 0; k < 3; ++k) force_[b][size_t(k)] = global[6 * b + size_t(k)], torque_[b][size_t(k)] = global[6 * b + 3 + size_t(k)];
+    for (int k = 0; k < 3; ++k) {
+      force_[b][size_t(k)] = global[6 * b + size_t(k)] + bodies_[b].mass() * gravity_[size_t(k)];
+      torque_[b][size_t(k)] = global[6 * b + 3 + size_t(k)];
+    }
 }
 
 // x = c + r, r = R xi; u = x - X, v = V + w x r, a = A + alpha x r + w x (w x r): each body's

@@ -29,8 +29,10 @@ class RigidBodies : public RigidMotion, public ContactBodies, public Interaction
   // x's rows of the bodies' nodes set to 0 (their inverse mass: central differences leave them alone).
   void zeroRows(Vector& x) const;
   double kineticEnergy() const;
-  // The work of the held bodies' holds since the start [J] (external work).
-  double holdWork() const;
+  // Gravity g [m/s^2] on every body: m g at its centre, from the next forces on.
+  void setGravity(const Vec3& g) { gravity_ = g; }
+  // The work of the holds and of gravity on the bodies since the start [J] (external work).
+  double externalWork() const;
 
   void start(const Vector& u, Vector& v) override;
   void accelerate(const Vector& r, Vector& a) override;
@@ -67,7 +69,7 @@ class RigidBodies : public RigidMotion, public ContactBodies, public Interaction
     Matrix33 R;
   };
   Motion motionOf(size_t body) const;
-  // Each body's resultant and moment about its centre of the forces -r on its rows, summed
+  // Each body's resultant (with gravity's m g) and moment about its centre of the forces -r on its rows, summed
   // over the ranks.
   void gatherForces(const Vector& r);
   // The bodies' rows of u (displacement), v and a (each optional) where the bodies put them.
@@ -83,6 +85,8 @@ class RigidBodies : public RigidMotion, public ContactBodies, public Interaction
   };
   std::unordered_map<GO, DofOfBody> dofsOfBodies_;
   std::vector<Vec3> force_, torque_;
+  std::vector<Vec3> startCentre_;  // each body's centre at the start (gravity's work)
+  Vec3 gravity_{};
   RCP<const Comm> comm_;
   RCP<const Vector> lumpedMass_;
   std::string inputFile_;

@@ -195,7 +195,7 @@ void StructuralOperator::restore(const StateArchive& a) {
 }
 
 // The damping's and the moving obstacles' work by the trapezoidal rule on their power, the
-// loads' by LoadWork, the held rigid bodies' by their holds' impulses.
+// loads' by LoadWork, the rigid bodies' holds' and gravity's by RigidBodies.
 StateEnergies StructuralOperator::energies(const Vector& u, const Vector& v, const Vector& a, double time, double dt,
                                            double substep) {
   StateEnergies e;
@@ -216,7 +216,7 @@ StateEnergies StructuralOperator::energies(const Vector& u, const Vector& v, con
   work_.obstacles += 0.5 * dt * (work_.lastObstaclePower + obstaclePower);
   work_.lastObstaclePower = obstaclePower;
   e.external = work_.loadWork.update(u, time) + work_.obstacles +
-               (mass_.rigidBodies() ? mass_.rigidBodies()->holdWork() : 0.0);
+               (mass_.rigidBodies() ? mass_.rigidBodies()->externalWork() : 0.0);
   // Central differences: the part of the energy the scheme's conserved energy leaves out,
   // (h^2/8) a^T M a = (h^2/4) x "the kinetic energy of a".
   if (substep > 0) e.shadow = 0.25 * substep * substep * mass_.kineticEnergy(a);

@@ -313,6 +313,8 @@ choc_cli_input_error(coupling_fixed_node check bad_coupling_fixed_node.xml
   "parameter 'Model/Couplings/end/Node Set' = 'CLAMPED': its node 1 has component X fixed or inactive .the load spread on it would go to the support.")
 choc_cli_input_error(coupling_line check bad_coupling_line.xml
   "parameter 'Analyses/bend/Coupling Loads/end moment/Moment' = '0 0 16755.160819145563': coupling 'end': its nodes lie on one line: a moment cannot be spread over them")
+choc_cli_input_error(gravity_2d check bad_gravity_2d.xml
+  "parameter 'Analyses/lagrange/Gravity' = '0 0 -9.81': a 2D model moves in the x-y plane. give gravity with z = 0")
 choc_cli_input_error(rigid_explicit_friction check bad_rigid_explicit_friction.xml
   "parameter 'Analyses/strike/Contact/Method' = 'Lagrange': friction beside rigid blocks is not available in central differences so far .issue 74.. make the pairs frictionless")
 choc_cli_input_error(initial_missing_components check bad_initial_missing_components.xml

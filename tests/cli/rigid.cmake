@@ -9,3 +9,6 @@ choc_cli_script(rigid_drop 300)
 # elastic bar with exactly enforced contact; the force, contact end and rebound against the
 # closed form for three mass ratios, the force's convergence, 1 and 2 ranks alike.
 choc_cli_script(saint_venant 300)
+# Gravity: the rigid spinning box falls on its parabola with its spin unchanged and its energy
+# balanced; a bar stands under its own weight with the closed-form shortening (scripts/gravity.py).
+choc_cli_script(gravity 300)
