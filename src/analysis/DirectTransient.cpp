@@ -223,7 +223,7 @@ void DirectTransient::setupExplicit(const Model& model) {
   b_->explicitPlan = std::make_unique<ExplicitPlan>(planExplicit(
       {*b_->K, *b_->M, b_->strategy.get(), b_->links.get(), meshBound, s_.rayleighK, s_.rayleighM,
        s_.time.timeStep, s_.time.endTime - s_.time.startTime, s_.stability, s_.output.limits, inputFile_, "Analyses/" + name_}));
-  if (model.rigidBlocks().empty()) return;
+  if (!hasRigidBodies(model)) return;
   // Rigid blocks: their nodes' inverse mass 0 (the bodies move them), and their inertia the
   // bodies' own (the kinetic energy's diagonal without their rows).
   auto* increments = dynamic_cast<ForwardIncrementStrategy*>(b_->strategy.get());

@@ -44,7 +44,9 @@ std::shared_ptr<const FollowerPressure> followerPressure(Model& model, const Teu
 void addCouplingLoad(Model& model, Loads& loads, const Teuchos::ParameterList& q, const std::string& inputFile,
                      const std::string& key) {
   const std::string name = key.substr(key.rfind('/') + 1), which = q.get<std::string>("Coupling");
-  const ModelCoupling* c = model.coupling(which);
+  const ModelCoupling* c = nullptr;
+  for (const ModelCoupling& k : model.couplings())
+    if (k.name == which) c = &k;
   if (!c) throwInput(inputFile, key + "/Coupling", which, "no entry of Model/Couplings of that name",
                      "name a coupling of Model/Couplings, or add one there");
   const Vec3 F = parseVector3(q.get<std::string>("Force"), inputFile, key + "/Force");
@@ -58,6 +60,11 @@ void addCouplingLoad(Model& model, Loads& loads, const Teuchos::ParameterList& q
     throwInput(inputFile, key + "/Moment", q.get<std::string>("Moment"), std::string("coupling '") + which + "': " + e.what(),
                "couple nodes that span a face, or give no moment");
   }
+  if (c->kinematic && (M[0] != 0.0 || M[1] != 0.0 || M[2] != 0.0) && model.firstFiniteStrainBlock().empty())
+    throwInput(inputFile, key + "/Moment", q.get<std::string>("Moment"),
+               "a moment on a kinematic coupling of a small-strain model is not available so far (its forces would "
+               "stay where the turning nodes were)",
+               "set Strain = finite on a block, or give no moment");
   if (!model.firstFiniteStrainBlock().empty()) {
     loads.addFollower(std::make_shared<CouplingLoad>(name, c->nodes, model.mesh(), F, M, q.get<double>("Ramp Time"),
                                                      model.dofs(), 3, *model.stiffness()));
@@ -89,13 +96,17 @@ void addGravity(Model& model, Loads& loads, const Vec3& g, const std::string& in
   auto force = rcp(new Vector(model.map()));
   model.mass()->apply(*field, *force);
   auto f = force->getDataNonConst();
+  std::vector<int> bodies;  // the nodes rigid bodies move: rigid blocks' and kinematic couplings'
   for (int b : model.rigidBlocks())
-    for (int n : mesh.blocks[size_t(b)].connectivity)
-      for (int c = 0; c < components; ++c) {
-        const long long d = model.dof(n, c);
-        const LO row = d < 0 ? LO(-1) : model.map()->getLocalElement(GO(d));
-        if (d >= 0 && row != Teuchos::OrdinalTraits<LO>::invalid()) f[row] = 0.0;
-      }
+    bodies.insert(bodies.end(), mesh.blocks[size_t(b)].connectivity.begin(), mesh.blocks[size_t(b)].connectivity.end());
+  for (const ModelCoupling& c : model.couplings())
+    if (c.kinematic) bodies.insert(bodies.end(), c.nodes.begin(), c.nodes.end());
+  for (int n : bodies)
+    for (int c = 0; c < components; ++c) {
+      const long long d = model.dof(n, c);
+      const LO row = d < 0 ? LO(-1) : model.map()->getLocalElement(GO(d));
+      if (d >= 0 && row != Teuchos::OrdinalTraits<LO>::invalid()) f[row] = 0.0;
+    }
   loads.add({"gravity", force, 0.0});
 }
 

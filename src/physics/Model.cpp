@@ -287,16 +287,12 @@ void Model::readCouplings(const Teuchos::ParameterList& couplings) {
                      "its node " + std::to_string(n + 1) + " has component " + std::string(1, "XYZ"[k]) +
                          " fixed or inactive (the load spread on it would go to the support)",
                      "couple free nodes only: remove them from the Dirichlet sets, or from the coupling's set");
-    couplings_.push_back({couplings.name(it), ns.nodes});
-    groups.push_back(ns.nodes);
+    const bool kinematic = c.get<std::string>("Type") == "kinematic";
+    couplings_.push_back({couplings.name(it), ns.nodes, kinematic,
+                          rigidHoldOf(c, kinematic, inputFile_, path, "the coupling is distributing")});
+    if (!kinematic) groups.push_back(ns.nodes);  // its load stiffness couples them
   }
   assembler_->coupleNodes(std::move(groups));
-}
-
-const ModelCoupling* Model::coupling(const std::string& name) const {
-  for (const ModelCoupling& c : couplings_)
-    if (c.name == name) return &c;
-  return nullptr;
 }
 
 // The DOF map on the ranks: Zoltan2 RCB parts (the default), or ranges of the mesh's

@@ -24,6 +24,8 @@ namespace choc {
 struct ModelCoupling {
   std::string name;
   std::vector<int> nodes;
+  bool kinematic = false;  // Type = kinematic: the nodes move as one rigid body
+  RigidHold hold;          // a kinematic coupling's Held motion
 };
 
 class MaterialLaw;
@@ -81,8 +83,8 @@ class Model {
   const NodeSet& nodeSet(const std::string& name, const std::string& parameter) const;
   // The mesh blocks declared rigid ('Model/Blocks/<name>/Rigid'), by index.
   const std::vector<int>& rigidBlocks() const { return rigidBlocks_; }
-  // Model/Couplings by name (null: none of that name).
-  const ModelCoupling* coupling(const std::string& name) const;
+  // Model/Couplings.
+  const std::vector<ModelCoupling>& couplings() const { return couplings_; }
   // The held motion of the k-th rigid block (Model/Blocks/<name>/Held).
   const RigidHold& rigidHold(size_t k) const { return rigidHolds_[k]; }
   // Global DOF of (node, comp); -1 when that component is fixed or not carried.

@@ -106,10 +106,13 @@ void declareCouplingParameters(ParameterList& model) {
   ParameterList& cpl = declareNamedSublists(model, "Couplings",
                                             "couplings of a node set to its centroid, by name: the 'Coupling "
                                             "Loads' of a direct transient act on them");
-  declareChoice(cpl, "Type", "distributing", {"distributing"},
+  declareChoice(cpl, "Type", "distributing", {"distributing", "kinematic"},
                 "'distributing' (RBE3-like): a force and moment spread over the nodes by equal weights in "
-                "their current positions, without stiffening them (a kinematic coupling is to come)");
+                "their current positions, without stiffening them; 'kinematic' (RBE2-like): the nodes move "
+                "as one rigid body (their lumped mass its inertia; explicit 3D transients, as rigid blocks)");
   declareRequiredString(cpl, "Node Set", "the coupled nodes (each with every component free)");
+  declareString(cpl, "Held", "", "a kinematic coupling's held motion, as a rigid block's 'Held'");
+  declareString(cpl, "Held Velocity", "0 0 0", "a kinematic coupling's held speed, as a rigid block's 'Held Velocity'");
 }
 
 void declareModelParameters(ParameterList& top) {

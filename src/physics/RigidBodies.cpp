@@ -26,18 +26,42 @@ std::string rigidKey(const Model& model, int block) { return "Model/Blocks/" + m
 // The nodes of a block's elements.
 std::set<int> blockNodes(const ElementBlock& blk) { return std::set<int>(blk.connectivity.begin(), blk.connectivity.end()); }
 
-// Which body moves each mesh node (-1: none). Two rigid blocks share no node: they would be one body.
-std::vector<int> bodyOfNodes(const Model& model) {
-  const Mesh& mesh = model.mesh();
-  std::vector<int> body(size_t(mesh.numNodes()), -1);
-  const std::vector<int>& rigid = model.rigidBlocks();
-  for (size_t k = 0; k < rigid.size(); ++k)
-    for (int n : mesh.blocks[size_t(rigid[k])].connectivity) {
+// The key naming each body in messages: a rigid block's 'Rigid', a kinematic coupling's 'Type'.
+struct BodyKey {
+  std::string path, value;
+};
+
+std::vector<BodyKey> bodyKeys(const Model& model) {
+  std::vector<BodyKey> keys;
+  for (int b : model.rigidBlocks()) keys.push_back({rigidKey(model, b), "true"});
+  for (const ModelCoupling& c : model.couplings())
+    if (c.kinematic) keys.push_back({"Model/Couplings/" + c.name + "/Type", "kinematic"});
+  return keys;
+}
+
+// Each body's nodes: the rigid blocks' (in order), then the kinematic couplings'.
+std::vector<std::vector<int>> bodyNodes(const Model& model) {
+  std::vector<std::vector<int>> nodes;
+  for (int b : model.rigidBlocks()) {
+    const std::set<int> n = blockNodes(model.mesh().blocks[size_t(b)]);
+    nodes.emplace_back(n.begin(), n.end());
+  }
+  for (const ModelCoupling& c : model.couplings())
+    if (c.kinematic) nodes.push_back(c.nodes);
+  return nodes;
+}
+
+// Which body moves each mesh node (-1: none). Two bodies share no node: they would be one.
+std::vector<int> bodyOfNodes(const Model& model, const std::vector<std::vector<int>>& nodes,
+                             const std::vector<BodyKey>& keys) {
+  std::vector<int> body(size_t(model.mesh().numNodes()), -1);
+  for (size_t k = 0; k < nodes.size(); ++k)
+    for (int n : nodes[k]) {
       if (body[size_t(n)] >= 0 && body[size_t(n)] != int(k))
-        throwInput(model.inputFile(), rigidKey(model, rigid[k]), "true",
-                   "its node " + std::to_string(n + 1) + " is also a node of the rigid block '" +
-                       mesh.blocks[size_t(rigid[size_t(body[size_t(n)])])].name + "' (two bodies cannot share a node)",
-                   "declare the two blocks as one rigid block, or mesh them apart");
+        throwInput(model.inputFile(), keys[k].path, keys[k].value,
+                   "its node " + std::to_string(n + 1) + " is also a node of the body of " +
+                       keys[size_t(body[size_t(n)])].path + " (two bodies cannot share a node)",
+                   "make the two one rigid block, or keep their nodes apart");
       body[size_t(n)] = int(k);
     }
   return body;
@@ -47,9 +71,10 @@ std::vector<int> bodyOfNodes(const Model& model) {
 // rigid block shares with them move with the body, and so does that mass), as point masses at
 // the nodes: each of `elements` (this rank's share) summed once.
 std::vector<std::vector<std::pair<Vec3, double>>> sharedNodeMasses(const Model& model, const std::vector<int>& body,
-                                                                   const std::vector<int>& elements) {
+                                                                   const std::vector<int>& elements,
+                                                                   const std::vector<BodyKey>& keys) {
   const Mesh& mesh = model.mesh();
-  std::vector<std::vector<std::pair<Vec3, double>>> out(model.rigidBlocks().size());
+  std::vector<std::vector<std::pair<Vec3, double>>> out(keys.size());
   DenseMatrix Me;
   std::vector<Point3> x;
   for (int ge : elements) {
@@ -64,7 +89,7 @@ std::vector<std::vector<std::pair<Vec3, double>>> sharedNodeMasses(const Model& 
     for (int a = 0; a < blk.nodesPerElement; ++a) x.push_back(mesh.coords[size_t(conn[a])]);
     const int nc = int(kernel->components().size());
     if (nc > 3)
-      throwInput(model.inputFile(), rigidKey(model, model.rigidBlocks()[size_t(body[size_t(*tied)])]), "true",
+      throwInput(model.inputFile(), keys[size_t(body[size_t(*tied)])].path, keys[size_t(body[size_t(*tied)])].value,
                  "it shares nodes with the beams of block '" + blk.name + "', whose rotations a rigid block does not hold so far",
                  "mesh the beams apart and join them otherwise, or make the part deformable");
     kernel->mass(x, MassKind::Lumped, Me);
@@ -76,18 +101,67 @@ std::vector<std::vector<std::pair<Vec3, double>>> sharedNodeMasses(const Model& 
 
 }  // namespace
 
+bool hasRigidBodies(const Model& model) {
+  const auto& c = model.couplings();
+  return !model.rigidBlocks().empty() || std::any_of(c.begin(), c.end(), [](const ModelCoupling& k) { return k.kinematic; });
+}
+
 void refuseRigidBlocks(const Model& model, const std::string& analysisPath, const std::string& what) {
-  const std::vector<int>& rigid = model.rigidBlocks();
-  if (rigid.empty()) return;
-  throwInput(model.inputFile(), rigidKey(model, rigid.front()), "true",
+  if (!hasRigidBodies(model)) return;
+  const BodyKey key = bodyKeys(model).front();
+  throwInput(model.inputFile(), key.path, key.value,
              "rigid blocks run in explicit transients only so far (issue 74), and " + analysisPath + " is " + what,
              "use a 'Transient' with 'Scheme' = 'central differences', or mesh the part as a deformable block");
+}
+
+// A rigid block's mass properties: its elements and the point masses of its shared nodes.
+MassProperties RigidBodies::blockProperties(const Model& model, int block, const std::vector<int>& elements,
+                                            const std::vector<std::pair<Vec3, double>>& points) const {
+  const Mesh& mesh = model.mesh();
+  SolidShape shape{};
+  if (!findSolidTopology(mesh.blocks[size_t(block)].topology, shape))
+    throwInput(model.inputFile(), rigidKey(model, block), "true",
+               "its elements are " + mesh.blocks[size_t(block)].topology + ": rigid blocks are solids so far",
+               "mesh the part with solid elements");
+  return blockMassProperties(mesh, {block}, {model.materialOfBlock(block).density}, model.kinematics(), elements,
+                             *comm_, points);
+}
+
+// A kinematic coupling's: its nodes' lumped masses, summed over the ranks.
+MassProperties RigidBodies::pointProperties(const std::vector<int>& nodes, const Mesh& mesh,
+                                            const std::vector<std::pair<Vec3, double>>& points) const {
+  MassPropertiesSum sum(mesh.coords[size_t(nodes.front())]);
+  for (const auto& [x, m] : points) sum.addPoint(x, m);
+  const std::vector<double> mine = sum.sums();
+  std::vector<double> all(mine.size());
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, int(mine.size()), mine.data(), all.data());
+  sum.setSums(all);
+  return sum.properties();
+}
+
+// The body's DOFs (every component of its nodes, free: its motion is held on the body) and this
+// rank's rows of them.
+void RigidBodies::addRows(const Model& model, int body, const std::vector<int>& nodes) {
+  const Mesh& mesh = model.mesh();
+  const RCP<const Map> map = model.map();
+  for (int n : nodes)
+    for (int c = 0; c < 3; ++c) {
+      const long long g = model.dof(n, c);
+      if (g < 0)
+        throwInput(model.inputFile(), keys_[size_t(body)], keyValues_[size_t(body)],
+                   "its node " + std::to_string(n + 1) + " has component " + std::string(1, "XYZ"[c]) +
+                       " fixed or inactive (a rigid body's motion is held on the body, 'Held', not on its nodes)",
+                   "remove the node from the Dirichlet sets and Active Components");
+      const Vec3 xi = bodies_.back().bodyCoordinates(mesh.coords[size_t(n)]);
+      dofsOfBodies_[GO(g)] = {body, c, xi};
+      const LO row = map->getLocalElement(GO(g));
+      if (row != Teuchos::OrdinalTraits<LO>::invalid()) rows_.push_back({body, mesh.coords[size_t(n)], xi, c, row});
+    }
 }
 
 RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)
     : comm_(model.comm()), lumpedMass_(rcp(new Vector(lumpedMass, Teuchos::Copy))), inputFile_(model.inputFile()) {
   const Mesh& mesh = model.mesh();
-  const RCP<const Map> map = model.map();
   // Each element summed once: on the rank that owns its first node (localElements() holds every
   // element touching an owned node).
   std::vector<int> elements;
@@ -97,43 +171,30 @@ RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)
     if (model.dofs().ownerOfNode(blk.connectivity[size_t(e) * size_t(blk.nodesPerElement)]) == comm_->getRank())
       elements.push_back(ge);
   }
-  const std::vector<int> bodyOfNode = bodyOfNodes(model);
-  const auto shared = sharedNodeMasses(model, bodyOfNode, elements);
-  for (int block : model.rigidBlocks()) {
+  const std::vector<BodyKey> keys = bodyKeys(model);
+  const std::vector<std::vector<int>> nodes = bodyNodes(model);
+  const auto shared = sharedNodeMasses(model, bodyOfNodes(model, nodes, keys), elements, keys);
+  std::vector<const ModelCoupling*> kinematic;
+  for (const ModelCoupling& c : model.couplings())
+    if (c.kinematic) kinematic.push_back(&c);
+  const size_t blocks = model.rigidBlocks().size();
+  for (size_t k = 0; k < keys.size(); ++k) {
+    keys_.push_back(keys[k].path);
+    keyValues_.push_back(keys[k].value);
     if (model.kinematics() != Kinematics::ThreeD)
-      throwInput(model.inputFile(), rigidKey(model, block), "true", "rigid blocks are 3D only so far (issue 74)",
-                 "model the part as a deformable block");
-    SolidShape shape{};
-    if (!findSolidTopology(mesh.blocks[size_t(block)].topology, shape))
-      throwInput(model.inputFile(), rigidKey(model, block), "true",
-                 "its elements are " + mesh.blocks[size_t(block)].topology + ": rigid blocks are solids so far",
-                 "mesh the part with solid elements");
-    const std::set<int> nodes = blockNodes(mesh.blocks[size_t(block)]);
-    const int body = int(bodies_.size());
-    keys_.push_back(rigidKey(model, block));
+      throwInput(model.inputFile(), keys[k].path, keys[k].value, "rigid bodies are 3D only so far (issue 74)",
+                 "model the part as deformable");
     try {  // no mass (a zero density), or no inertia about an axis: the same on every rank
-      const MassProperties p = blockMassProperties(mesh, {block}, {model.materialOfBlock(block).density},
-                                                   model.kinematics(), elements, *comm_, shared[size_t(body)]);
-      bodies_.emplace_back(mesh.blocks[size_t(block)].name, p);
-      bodies_.back().setHold(model.rigidHold(size_t(body)));
+      const bool block = k < blocks;
+      const MassProperties p = block ? blockProperties(model, model.rigidBlocks()[k], elements, shared[k])
+                                     : pointProperties(nodes[k], mesh, shared[k]);
+      bodies_.emplace_back(block ? mesh.blocks[size_t(model.rigidBlocks()[k])].name : kinematic[k - blocks]->name, p);
+      bodies_.back().setHold(block ? model.rigidHold(k) : kinematic[k - blocks]->hold);
     } catch (const std::invalid_argument& e) {
-      throwInput(model.inputFile(), rigidKey(model, block), "true", e.what(),
-                 "a rigid body needs mass and inertia about every axis: check the block's elements");
+      throwInput(model.inputFile(), keys[k].path, keys[k].value, e.what(),
+                 "a rigid body needs mass and inertia about every axis: check its elements or nodes");
     }
-    for (int n : nodes)
-      for (int c = 0; c < 3; ++c) {
-        const long long g = model.dof(n, c);
-        if (g < 0)
-          throwInput(model.inputFile(), rigidKey(model, block), "true",
-                     "its node " + std::to_string(n + 1) + " has component " + std::string(1, "XYZ"[c]) +
-                         " fixed or inactive (a rigid body's motion is prescribed on the body, not its nodes: "
-                         "not yet available, issue 74)",
-                     "remove the node from the Dirichlet sets and Active Components");
-        dofsOfBodies_[GO(g)] = {body, c, bodies_.back().bodyCoordinates(mesh.coords[size_t(n)])};
-        const LO row = map->getLocalElement(GO(g));
-        if (row != Teuchos::OrdinalTraits<LO>::invalid())
-          rows_.push_back({body, mesh.coords[size_t(n)], bodies_.back().bodyCoordinates(mesh.coords[size_t(n)]), c, row});
-      }
+    addRows(model, int(k), nodes[k]);
   }
   force_.assign(bodies_.size(), Vec3{});
   torque_.assign(bodies_.size(), Vec3{});
@@ -239,7 +300,7 @@ void RigidBodies::start(const Vector& u, Vector& v) {
   if (nb > 0) Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, int(nb), displaced.data(), anyDisplaced.data());
   for (size_t b = 0; b < nb; ++b)
     if (anyDisplaced[b])
-      throwInput(inputFile_, keys_[b], "true",
+      throwInput(inputFile_, keys_[b], keyValues_[b],
                  "its nodes are given an initial displacement (not available for a rigid body so far, issue 74)",
                  "remove the displacement of its nodes from the Initial Conditions");
   if (!local.empty())

@@ -20,7 +20,7 @@ class StateArchive;
 
 class RigidBodies : public RigidMotion, public ContactBodies, public InteractionOutput {
  public:
-  // The rigid blocks of the model (none: empty()); lumpedMass the model's lumped mass diagonal,
+  // The rigid blocks of the model, then its kinematic couplings (none: empty()); lumpedMass the model's lumped mass diagonal,
   // which weighs the nodes' initial velocities. Throws InputError for a rigid block outside 3D,
   // sharing nodes with another block, or with a node whose components are not all unknowns.
   RigidBodies(const Model& model, const Vector& lumpedMass);
@@ -90,8 +90,16 @@ class RigidBodies : public RigidMotion, public ContactBodies, public Interaction
   RCP<const Comm> comm_;
   RCP<const Vector> lumpedMass_;
   std::string inputFile_;
-  std::vector<std::string> keys_;  // each body's 'Model/Blocks/<name>/Rigid', for messages
+  std::vector<std::string> keys_, keyValues_;  // each body's 'Model/Blocks/<name>/Rigid' (or coupling's Type), for messages
+  MassProperties blockProperties(const Model& model, int block, const std::vector<int>& elements,
+                                 const std::vector<std::pair<Vec3, double>>& points) const;
+  MassProperties pointProperties(const std::vector<int>& nodes, const Mesh& mesh,
+                                 const std::vector<std::pair<Vec3, double>>& points) const;
+  void addRows(const Model& model, int body, const std::vector<int>& nodes);
 };
+
+// Rigid blocks or kinematic couplings: bodies that move some nodes rigidly.
+bool hasRigidBodies(const Model& model);
 
 // The rigid blocks of the model refused by an analysis that cannot run them, naming the first.
 void refuseRigidBlocks(const Model& model, const std::string& analysisPath, const std::string& what);

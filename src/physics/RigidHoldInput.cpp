@@ -9,7 +9,7 @@
 namespace choc {
 
 RigidHold rigidHoldOf(const Teuchos::ParameterList& block, bool rigid, const std::string& file,
-                      const std::string& path) {
+                      const std::string& path, const std::string& notRigid) {
   const std::string held = block.get<std::string>("Held");
   const std::string speed = block.get<std::string>("Held Velocity");
   RigidHold h;
@@ -25,8 +25,8 @@ RigidHold rigidHoldOf(const Teuchos::ParameterList& block, bool rigid, const std
     else ++rotations;
   }
   if (!components.empty() && !rigid)
-    throwInput(file, path + "/Held", held, "holds the motion of a rigid body, and the block is not rigid",
-               "set 'Rigid' = true, or fix its nodes with a Dirichlet condition");
+    throwInput(file, path + "/Held", held, "holds the motion of a rigid body, and " + notRigid,
+               "set 'Rigid' = true (a coupling's 'Type' = kinematic), or fix its nodes with a Dirichlet condition");
   if (rotations != 0 && rotations != 3)
     throwInput(file, path + "/Held", held, "a rigid body's rotations are held together (its angular velocity kept at 0)",
                "give all of DRX DRY DRZ, or none");

@@ -12,7 +12,8 @@
 
 namespace choc {
 
+// notRigid: why a hold does not apply when rigid is false ("the block is not rigid").
 RigidHold rigidHoldOf(const Teuchos::ParameterList& block, bool rigid, const std::string& file,
-                      const std::string& path);
+                      const std::string& path, const std::string& notRigid = "the block is not rigid");
 
 }  // namespace choc

@@ -315,6 +315,8 @@ choc_cli_input_error(coupling_line check bad_coupling_line.xml
   "parameter 'Analyses/bend/Coupling Loads/end moment/Moment' = '0 0 16755.160819145563': coupling 'end': its nodes lie on one line: a moment cannot be spread over them")
 choc_cli_input_error(gravity_2d check bad_gravity_2d.xml
   "parameter 'Analyses/lagrange/Gravity' = '0 0 -9.81': a 2D model moves in the x-y plane. give gravity with z = 0")
+choc_cli_input_error(coupling_on_rigid check bad_coupling_on_rigid.xml
+  "parameter 'Model/Couplings/face/Type' = 'kinematic': its node 1 is also a node of the body of Model/Blocks/POU1/Rigid .two bodies cannot share a node.")
 choc_cli_input_error(rigid_explicit_friction check bad_rigid_explicit_friction.xml
   "parameter 'Analyses/strike/Contact/Method' = 'Lagrange': friction beside rigid blocks is not available in central differences so far .issue 74.. make the pairs frictionless")
 choc_cli_input_error(initial_missing_components check bad_initial_missing_components.xml
