@@ -50,7 +50,8 @@ void declareBlockParameters(ParameterList& model) {
   declareBool(blk, "Rigid", false,
               "true: the block moves as one rigid body (its mass, centre and inertia from its elements "
               "and density; its elements carry no stress; the forces on its nodes move it): explicit "
-              "transients ('Scheme' = 'central differences') in 3D; nodes it shares with a deformable "
+              "transients ('Scheme' = 'central differences'): in 3D, in plane strain (moving in its plane) "
+              "or axisymmetric (sliding along the axis); nodes it shares with a deformable "
               "block (of solids) move with it, their mass from that block added to it; its nodes all "
               "free, no initial displacement (docs/theory/rigid-bodies.md; issue 74)");
   declareString(blk, "Held", "",

@@ -8,6 +8,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "core/Errors.hpp"
+#include "fem/Components.hpp"
 #include "fem/DenseMatrix.hpp"
 #include "fem/ElementKernel.hpp"
 #include "fem/ShapeFunctions.hpp"
@@ -99,6 +100,23 @@ std::vector<std::vector<std::pair<Vec3, double>>> sharedNodeMasses(const Model& 
   return out;
 }
 
+// In a 2D model a body moves in its plane: its nodes have no z rows, and its forces and lever arms
+// (z = 0) give it no z force and a moment about z only, about a principal axis of a planar body
+// (no product of inertia with z), so it keeps V_z = 0 and w along z by itself. An axisymmetric
+// body (masses per full ring) can only slide along the axis y: its radial translation and its
+// rotation are held (the radial forces of its rings cancel by symmetry).
+RigidHold planarHold(const Model& model, RigidHold hold, const BodyKey& key) {
+  if (model.kinematics() != Kinematics::Axisymmetric) return hold;
+  if (hold.translation[0] && hold.velocity[0] != 0.0)
+    throwInput(model.inputFile(), key.path, key.value,
+               "a body of an axisymmetric model moves along its axis only: its radial speed is 0",
+               "hold DY only, or give 'Held Velocity' with x = 0");
+  hold.translation[0] = true;
+  hold.velocity[0] = 0.0;
+  hold.rotation = true;
+  return hold;
+}
+
 }  // namespace
 
 bool hasRigidBodies(const Model& model) {
@@ -144,8 +162,9 @@ MassProperties RigidBodies::pointProperties(const std::vector<int>& nodes, const
 void RigidBodies::addRows(const Model& model, int body, const std::vector<int>& nodes) {
   const Mesh& mesh = model.mesh();
   const RCP<const Map> map = model.map();
+  const int components = int(spatialComponents(mesh.dimension).size());  // 2D: x and y
   for (int n : nodes)
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < components; ++c) {
       const long long g = model.dof(n, c);
       if (g < 0)
         throwInput(model.inputFile(), keys_[size_t(body)], keyValues_[size_t(body)],
@@ -181,15 +200,12 @@ RigidBodies::RigidBodies(const Model& model, const Vector& lumpedMass)
   for (size_t k = 0; k < keys.size(); ++k) {
     keys_.push_back(keys[k].path);
     keyValues_.push_back(keys[k].value);
-    if (model.kinematics() != Kinematics::ThreeD)
-      throwInput(model.inputFile(), keys[k].path, keys[k].value, "rigid bodies are 3D only so far (issue 74)",
-                 "model the part as deformable");
     try {  // no mass (a zero density), or no inertia about an axis: the same on every rank
       const bool block = k < blocks;
       const MassProperties p = block ? blockProperties(model, model.rigidBlocks()[k], elements, shared[k])
                                      : pointProperties(nodes[k], mesh, shared[k]);
       bodies_.emplace_back(block ? mesh.blocks[size_t(model.rigidBlocks()[k])].name : kinematic[k - blocks]->name, p);
-      bodies_.back().setHold(block ? model.rigidHold(k) : kinematic[k - blocks]->hold);
+      bodies_.back().setHold(planarHold(model, block ? model.rigidHold(k) : kinematic[k - blocks]->hold, keys[k]));
     } catch (const std::invalid_argument& e) {
       throwInput(model.inputFile(), keys[k].path, keys[k].value, e.what(),
                  "a rigid body needs mass and inertia about every axis: check its elements or nodes");

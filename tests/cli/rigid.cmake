@@ -12,3 +12,6 @@ choc_cli_script(saint_venant 300)
 # Gravity: the rigid spinning box falls on its parabola with its spin unchanged and its energy
 # balanced; a bar stands under its own weight with the closed-form shortening (scripts/gravity.py).
 choc_cli_script(gravity 300)
+# Rigid bodies in 2D models: Saint-Venant's problem on SDNL111's plane-strain and axisymmetric
+# section, the striker rigid (scripts/rigid_planar.py).
+choc_cli_script(rigid_planar 300)
