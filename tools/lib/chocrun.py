@@ -1051,3 +1051,21 @@ def saint_venant_run(choc, work, ratio, along=100, courant=0.96, ranks=1, strike
     with open(os.path.join(out, "strike.impacts.csv")) as f:
         impacts = list(csv.DictReader(f))
     return read_history(out, "strike"), impacts, sv, dz, dt, out
+
+
+def check_no_energy_created(h, label, failures, peak_bound=1e-3):
+    """A run that should create no energy: its history's balance ends at or below 0 (1e-8 of E0
+    for round-off) and never exceeds peak_bound E0 (the schemes' transient excess); prints both
+    and appends to failures what fails."""
+    E0 = h["energy:total"][0]
+    final, peak = h["energy:balance"][-1] / E0, max(h["energy:balance"]) / E0
+    print(f"  energy balance at the end {final:+.2e} E0, largest {peak:+.2e} E0")
+    if not (final <= 1e-8 and peak <= peak_bound):
+        failures.append(f"{label}: energy balance {final:+.2e} E0 at the end, {peak:+.2e} at most (0, {peak_bound:g})")
+
+
+def check_ranks_alike(h1, h2, columns, label, failures, bound=1e-8):
+    """Two runs' histories (1 and 2 ranks) alike to bound of each column's peak."""
+    for col, rel in history_difference(h1, h2, columns).items():
+        if not rel <= bound:
+            failures.append(f"{label}{col}: 2 ranks differ by {rel:.2e} of the peak (at most {bound:g})")
