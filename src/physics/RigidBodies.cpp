@@ -127,8 +127,9 @@ bool hasRigidBodies(const Model& model) {
 void refuseRigidBlocks(const Model& model, const std::string& analysisPath, const std::string& what) {
   if (!hasRigidBodies(model)) return;
   const BodyKey key = bodyKeys(model).front();
+  const std::string bodies = key.value == "kinematic" ? "kinematic couplings" : "rigid blocks";
   throwInput(model.inputFile(), key.path, key.value,
-             "rigid blocks run in explicit transients only so far (issue 74), and " + analysisPath + " is " + what,
+             bodies + " run in explicit transients only so far (issue 74), and " + analysisPath + " is " + what,
              "use a 'Transient' with 'Scheme' = 'central differences', or mesh the part as a deformable block");
 }
 
