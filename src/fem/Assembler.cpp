@@ -176,7 +176,7 @@ RCP<Graph> patternGraph(const RCP<const Map>& map, long long first, int owned, c
 
 // The rows the springs (k d d^T on each node) and the coupled node groups (zero entries between
 // every DOF of a group) add after the elements: each as cols and vals, then visit(row).
-void Assembler::extraRows(const std::vector<NodalSpring>& springs, std::vector<GO>& cols, std::vector<double>& vals,
+void Assembler::extraRows(const std::vector<NodalSpring>& springs, bool coupled, std::vector<GO>& cols, std::vector<double>& vals,
                           const std::function<void(int)>& visit) const {
   const int owned = dofs_.numOwned();
   const long long first = dofs_.firstOwned();
@@ -193,6 +193,7 @@ void Assembler::extraRows(const std::vector<NodalSpring>& springs, std::vector<G
       }
       if (!cols.empty()) visit(int(gi - first));
     }
+  if (!coupled) return;
   for (const std::vector<int>& group : groups_)  // zero entries coupling every DOF of a group
     for (int node : group)
       for (int i = 0; i < 3; ++i) {
@@ -215,7 +216,7 @@ void Assembler::extraRows(const std::vector<NodalSpring>& springs, std::vector<G
 // same graph and bits as summing a stored list. Each element matrix is computed twice, which
 // costs less than the stored list's sort did (300k unknowns: 2.6 s against 3.2 s).
 RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs,
-                                   RCP<const Graph> graph, bool fullPatterns) const {
+                                   RCP<const Graph> graph, bool fullPatterns, bool coupled) const {
   const int owned = dofs_.numOwned();
   const long long first = dofs_.firstOwned();
   DenseMatrix Ke;
@@ -237,7 +238,7 @@ RCP<CrsMatrix> Assembler::assemble(const ElementMatrixFn& fn, const std::vector<
         if (!cols.empty()) visit(int(gi - first));
       }
     });
-    extraRows(springs, cols, vals, visit);
+    extraRows(springs, coupled, cols, vals, visit);
   };
   const bool narrow = dofs_.numGlobal() <= (long long)std::numeric_limits<std::uint32_t>::max();
   if (graph.is_null())
@@ -274,7 +275,7 @@ RCP<CrsMatrix> Assembler::stiffnessWithout(const std::vector<char>& skip, const 
         const int n = static_cast<int>(x.size() * k.components().size());
         Ke.resize(n, n);
       },
-      springs, graph, graph.is_null());
+      springs, graph, graph.is_null(), true);
 }
 
 RCP<CrsMatrix> Assembler::mass() const {

@@ -96,7 +96,8 @@ class Assembler {
   // On `graph` when given (else the graph of the nonzero entries, and with fullPatterns every
   // entry of the blocks flagged BlockPhysics::fullPattern).
   RCP<CrsMatrix> assemble(const ElementMatrixFn& fn, const std::vector<NodalSpring>& springs = {},
-                          RCP<const Tpetra::CrsGraph<LO, GO>> graph = Teuchos::null, bool fullPatterns = false) const;
+                          RCP<const Tpetra::CrsGraph<LO, GO>> graph = Teuchos::null, bool fullPatterns = false,
+                          bool coupled = false) const;
   // One element this rank computes: its block's physics, nodes, coordinates and the global DOF
   // of each (node, component) in element order (-1: fixed or not carried).
   struct LocalElement {
@@ -105,7 +106,8 @@ class Assembler {
     std::vector<Point3> x;
     std::vector<long long> gdof;
   };
-  void extraRows(const std::vector<NodalSpring>& springs, std::vector<GO>& cols, std::vector<double>& vals,
+  // coupled: the stiffness, whose graph couples the node groups (coupleNodes); not the mass.
+  void extraRows(const std::vector<NodalSpring>& springs, bool coupled, std::vector<GO>& cols, std::vector<double>& vals,
                  const std::function<void(int)>& visit) const;
   // Calls fn for every element this rank computes, in global order (one LocalElement reused).
   void forEachElement(const std::function<void(const LocalElement&)>& fn) const;

@@ -63,6 +63,38 @@ TEST(CouplingLoad, ItsLoadStiffnessIsTheCentralDifferencesOfItsForces) {
   EXPECT_LE(worst, 1e-6 * peak);
 }
 
+// BENCHMARKS section 8: the nodes turned (with F and M) give the turned forces; the nodes listed
+// in another order give the same force on each node (round-off of sums of ~300 N).
+TEST(CouplingLoad, ItsForcesTurnWithTheSceneAndDoNotDependOnTheNodesOrder) {
+  const std::vector<Point3> x = someNodes();
+  const Vec3 F = {3.0, -2.0, 5.0}, M = {-40.0, 25.0, 60.0};
+  const double c = std::cos(0.7), s = std::sin(0.7);  // about the axis (1, 1, 1) / sqrt 3
+  const double k = 1.0 / 3.0;
+  const double R[3][3] = {{c + k * (1 - c), k * (1 - c) - s / std::sqrt(3.0), k * (1 - c) + s / std::sqrt(3.0)},
+                          {k * (1 - c) + s / std::sqrt(3.0), c + k * (1 - c), k * (1 - c) - s / std::sqrt(3.0)},
+                          {k * (1 - c) - s / std::sqrt(3.0), k * (1 - c) + s / std::sqrt(3.0), c + k * (1 - c)}};
+  const auto turn = [&](const Vec3& v) {
+    Vec3 w{};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) w[i] += R[i][j] * v[j];
+    return w;
+  };
+  std::vector<Point3> xt, xr(x.rbegin(), x.rend());
+  for (const Point3& p : x) xt.push_back(turn(p));
+  std::vector<double> f, ft, fr;
+  couplingForce(x, F, M, f, nullptr);
+  couplingForce(xt, turn(F), turn(M), ft, nullptr);
+  couplingForce(xr, F, M, fr, nullptr);
+  for (size_t i = 0; i < x.size(); ++i) {
+    const Vec3 expected = turn({f[3 * i], f[3 * i + 1], f[3 * i + 2]});
+    const size_t j = x.size() - 1 - i;
+    for (int d = 0; d < 3; ++d) {
+      EXPECT_NEAR(ft[3 * i + d], expected[d], 1e-12 * 300) << i << " " << d;
+      EXPECT_NEAR(fr[3 * j + d], f[3 * i + d], 1e-12 * 300) << i << " " << d;
+    }
+  }
+}
+
 TEST(CouplingLoad, AMomentOnNodesAlongALineIsRefused) {
   const std::vector<Point3> line = {{0, 0, 0}, {0.1, 0.1, 0}, {0.3, 0.3, 0}};
   std::vector<double> f;
